@@ -1,0 +1,16 @@
+//! # penner
+//!
+//! Certified checks of the theorems of discrete conformal geometry on triangulated
+//! surfaces (Δ-complexes with edge-length metrics), following K. Crane, *Conformal
+//! Geometry of Simplicial Surfaces*. One numeric-generic core runs in `f64`, double-double
+//! ([`scalar::Dd`]) and MPFR ([`scalar::Mpfr`]); predicates are decided exactly or with
+//! rigorous enclosures, and answer `Undecided` rather than guess.
+//!
+//! Layers (each imports only layers above it): [`scalar`] → [`mesh`] → [`geometry`] →
+//! [`predicates`] → `algorithms` → `theorems` → `oracle` → the `penner` binary.
+
+pub mod geometry;
+pub mod mesh;
+pub mod predicates;
+pub mod theorems;
+pub mod scalar;

@@ -1,0 +1,3 @@
+//! The `penner` command line.
+
+fn main() {}

@@ -1,0 +1,2 @@
+//! The only place a number becomes a decision: certified signs and the escalation ladder.
+pub mod ladder;

@@ -1,0 +1,125 @@
+//! Numbers: the generic [`Real`] trait and its backends.
+//!
+//! | backend | type | unit roundoff `u` |
+//! |---|---|---|
+//! | IEEE binary64 | `f64` | 2⁻⁵³ |
+//! | double-double | [`Dd`] | 2⁻¹⁰⁴ (proofs/B-DD-*) |
+//! | MPFR | [`Mpfr`] | 2⁻ᵖ |
+//!
+//! The trait has **no `PartialOrd`**: generic code that must decide something asks
+//! [`crate::predicates`], which answers a [`Certified`] sign.
+
+mod certified;
+mod dd;
+mod f64_impl;
+mod mpfr;
+
+pub use certified::{Certified, Sign, Stage};
+pub use dd::Dd;
+pub use mpfr::{Mpfr, Precision, PrecisionError};
+
+use std::fmt::Debug;
+use std::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
+
+/// A real-number backend: `f64`, [`Dd`] or [`Mpfr`].
+///
+/// Precision travels with the value ([`Real::Ctx`]); there is no global precision state.
+/// Mixing two precisions of [`Mpfr`] is a programming error and panics instead of silently
+/// truncating. Generic code writes `a.clone() + &b` (free for `Copy` backends, one
+/// allocation for MPFR).
+///
+/// Every operation is rounded as documented by the backend: correctly rounded for `f64`
+/// arithmetic and all [`Mpfr`] operations, within the bounds of `proofs/B-DD-*` for [`Dd`].
+///
+/// ```
+/// use penner::scalar::{Real, Mpfr, Precision};
+/// fn hypot<T: Real>(a: &T, b: &T) -> T { (a.clone() * a + &(b.clone() * b)).sqrt() }
+/// assert_eq!(hypot(&3.0_f64, &4.0), 5.0);
+/// let p = Precision::new(200).unwrap();
+/// let h = hypot(&Mpfr::from_f64(3.0, p), &Mpfr::from_f64(4.0, p));
+/// assert_eq!(h.approx_f64(), 5.0);
+/// ```
+pub trait Real:
+    Clone
+    + Debug
+    + Send
+    + Sync
+    + 'static
+    + Neg<Output = Self>
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + for<'a> Add<&'a Self, Output = Self>
+    + for<'a> Sub<&'a Self, Output = Self>
+    + for<'a> Mul<&'a Self, Output = Self>
+    + for<'a> Div<&'a Self, Output = Self>
+    + for<'a> AddAssign<&'a Self>
+    + for<'a> SubAssign<&'a Self>
+    + for<'a> MulAssign<&'a Self>
+{
+    /// The precision context: `()` for `f64` and [`Dd`], [`Precision`] for [`Mpfr`].
+    type Ctx: Copy + Debug + PartialEq + Send + Sync + 'static;
+
+    /// The context (precision) this value carries.
+    fn ctx(&self) -> Self::Ctx;
+
+    /// A short name of the backend at this precision: `f64`, `dd`, `mpfr-256`.
+    fn backend_name(ctx: Self::Ctx) -> String;
+
+    /// Exact conversion of a finite `f64` (every backend holds at least 53 bits).
+    fn from_f64(x: f64, ctx: Self::Ctx) -> Self;
+
+    /// Conversion of an exact rational, correctly rounded for `f64` and [`Mpfr`], within
+    /// 2u² relative for [`Dd`] (proofs/B-DD-01).
+    fn from_rational(q: &rug::Rational, ctx: Self::Ctx) -> Self;
+
+    /// π rounded to the working precision.
+    fn pi(ctx: Self::Ctx) -> Self;
+
+    /// Square root.
+    fn sqrt(&self) -> Self;
+    /// Natural exponential.
+    fn exp(&self) -> Self;
+    /// Natural logarithm.
+    fn ln(&self) -> Self;
+    /// Sine.
+    fn sin(&self) -> Self;
+    /// Cosine.
+    fn cos(&self) -> Self;
+    /// Arctangent, in (−π/2, π/2).
+    fn atan(&self) -> Self;
+    /// Two-argument arctangent `atan2(self, x)` of the point (x, self), in (−π, π].
+    fn atan2(&self, x: &Self) -> Self;
+    /// Arccosine, in [0, π]; accurate near ±1.
+    fn acos(&self) -> Self;
+    /// Absolute value.
+    fn abs(&self) -> Self;
+
+    /// Nearest `f64`, for heuristics and display only: never for a decision.
+    fn approx_f64(&self) -> f64;
+
+    /// Unit roundoff `u` of the context: 2⁻⁵³, 2⁻¹⁰⁴ or 2⁻ᵖ.
+    fn unit_roundoff(ctx: Self::Ctx) -> f64;
+
+    /// Significand bits of the context: 53, 106 or p.
+    fn precision_bits(ctx: Self::Ctx) -> u32;
+
+    /// The constant `x` in this value's context.
+    fn lit(&self, x: f64) -> Self {
+        Self::from_f64(x, self.ctx())
+    }
+
+    /// Zero in this value's context.
+    fn zero_like(&self) -> Self {
+        self.lit(0.0)
+    }
+
+    /// One in this value's context.
+    fn one_like(&self) -> Self {
+        self.lit(1.0)
+    }
+
+    /// Exact conversion to a rational, or `None` when the value is not finite.
+    fn to_rational(&self) -> Option<rug::Rational>;
+}

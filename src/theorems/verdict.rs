@@ -1,0 +1,75 @@
+//! The outcome of a theorem check.
+
+use crate::predicates::ladder::Ladder;
+
+/// One element where a check failed (or could not decide), with the offending value.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Witness {
+    /// The element, as `v3`, `e7`, `f2`, `h5`, or `surface`.
+    pub element: String,
+    /// What is wrong there, in words.
+    pub detail: String,
+    /// The offending quantity (an error, a sign, a residual), for display.
+    pub value: f64,
+}
+
+/// The verdict of a check at one precision.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(tag = "verdict", rename_all = "snake_case")]
+pub enum Verdict {
+    /// The property holds. `certified` is true only when every decision was exact or
+    /// made on rigorous enclosures; `max_error` is the largest observed discrepancy.
+    Holds {
+        /// Whether the verdict is rigorous.
+        certified: bool,
+        /// Largest discrepancy seen (0 for exact checks).
+        max_error: f64,
+    },
+    /// The property fails at the listed elements.
+    Fails {
+        /// Whether the refutation is rigorous.
+        certified: bool,
+        /// Every failing element.
+        witnesses: Vec<Witness>,
+    },
+    /// Neither could be established; `bits_tried` is the highest precision used.
+    Undecided {
+        /// Highest MPFR precision tried.
+        bits_tried: u32,
+        /// Elements that stayed undecided.
+        witnesses: Vec<Witness>,
+    },
+    /// The check does not apply to this input (e.g. boundary where the theorem needs a
+    /// closed surface).
+    NotApplicable {
+        /// Why not.
+        reason: String,
+    },
+}
+
+impl Verdict {
+    /// Whether the verdict is `Holds`.
+    pub fn holds(&self) -> bool {
+        matches!(self, Verdict::Holds { .. })
+    }
+    /// Whether the verdict is `Fails`.
+    pub fn fails(&self) -> bool {
+        matches!(self, Verdict::Fails { .. })
+    }
+}
+
+/// Settings shared by all checks.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Settings {
+    /// The ladder used for certified decisions.
+    pub ladder: Ladder,
+    /// Multiplier `c` on the derived error bound for numerical checks (the bound itself
+    /// comes from the precision and a `proofs/` B-ID; `c` is never tuned per test).
+    pub slack: f64,
+}
+
+impl Default for Settings {
+    fn default() -> Settings {
+        Settings { ladder: Ladder::default(), slack: 1.0 }
+    }
+}
