@@ -12,5 +12,5 @@
 pub mod geometry;
 pub mod mesh;
 pub mod predicates;
-pub mod theorems;
 pub mod scalar;
+pub mod theorems;

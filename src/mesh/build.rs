@@ -108,7 +108,10 @@ impl Mesh {
             for s in 0..3u8 {
                 let (a, b) = (tri[s as usize], tri[(s as usize + 1) % 3]);
                 if a == b {
-                    return Err(MeshError::AmbiguousLoop { face: f as u32, vertex: a });
+                    return Err(MeshError::AmbiguousLoop {
+                        face: f as u32,
+                        vertex: a,
+                    });
                 }
                 if by_pair.insert((a, b), (f as u32, s)).is_some() {
                     return Err(MeshError::NonManifoldEdge { a, b });
@@ -156,13 +159,23 @@ impl Mesh {
         for (index, &(p, q)) in gluing.iter().enumerate() {
             for (f, s) in [p, q] {
                 if f as usize >= nf || s > 2 {
-                    return Err(MeshError::GluingOutOfRange { index, face: f, side: s });
+                    return Err(MeshError::GluingOutOfRange {
+                        index,
+                        face: f,
+                        side: s,
+                    });
                 }
             }
             let (a0, a1) = side_vertex(p);
             let (b0, b1) = side_vertex(q);
             if a0 != b1 || a1 != b0 {
-                return Err(MeshError::InconsistentGluing { index, a0, a1, b0, b1 });
+                return Err(MeshError::InconsistentGluing {
+                    index,
+                    a0,
+                    a1,
+                    b0,
+                    b1,
+                });
             }
             for (k, (f, s)) in [p, q].into_iter().enumerate() {
                 let slot = &mut side_he[3 * f as usize + s as usize];
@@ -200,7 +213,13 @@ impl Mesh {
                 tail[h] = tail[next[t.idx()].idx()];
             }
         }
-        let mut mesh = Mesh { next, tail, face, face_halfedge, n_vertices };
+        let mut mesh = Mesh {
+            next,
+            tail,
+            face,
+            face_halfedge,
+            n_vertices,
+        };
         mesh.link_boundary_and_check_vertices()?;
         Ok(mesh)
     }
@@ -226,7 +245,8 @@ impl Mesh {
         for h in self.halfedges() {
             if self.is_boundary_halfedge(h) {
                 let v = self.tip(h).idx();
-                let out = boundary_out[v].ok_or(MeshError::NonManifoldVertex { vertex: v as u32 })?;
+                let out =
+                    boundary_out[v].ok_or(MeshError::NonManifoldVertex { vertex: v as u32 })?;
                 self.next[h.idx()] = out;
             }
         }
@@ -260,7 +280,9 @@ impl Mesh {
 
     /// The face list as vertex triples (starting at each face's first half-edge).
     pub fn face_list(&self) -> Vec<[u32; 3]> {
-        self.faces().map(|f| self.face_vertices(f).map(|v| v.0)).collect()
+        self.faces()
+            .map(|f| self.face_vertices(f).map(|v| v.0))
+            .collect()
     }
 
     /// The gluing of face sides: for each interior edge, the two (face, side) pairs, where
@@ -290,10 +312,13 @@ fn check_faces(n_vertices: u32, faces: &[[u32; 3]]) -> Result<(), MeshError> {
     for (f, tri) in faces.iter().enumerate() {
         for &v in tri {
             if v >= n_vertices {
-                return Err(MeshError::VertexOutOfRange { face: f as u32, vertex: v, n_vertices });
+                return Err(MeshError::VertexOutOfRange {
+                    face: f as u32,
+                    vertex: v,
+                    n_vertices,
+                });
             }
         }
     }
     Ok(())
 }
-

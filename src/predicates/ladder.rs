@@ -37,7 +37,11 @@ pub struct Ladder {
 impl Default for Ladder {
     /// 128 → 256 → 512 → 1024 bits, then exact.
     fn default() -> Ladder {
-        Ladder { start_bits: 128, max_bits: 1024, exact: true }
+        Ladder {
+            start_bits: 128,
+            max_bits: 1024,
+            exact: true,
+        }
     }
 }
 
@@ -56,21 +60,32 @@ impl Default for Ladder {
 /// ```
 pub fn decide<P: SignPredicate + ?Sized>(p: &P, ladder: &Ladder) -> Certified<Sign> {
     if let Some(s) = p.filter() {
-        return Certified::Known { value: s, stage: Stage::Filter };
+        return Certified::Known {
+            value: s,
+            stage: Stage::Filter,
+        };
     }
     let mut bits = ladder.start_bits;
     let mut tried = 0;
     while bits <= ladder.max_bits {
-        let Ok(prec) = Precision::new(u64::from(bits)) else { break };
+        let Ok(prec) = Precision::new(u64::from(bits)) else {
+            break;
+        };
         tried = bits;
         if let Some(s) = p.enclosure_sign(prec) {
-            return Certified::Known { value: s, stage: Stage::Interval { bits } };
+            return Certified::Known {
+                value: s,
+                stage: Stage::Interval { bits },
+            };
         }
         bits = bits.saturating_mul(2);
     }
     if ladder.exact {
         if let Some(s) = p.exact_sign() {
-            return Certified::Known { value: s, stage: Stage::Exact };
+            return Certified::Known {
+                value: s,
+                stage: Stage::Exact,
+            };
         }
     }
     Certified::Undecided { bits_tried: tried }

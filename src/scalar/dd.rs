@@ -37,7 +37,10 @@ impl Dd {
 impl Neg for Dd {
     type Output = Dd;
     fn neg(self) -> Dd {
-        Dd { hi: -self.hi, lo: -self.lo }
+        Dd {
+            hi: -self.hi,
+            lo: -self.lo,
+        }
     }
 }
 impl Add for Dd {
@@ -122,12 +125,15 @@ impl Real for Dd {
     }
     fn from_rational(q: &rug::Rational, (): ()) -> Dd {
         let hi = q.to_f64();
-        let rest: rug::Rational = (q - rug::Rational::from_f64(hi).unwrap_or_default()).into();
+        let rest = q.clone() - rug::Rational::from_f64(hi).unwrap_or_default();
         let (h, l) = fast_two_sum(hi, rest.to_f64());
         Dd { hi: h, lo: l }
     }
     fn pi((): ()) -> Dd {
-        Dd { hi: std::f64::consts::PI, lo: 1.2246467991473532e-16 }
+        Dd {
+            hi: std::f64::consts::PI,
+            lo: 1.2246467991473532e-16,
+        }
     }
     fn sqrt(&self) -> Dd {
         if self.hi <= 0.0 {
@@ -161,7 +167,11 @@ impl Real for Dd {
         via_f64(self, f64::acos)
     }
     fn abs(&self) -> Dd {
-        if self.hi < 0.0 { -*self } else { *self }
+        if self.hi < 0.0 {
+            -*self
+        } else {
+            *self
+        }
     }
     fn approx_f64(&self) -> f64 {
         self.hi + self.lo

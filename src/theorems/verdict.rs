@@ -70,6 +70,9 @@ pub struct Settings {
 
 impl Default for Settings {
     fn default() -> Settings {
-        Settings { ladder: Ladder::default(), slack: 1.0 }
+        Settings {
+            ladder: Ladder::default(),
+            slack: 1.0,
+        }
     }
 }

@@ -41,7 +41,10 @@ fn flip_twice_is_identity_on_tetrahedron_up_to_relabel() {
 #[test]
 fn boundary_edge_refuses_flip() {
     let disk = Mesh::from_faces(3, &[[0, 1, 2]]).unwrap();
-    assert!(matches!(disk.clone().flip(penner::mesh::Edge(0)), Err(FlipError::Boundary(_))));
+    assert!(matches!(
+        disk.clone().flip(penner::mesh::Edge(0)),
+        Err(FlipError::Boundary(_))
+    ));
     assert_eq!(disk.euler_characteristic(), 1);
 }
 
