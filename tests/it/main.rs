@@ -1,4 +1,6 @@
 //! The integration test crate: one module per area.
 
 mod mesh_core;
+#[allow(dead_code)] // helpers used by some areas only
 mod support;
+mod tidy;
