@@ -11,6 +11,7 @@
 
 pub mod geometry;
 pub mod mesh;
+pub mod oracle;
 pub mod predicates;
 pub mod scalar;
 pub mod theorems;

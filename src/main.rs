@@ -1,3 +1,8 @@
-//! The `penner` command line.
+//! The `penner` command line: `penner` (report on the built-in corpus), `penner check`,
+//! `penner certify`, `penner delaunay`, `penner replay`. See README.md for exit codes.
 
-fn main() {}
+mod cli;
+
+fn main() -> std::process::ExitCode {
+    cli::main()
+}

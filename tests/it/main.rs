@@ -1,5 +1,6 @@
 //! The integration test crate: one module per area.
 
+mod cli;
 mod mesh_core;
 #[allow(dead_code)] // helpers used by some areas only
 mod support;

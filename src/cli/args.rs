@@ -1,0 +1,82 @@
+//! Command-line arguments (clap derive).
+
+use clap::{Parser, Subcommand, ValueEnum};
+use std::path::PathBuf;
+
+/// Certified checks of discrete conformal geometry on triangulated surfaces.
+///
+/// With no command, runs the verification report on the built-in corpus.
+#[derive(Debug, Parser)]
+#[command(name = "penner", version, about, long_about = None)]
+pub struct Cli {
+    /// What to do (default: the report on the built-in corpus).
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Run every applicable catalogue check on a surface (JSON, OBJ or OFF).
+    Check {
+        /// The surface file.
+        surface: PathBuf,
+        /// Comma list of precisions: f64, dd, or MPFR bits (53..=65536).
+        #[arg(long, default_value = penner::oracle::precision::DEFAULT_LIST)]
+        precision: String,
+        /// Only these checks (comma list of IDs such as T01,T05).
+        #[arg(long, value_delimiter = ',')]
+        only: Vec<String>,
+        /// Print JSON instead of a table.
+        #[arg(long)]
+        json: bool,
+        /// Do not write failure files.
+        #[arg(long)]
+        no_failure_files: bool,
+    },
+    /// Answer a JSON claim (protocol v1, schema/claim-v1.schema.json) with a verdict.
+    Certify {
+        /// The claim file, or `-` for standard input.
+        claim: PathBuf,
+    },
+    /// Flip a surface to its intrinsic Delaunay triangulation and write the result.
+    Delaunay {
+        /// The surface file.
+        surface: PathBuf,
+        /// Kind of flip.
+        #[arg(long, value_enum, default_value_t = FlipKind::Euclidean)]
+        flips: FlipKind,
+        /// Working precision for the lengths written out: f64, dd, or MPFR bits.
+        #[arg(long, default_value = "256")]
+        precision: String,
+        /// Output file (must not exist); standard output if absent.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+    },
+    /// Re-run a saved failure file and report whether it still fails.
+    Replay {
+        /// A file written by `penner check` (`*.penner-failure-N.json`).
+        file: PathBuf,
+        /// Print JSON instead of a table.
+        #[arg(long)]
+        json: bool,
+    },
+    /// The verification report on the built-in corpus (what `penner` alone runs).
+    Report {
+        /// Comma list of precisions.
+        #[arg(long, default_value = penner::oracle::precision::DEFAULT_LIST)]
+        precision: String,
+        /// Print JSON instead of a table.
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+/// Which flip carries lengths across an edge flip.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum FlipKind {
+    /// Euclidean flip: the new diagonal of the planar layout (preserves the cone metric).
+    Euclidean,
+    /// Ptolemy flip: ℓ_kl = (ℓ_ki ℓ_lj + ℓ_il ℓ_jk) / ℓ_ij (MATH.md Eq. 18).
+    Ptolemy,
+}

@@ -1,0 +1,120 @@
+//! `penner check SURFACE`: every applicable check at the chosen precisions, with failure
+//! files for failing checks.
+
+use super::error::CliError;
+use super::files::{emit, write_fresh_failure};
+use penner::oracle::failure::Failure;
+use penner::oracle::registry::{self, Check, Outcome};
+use penner::oracle::shrink::{shrink, Budget};
+use penner::oracle::{report, Case, Prec};
+use penner::theorems::{Settings, Verdict};
+use std::path::{Path, PathBuf};
+
+/// Options of `penner check`.
+pub struct Options<'a> {
+    /// The surface file.
+    pub path: &'a Path,
+    /// Precision list as typed.
+    pub precision: &'a str,
+    /// Check IDs to run (empty: all).
+    pub only: &'a [String],
+    /// JSON output.
+    pub json: bool,
+    /// Skip failure files.
+    pub no_failure_files: bool,
+}
+
+/// Run `penner check`.
+pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
+    let precs = super::precisions(o.precision)?;
+    let checks = select(o.only)?;
+    let case = super::input::load_case(o.path)?;
+    let settings = Settings::default();
+    let rows = registry::run_case(&case, &checks, &precs, &settings);
+    let mut written: Vec<(String, PathBuf, usize)> = Vec::new();
+    if !o.no_failure_files {
+        for check in &checks {
+            let first_fail = rows.iter().find(|r| {
+                r.id == check.id && matches!(r.outcome, Outcome::Verdict(Verdict::Fails { .. }))
+            });
+            if let Some(row) = first_fail {
+                let Outcome::Verdict(Verdict::Fails { witnesses, .. }) = &row.outcome else {
+                    continue;
+                };
+                let small = shrink_failure(check, &case, row.precision, witnesses, &settings);
+                let faces = small.mesh.n_faces();
+                let doc = Failure {
+                    check: check.id.to_string(),
+                    precision: row.precision,
+                    source: o.path.display().to_string(),
+                    source_faces: case.mesh.n_faces(),
+                    witnesses: witnesses.clone(),
+                    surface: small,
+                };
+                let path = write_fresh_failure(o.path, &format!("{:#}\n", doc.to_json()))?;
+                written.push((check.id.to_string(), path, faces));
+            }
+        }
+    }
+    if o.json {
+        let mut doc = report::json(&rows);
+        doc["failure_files"] = written
+            .iter()
+            .map(|(id, p, faces)| {
+                serde_json::json!({ "check": id, "file": p.display().to_string(), "faces": faces })
+            })
+            .collect();
+        emit(&format!("{doc:#}\n"));
+    } else {
+        emit(&format!(
+            "{}: {} vertices, {} edges, {} faces, χ = {}\n\n",
+            o.path.display(),
+            case.mesh.n_vertices(),
+            case.mesh.n_edges(),
+            case.mesh.n_faces(),
+            case.mesh.euler_characteristic()
+        ));
+        emit(&report::table(&rows));
+        emit(&super::report::summary(&rows));
+        for (id, p, faces) in &written {
+            emit(&format!(
+                "{id} fails: witnesses and a reproducing surface ({faces} face(s)) written to {} (re-run with `penner replay {}`)\n",
+                p.display(),
+                p.display()
+            ));
+        }
+    }
+    Ok(super::status_code(report::status(&rows)))
+}
+
+/// The checks named by `--only`, or all.
+pub fn select(only: &[String]) -> Result<Vec<Check>, CliError> {
+    registry::select(only).map_err(|id| {
+        let known: Vec<&str> = registry::catalogue().iter().map(|c| c.id).collect();
+        CliError::Input(format!(
+            "--only: no check `{id}` in this build (available: {})",
+            if known.is_empty() {
+                "none".to_string()
+            } else {
+                known.join(", ")
+            }
+        ))
+    })
+}
+
+/// Shrink `case` while `check` still fails at `prec`.
+fn shrink_failure(
+    check: &Check,
+    case: &Case,
+    prec: Prec,
+    witnesses: &[penner::theorems::Witness],
+    settings: &Settings,
+) -> Case {
+    let fails = |c: &Case| {
+        matches!(
+            registry::run_one(check, c, prec, settings).outcome,
+            Outcome::Verdict(Verdict::Fails { .. })
+        )
+    };
+    shrink(case, witnesses, &fails, Budget::default())
+}

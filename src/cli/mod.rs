@@ -1,0 +1,99 @@
+//! The `penner` binary: argument parsing, dispatch, messages and exit codes.
+
+mod args;
+mod check;
+mod error;
+mod files;
+mod input;
+mod replay;
+mod report;
+
+use args::{Cli, Command};
+use clap::Parser;
+use error::{code, CliError};
+use std::process::ExitCode;
+
+/// Parse the arguments, run the command, map the outcome to an exit code. Errors are one
+/// clear line on standard error, never a panic or a backtrace.
+pub fn main() -> ExitCode {
+    install_panic_hook();
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            let _ = e.print();
+            return ExitCode::from(if e.use_stderr() {
+                code::BAD_INPUT
+            } else {
+                code::HOLDS
+            });
+        }
+    };
+    let result = match cli.command {
+        None => report::run(penner::oracle::precision::DEFAULT_LIST, false),
+        Some(Command::Report { precision, json }) => report::run(&precision, json),
+        Some(Command::Check {
+            surface,
+            precision,
+            only,
+            json,
+            no_failure_files,
+        }) => check::run(&check::Options {
+            path: &surface,
+            precision: &precision,
+            only: &only,
+            json,
+            no_failure_files,
+        }),
+        Some(Command::Replay { file, json }) => replay::run(&file, json),
+        Some(other) => not_yet(&other),
+    };
+    match result {
+        Ok(c) => ExitCode::from(c),
+        Err(e) => {
+            eprintln!("penner: {e}");
+            ExitCode::from(e.exit_code())
+        }
+    }
+}
+
+fn not_yet(c: &Command) -> Result<u8, CliError> {
+    Err(CliError::Input(format!(
+        "{c:?} is not available in this build"
+    )))
+}
+
+/// A panic inside penner is a defect: print one line naming it, no backtrace.
+fn install_panic_hook() {
+    std::panic::set_hook(Box::new(|info| {
+        let msg = info
+            .payload()
+            .downcast_ref::<&str>()
+            .map(ToString::to_string)
+            .or_else(|| info.payload().downcast_ref::<String>().cloned())
+            .unwrap_or_default();
+        let at = info
+            .location()
+            .map(|l| format!(" at {}:{}", l.file(), l.line()))
+            .unwrap_or_default();
+        eprintln!(
+            "penner: internal error{at}: {msg} (this is a defect in penner; please report it)"
+        );
+    }));
+}
+
+/// Parse a precision list into a typed list, as bad input on error.
+fn precisions(s: &str) -> Result<Vec<penner::oracle::Prec>, CliError> {
+    penner::oracle::precision::parse_list(s)
+        .map_err(|e| CliError::Input(format!("--precision: {e}")))
+}
+
+/// The exit code of a report status.
+fn status_code(s: penner::oracle::report::Status) -> u8 {
+    use penner::oracle::report::Status;
+    match s {
+        Status::Holds => code::HOLDS,
+        Status::Undecided => code::UNDECIDED,
+        Status::Fails => code::FAILS,
+        Status::Crashed => code::INTERNAL,
+    }
+}

@@ -1,0 +1,17 @@
+//! Claims in, verdicts out: the check registry, reports, failure files and the versioned
+//! claim protocol (`schema/claim-v1.schema.json`, `docs/oracle.md`).
+//!
+//! This layer sits on top of `theorems`: it decides nothing itself, it runs checks and
+//! predicates and packages their answers.
+
+pub mod case;
+pub mod failure;
+pub mod precision;
+#[macro_use]
+pub mod registry;
+pub mod report;
+pub mod shrink;
+
+pub use case::{Case, Lengths};
+pub use precision::Prec;
+pub use registry::{catalogue, Check, Outcome, Row};

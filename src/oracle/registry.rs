@@ -1,0 +1,136 @@
+//! The check registry: every catalogue check the binary can run on a [`Case`], and the
+//! runner that applies them at a list of precisions.
+//!
+//! A check that is not implemented is absent from [`catalogue`], never reported with an
+//! invented verdict.
+
+use super::case::Case;
+use super::precision::Prec;
+use crate::theorems::{Settings, Verdict};
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::time::Instant;
+
+/// One runnable check of the catalogue.
+#[derive(Clone, Copy, Debug)]
+pub struct Check {
+    /// Catalogue ID, `T01` … `T36` (MATH.md, `proofs/`).
+    pub id: &'static str,
+    /// Short statement, for tables.
+    pub title: &'static str,
+    /// Runs the check on a case at one precision.
+    pub run: fn(&Case, Prec, &Settings) -> Verdict,
+}
+
+/// Run `$body` with `$l` bound to the case's lengths in the backend of `$prec`
+/// (`Vec<f64>`, `Vec<Dd>` or `Vec<Mpfr>`); `$t` names the backend type inside `$body`.
+#[allow(unused_macros)]
+macro_rules! at_precision {
+    ($prec:expr, $case:expr, |$l:ident : $t:ident| $body:expr) => {
+        match $prec {
+            $crate::oracle::precision::Prec::F64 => {
+                type $t = f64;
+                let $l: Vec<$t> = $case.lengths.to_real::<$t>(());
+                $body
+            }
+            $crate::oracle::precision::Prec::Dd => {
+                type $t = $crate::scalar::Dd;
+                let $l: Vec<$t> = $case.lengths.to_real::<$t>(());
+                $body
+            }
+            $crate::oracle::precision::Prec::Mpfr(p) => {
+                type $t = $crate::scalar::Mpfr;
+                let $l: Vec<$t> = $case.lengths.to_real::<$t>(p);
+                $body
+            }
+        }
+    };
+}
+
+/// Every check this build can run, in catalogue order.
+pub fn catalogue() -> Vec<Check> {
+    Vec::new()
+}
+
+/// The checks whose ID is in `ids` (case-insensitive), or all of them for an empty list;
+/// an unknown ID is returned as the error.
+pub fn select(ids: &[String]) -> Result<Vec<Check>, String> {
+    let all = catalogue();
+    if ids.is_empty() {
+        return Ok(all);
+    }
+    let mut out = Vec::new();
+    for id in ids {
+        match all.iter().find(|c| c.id.eq_ignore_ascii_case(id)) {
+            Some(c) => out.push(*c),
+            None => return Err(id.clone()),
+        }
+    }
+    Ok(out)
+}
+
+/// What running one check produced.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Outcome {
+    /// The check's verdict.
+    Verdict(Verdict),
+    /// The check itself broke (a defect in the library, not a verdict on the surface).
+    Crashed(String),
+}
+
+/// One row of a report: one check on one case at one precision.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Row {
+    /// The case's name.
+    pub case: String,
+    /// Catalogue ID.
+    pub id: &'static str,
+    /// Short statement.
+    pub title: &'static str,
+    /// Working precision.
+    pub precision: Prec,
+    /// Verdict, or the defect.
+    pub outcome: Outcome,
+    /// Wall-clock seconds the check took.
+    pub seconds: f64,
+}
+
+/// Run one check on one case at one precision, timing it. A panic inside the check is
+/// caught and reported as [`Outcome::Crashed`] so one defect cannot hide other rows.
+pub fn run_one(check: &Check, case: &Case, prec: Prec, settings: &Settings) -> Row {
+    let start = Instant::now();
+    let result = catch_unwind(AssertUnwindSafe(|| (check.run)(case, prec, settings)));
+    let seconds = start.elapsed().as_secs_f64();
+    let outcome = match result {
+        Ok(v) => Outcome::Verdict(v),
+        Err(payload) => Outcome::Crashed(panic_message(payload.as_ref())),
+    };
+    Row {
+        case: case.name.clone(),
+        id: check.id,
+        title: check.title,
+        precision: prec,
+        outcome,
+        seconds,
+    }
+}
+
+/// Run every check in `checks` on `case` at every precision in `precs`.
+pub fn run_case(case: &Case, checks: &[Check], precs: &[Prec], settings: &Settings) -> Vec<Row> {
+    let mut rows = Vec::with_capacity(checks.len() * precs.len());
+    for check in checks {
+        for &p in precs {
+            rows.push(run_one(check, case, p, settings));
+        }
+    }
+    rows
+}
+
+fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
+    if let Some(s) = payload.downcast_ref::<&str>() {
+        (*s).to_string()
+    } else if let Some(s) = payload.downcast_ref::<String>() {
+        s.clone()
+    } else {
+        "panic with a non-text payload".to_string()
+    }
+}

@@ -1,0 +1,197 @@
+//! The `penner` binary end to end: good inputs give verdicts and exit codes, bad inputs
+//! give one clear message naming the file (and line or element) and exit code 3 — never a
+//! panic or a backtrace.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+const BIN: &str = env!("CARGO_BIN_EXE_penner");
+
+/// A scratch directory unique to one test.
+fn scratch(test: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("penner-it-cli-{}-{test}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).expect("scratch dir");
+    d
+}
+
+fn penner(args: &[&str]) -> Output {
+    Command::new(BIN)
+        .args(args)
+        .env_remove("RUST_BACKTRACE")
+        .output()
+        .expect("run penner")
+}
+
+fn text(b: &[u8]) -> String {
+    String::from_utf8_lossy(b).into_owned()
+}
+
+/// Assert a clean refusal: exit code `code`, a message on stderr containing every string
+/// in `mentions`, and no sign of a panic.
+fn assert_refused(out: &Output, code: i32, mentions: &[&str]) {
+    let err = text(&out.stderr);
+    assert_eq!(
+        out.status.code(),
+        Some(code),
+        "exit code; stderr: {err}; stdout: {}",
+        text(&out.stdout)
+    );
+    assert!(!err.trim().is_empty(), "no message on stderr");
+    for m in mentions {
+        assert!(err.contains(m), "stderr does not mention {m:?}: {err}");
+    }
+    for bad in [
+        "panicked",
+        "RUST_BACKTRACE",
+        "internal error",
+        "stack backtrace",
+    ] {
+        assert!(!err.contains(bad), "stderr shows a panic: {err}");
+    }
+    assert!(
+        err.lines().filter(|l| !l.trim().is_empty()).count() <= 5,
+        "message should be short, got: {err}"
+    );
+}
+
+/// A tetrahedron with unit edges in the surface JSON format.
+const TETRAHEDRON: &str = r#"{
+  "vertices": 4,
+  "faces": [[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]],
+  "lengths": ["1", "1", "1", "1", "1", "1"]
+}"#;
+
+fn write(dir: &Path, name: &str, contents: &[u8]) -> PathBuf {
+    let p = dir.join(name);
+    std::fs::write(&p, contents).expect("write input");
+    p
+}
+
+#[test]
+fn report_on_the_built_in_corpus_runs_and_holds() {
+    let out = penner(&[]);
+    let stdout = text(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "stdout: {stdout}\nstderr: {}",
+        text(&out.stderr)
+    );
+    assert!(stdout.contains("row(s)"), "no summary line: {stdout}");
+    assert!(
+        !stdout.contains("fails"),
+        "a check fails on the corpus: {stdout}"
+    );
+}
+
+#[test]
+fn report_json_is_json_with_a_status() {
+    let out = penner(&["report", "--precision", "f64", "--json"]);
+    assert_eq!(out.status.code(), Some(0), "stderr: {}", text(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON report");
+    assert_eq!(v["penner_report"], 1);
+    assert_eq!(v["status"], "holds");
+    assert!(v["rows"].is_array());
+}
+
+#[test]
+fn help_and_version_exit_zero() {
+    let out = penner(&["--help"]);
+    assert_eq!(out.status.code(), Some(0));
+    let s = text(&out.stdout);
+    for cmd in ["check", "certify", "delaunay", "replay"] {
+        assert!(s.contains(cmd), "help does not list {cmd}: {s}");
+    }
+    assert_eq!(penner(&["--version"]).status.code(), Some(0));
+}
+
+#[test]
+fn unknown_subcommand_and_flag_are_usage_errors() {
+    assert_refused(&penner(&["frobnicate"]), 3, &["frobnicate"]);
+    assert_refused(
+        &penner(&["check", "--no-such-flag", "x.json"]),
+        3,
+        &["--no-such-flag"],
+    );
+}
+
+#[test]
+fn absurd_precisions_are_refused() {
+    for (p, mention) in [
+        ("99999999", "99999999"),
+        ("99999999999999999999999999", "99999999999999999999999999"),
+        ("12", "12"),
+        ("f32", "f32"),
+        ("", "empty"),
+        (",,,", "empty"),
+        ("-5", "-5"),
+    ] {
+        let arg = format!("--precision={p}");
+        assert_refused(&penner(&["report", &arg]), 3, &[mention]);
+    }
+}
+
+#[test]
+fn missing_file_and_directory_are_refused() {
+    let d = scratch("missing");
+    let missing = d.join("nope.json");
+    let m = missing.display().to_string();
+    assert_refused(&penner(&["check", &m]), 3, &["nope.json"]);
+    let dir = d.display().to_string();
+    assert_refused(&penner(&["check", &dir]), 3, &["directory"]);
+    assert_refused(&penner(&["replay", &m]), 3, &["nope.json"]);
+}
+
+#[test]
+fn check_on_a_good_surface_prints_a_table() {
+    let d = scratch("good");
+    let p = write(&d, "tet.json", TETRAHEDRON.as_bytes());
+    let out = penner(&["check", &p.display().to_string(), "--precision", "f64,128"]);
+    let s = text(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "stdout: {s}\nstderr: {}",
+        text(&out.stderr)
+    );
+    assert!(s.contains("4 vertices, 6 edges, 4 faces"), "{s}");
+    // No failure file appears for a surface on which everything holds.
+    let files: Vec<_> = std::fs::read_dir(&d).unwrap().collect();
+    assert_eq!(files.len(), 1);
+}
+
+/// Hostile JSON: each input must be refused with exit code 3 and a message naming the file
+/// and what is wrong.
+#[test]
+fn hostile_json_is_refused_cleanly() {
+    let d = scratch("hostile-json");
+    let deep = format!("{}{}", "[".repeat(100_000), "]".repeat(100_000));
+    let many_faces = format!(
+        r#"{{"vertices": 3, "faces": [{}[0,1,2]], "lengths": ["1","1","1"]}}"#,
+        "[0,1,2],".repeat(200_000)
+    );
+    let cases: Vec<(&str, Vec<u8>, &str)> = vec![
+        ("empty.json", Vec::new(), "empty.json"),
+        ("truncated.json", TETRAHEDRON.as_bytes()[..40].to_vec(), ":"),
+        ("garbage.json", (0..4096u32).map(|i| (i.wrapping_mul(2_654_435_761) >> 24) as u8).collect(), "garbage.json"),
+        ("deep.json", deep.into_bytes(), "deep.json"),
+        ("not-object.json", b"[1, 2, 3]".to_vec(), "vertices"),
+        ("neg-vertex.json", br#"{"vertices": 4, "faces": [[0,1,-2]], "lengths": []}"#.to_vec(), "faces[0][2]"),
+        ("huge-count.json", br#"{"vertices": 1e300, "faces": [[0,1,2]], "lengths": ["1","1","1"]}"#.to_vec(), "vertices"),
+        ("range.json", br#"{"vertices": 3, "faces": [[0,1,7]], "lengths": ["1","1","1"]}"#.to_vec(), "vertex 7"),
+        ("isolated.json", br#"{"vertices": 4294967295, "faces": [[0,1,2]], "lengths": ["1","1","1"]}"#.to_vec(), "vertices"),
+        ("zero-length.json", br#"{"vertices": 4, "faces": [[0,1,2],[0,2,3],[0,3,1],[1,3,2]], "lengths": ["1","0","1","1","1","1"]}"#.to_vec(), "e1"),
+        ("neg-length.json", br#"{"vertices": 4, "faces": [[0,1,2],[0,2,3],[0,3,1],[1,3,2]], "lengths": ["1","1","-3/2","1","1","1"]}"#.to_vec(), "e2"),
+        ("nan-length.json", br#"{"vertices": 4, "faces": [[0,1,2],[0,2,3],[0,3,1],[1,3,2]], "lengths": ["1","1","1","NaN","1","1"]}"#.to_vec(), "e3"),
+        ("count.json", br#"{"vertices": 4, "faces": [[0,1,2],[0,2,3],[0,3,1],[1,3,2]], "lengths": ["1","1"]}"#.to_vec(), "edges"),
+        ("nonmanifold.json", br#"{"vertices": 5, "faces": [[0,1,2],[0,3,4]], "lengths": ["1","1","1","1","1","1"]}"#.to_vec(), "non-manifold"),
+        ("bad-gluing.json", br#"{"vertices": 3, "faces": [[0,1,2],[0,2,1]], "gluing": [[[0,0],[9,9]]], "lengths": ["1","1","1"]}"#.to_vec(), "gluing"),
+        ("many-faces.json", many_faces.into_bytes(), "many-faces.json"),
+    ];
+    for (name, bytes, mention) in cases {
+        let p = write(&d, name, &bytes);
+        let out = penner(&["check", &p.display().to_string()]);
+        assert_refused(&out, 3, &[name, mention]);
+    }
+}
