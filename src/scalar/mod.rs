@@ -12,10 +12,12 @@
 mod certified;
 mod dd;
 mod f64_impl;
+pub mod interval;
 mod mpfr;
 
 pub use certified::{Certified, Sign, Stage};
 pub use dd::Dd;
+pub use interval::{Interval, IntervalBound};
 pub use mpfr::{Mpfr, Precision, PrecisionError};
 
 use std::fmt::Debug;
