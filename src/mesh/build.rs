@@ -218,6 +218,7 @@ impl Mesh {
             tail,
             face,
             face_halfedge,
+            out: Vec::new(),
             n_vertices,
         };
         mesh.link_boundary_and_check_vertices()?;
@@ -274,6 +275,7 @@ impl Mesh {
             if count != degree[v] {
                 return Err(MeshError::NonManifoldVertex { vertex: v as u32 });
             }
+            self.out.push(start);
         }
         Ok(())
     }
@@ -319,6 +321,19 @@ fn check_faces(n_vertices: u32, faces: &[[u32; 3]]) -> Result<(), MeshError> {
                 });
             }
         }
+    }
+    // More vertices than face corners: some vertex is unused. Found without allocating
+    // per vertex, so a huge declared count costs nothing.
+    if n_vertices as usize > 3 * faces.len() {
+        let mut used: Vec<u32> = faces.iter().flatten().copied().collect();
+        used.sort_unstable();
+        used.dedup();
+        let vertex = used
+            .iter()
+            .enumerate()
+            .find(|&(i, &v)| v != i as u32)
+            .map_or(used.len() as u32, |(i, _)| i as u32);
+        return Err(MeshError::IsolatedVertex { vertex });
     }
     Ok(())
 }

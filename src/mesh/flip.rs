@@ -29,8 +29,11 @@ impl Mesh {
     ///        l                 l
     /// ```
     ///
-    /// Flipping the same edge twice returns a complex isomorphic to the original (T02:
-    /// χ is unchanged).
+    /// V, E and F are unchanged, hence χ (T02, `proofs/T02-flip-preserves-euler-characteristic.md`).
+    /// Flipping the same edge twice gives back the original complex up to one relabeling:
+    /// the two half-edges of `e` swap (`2e` ↔ `2e+1`), the two faces swap ids, and each
+    /// face may start at a different half-edge. Four flips restore `next`, `tail` and
+    /// `face` exactly.
     pub fn flip(&mut self, e: Edge) -> Result<(), FlipError> {
         if e.idx() >= self.n_edges() {
             return Err(FlipError::OutOfRange(e));
@@ -62,6 +65,14 @@ impl Mesh {
         self.face[h_jk.idx()] = fb.0;
         self.face_halfedge[fa.idx()] = h;
         self.face_halfedge[fb.idx()] = t;
+        // i and j lose the outgoing half-edges h and t; i keeps i→l, j keeps j→k.
+        let (i, j) = (self.tail(t_il), self.tail(h_jk));
+        if self.out[i.idx()] == h {
+            self.out[i.idx()] = t_il;
+        }
+        if self.out[j.idx()] == t {
+            self.out[j.idx()] = h_jk;
+        }
         Ok(())
     }
 }

@@ -9,12 +9,20 @@
 //! Boundary half-edges have no face; their `next` runs along the boundary loop.
 
 mod build;
+pub mod builders;
+mod circulate;
 mod flip;
 mod ids;
+mod invariants;
+mod ops;
 
-pub use build::MeshError;
+pub use build::{FaceSide, MeshError};
+pub use builders::{BuildError, Embedded, Intrinsic};
+pub use circulate::Outgoing;
 pub use flip::FlipError;
 pub use ids::{Edge, Face, HalfEdge, Vertex};
+pub use invariants::{InvariantError, RawMesh};
+pub use ops::SplitError;
 
 /// Sentinel for "no face" in the packed face array.
 const NO_FACE: u32 = u32::MAX;
@@ -26,6 +34,8 @@ pub struct Mesh {
     tail: Vec<Vertex>,
     face: Vec<u32>,
     face_halfedge: Vec<HalfEdge>,
+    /// One outgoing half-edge per vertex: the boundary one for a boundary vertex.
+    out: Vec<HalfEdge>,
     n_vertices: u32,
 }
 

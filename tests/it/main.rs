@@ -2,6 +2,7 @@
 
 mod cli;
 mod interval;
+mod mesh;
 mod mesh_core;
 #[allow(dead_code)] // helpers used by some areas only
 mod support;
