@@ -2,7 +2,7 @@
 
 use super::error::CliError;
 use super::files::read_text;
-use penner::oracle::failure::parse_surface;
+use penner::oracle::surface::parse_surface;
 use penner::oracle::Case;
 use std::path::Path;
 

@@ -5,12 +5,14 @@
 //! predicates and packages their answers.
 
 pub mod case;
+pub mod claim;
 pub mod failure;
 pub mod precision;
 #[macro_use]
 pub mod registry;
 pub mod report;
 pub mod shrink;
+pub mod surface;
 
 pub use case::{Case, Lengths};
 pub use precision::Prec;

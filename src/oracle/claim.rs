@@ -1,0 +1,230 @@
+//! The claim protocol, version 1: what another implementation asserts about a surface,
+//! parsed from JSON (`schema/claim-v1.schema.json`, `docs/oracle.md`).
+
+use super::case::Case;
+use super::surface::{exact_number, parse_surface, SurfaceError};
+use rug::Rational;
+use serde_json::Value;
+
+/// The protocol version this build reads and answers.
+pub const PROTOCOL_VERSION: u64 = 1;
+
+/// Largest MPFR precision a claim may ask the ladder to climb to.
+pub const MAX_CLAIM_BITS: u32 = 1 << 14;
+
+/// What is claimed.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Assertion {
+    /// `intrinsic_delaunay`: every interior edge of the surface satisfies the intrinsic
+    /// Delaunay condition (MATH.md §5, Eq. 13: cot α + cot β ≥ 0).
+    IntrinsicDelaunay,
+    /// `delaunay_flip`: flipping the surface to intrinsic Delaunay with this kind of flip
+    /// gives `result` (same triangulation up to the order of faces, same lengths).
+    DelaunayFlip {
+        /// `true` for Ptolemy flips, `false` for Euclidean flips.
+        ptolemy: bool,
+        /// The claimed Delaunay surface.
+        result: Case,
+    },
+    /// `cone_angles`: the cone angle θ_v (sum of corner angles, MATH.md §2) of every
+    /// vertex is within `epsilon` of `angles[v]`.
+    ConeAngles {
+        /// One claimed angle per vertex, radians.
+        angles: Vec<Rational>,
+        /// Absolute tolerance ε ≥ 0.
+        epsilon: Rational,
+    },
+    /// `cotan_laplacian`: the cotan weight w_e = ½(cot α + cot β) (MATH.md §3, one term on
+    /// a boundary edge) of every edge is within `epsilon` of `weights[e]`.
+    CotanLaplacian {
+        /// One claimed weight per edge.
+        weights: Vec<Rational>,
+        /// Absolute tolerance ε ≥ 0.
+        epsilon: Rational,
+    },
+    /// `conformal_equivalence`: the surface's metric ℓ and `target` ℓ̃ on the same
+    /// triangulation satisfy ℓ̃_ij = e^{(u_i+u_j)/2} ℓ_ij (MATH.md §4, Eq. 10) for the given
+    /// `u`, within `epsilon` on the log lengths: |log ℓ̃_ij − log ℓ_ij − (u_i+u_j)/2| ≤ ε.
+    ConformalEquivalence {
+        /// The second metric (same triangulation).
+        target: Case,
+        /// One log scale factor per vertex.
+        u: Vec<Rational>,
+        /// Absolute tolerance ε ≥ 0 on log lengths.
+        epsilon: Rational,
+    },
+}
+
+impl Assertion {
+    /// The protocol name of the claim kind.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Assertion::IntrinsicDelaunay => "intrinsic_delaunay",
+            Assertion::DelaunayFlip { .. } => "delaunay_flip",
+            Assertion::ConeAngles { .. } => "cone_angles",
+            Assertion::CotanLaplacian { .. } => "cotan_laplacian",
+            Assertion::ConformalEquivalence { .. } => "conformal_equivalence",
+        }
+    }
+}
+
+/// A parsed claim.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Claim {
+    /// Optional identifier, echoed in the answer.
+    pub id: Option<String>,
+    /// The surface the claim is about.
+    pub surface: Case,
+    /// What is claimed.
+    pub assertion: Assertion,
+    /// Highest MPFR precision the ladder may use (default 1024).
+    pub max_bits: u32,
+}
+
+/// Why a claim was refused (bad input): the JSON path of the offending value and why.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{0}")]
+pub struct ClaimError(pub String);
+
+impl From<SurfaceError> for ClaimError {
+    fn from(e: SurfaceError) -> ClaimError {
+        ClaimError(e.0)
+    }
+}
+
+fn err(msg: impl Into<String>) -> ClaimError {
+    ClaimError(msg.into())
+}
+
+fn numbers(
+    v: &Value,
+    path: &str,
+    expected: usize,
+    what: &str,
+) -> Result<Vec<Rational>, ClaimError> {
+    let arr = v.as_array().ok_or_else(|| {
+        err(format!(
+            "{path}: expected an array with one entry per {what}"
+        ))
+    })?;
+    if arr.len() != expected {
+        return Err(err(format!(
+            "{path}: {} entries, but the surface has {expected} {what}(s)",
+            arr.len()
+        )));
+    }
+    arr.iter()
+        .enumerate()
+        .map(|(i, x)| exact_number(x, &format!("{path}[{i}]")).map_err(ClaimError::from))
+        .collect()
+}
+
+fn epsilon(v: &Value) -> Result<Rational, ClaimError> {
+    let e = exact_number(
+        v.get("epsilon")
+            .ok_or_else(|| err("epsilon: required for this claim kind"))?,
+        "epsilon",
+    )?;
+    if e.cmp0() == std::cmp::Ordering::Less {
+        return Err(err(format!("epsilon: must be ≥ 0, found {e}")));
+    }
+    Ok(e)
+}
+
+/// Parse a claim document (JSON text); `name` names the source in messages.
+pub fn parse(text: &str, name: &str) -> Result<Claim, ClaimError> {
+    let v: Value = serde_json::from_str(text)
+        .map_err(|e| err(format!("{name}:{}:{}: {e}", e.line(), e.column())))?;
+    parse_value(&v).map_err(|e| err(format!("{name}: {e}")))
+}
+
+/// Parse a claim document (JSON value).
+pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
+    if !v.is_object() {
+        return Err(err("a claim is a JSON object"));
+    }
+    match v.get("penner_claim").and_then(Value::as_u64) {
+        Some(PROTOCOL_VERSION) => {}
+        Some(other) => {
+            return Err(err(format!(
+                "penner_claim: protocol version {other} is not supported (this build speaks version {PROTOCOL_VERSION})"
+            )))
+        }
+        None => return Err(err(format!("penner_claim: required, the protocol version ({PROTOCOL_VERSION})"))),
+    }
+    let id = match v.get("id") {
+        None | Some(Value::Null) => None,
+        Some(Value::String(s)) => Some(s.clone()),
+        Some(other) => return Err(err(format!("id: expected a string, found {other}"))),
+    };
+    let max_bits = match v.get("max_bits") {
+        None => 1024,
+        Some(b) => b
+            .as_u64()
+            .filter(|&b| (128..=u64::from(MAX_CLAIM_BITS)).contains(&b))
+            .ok_or_else(|| {
+                err(format!(
+                    "max_bits: expected an integer in [128, {MAX_CLAIM_BITS}], found {b}"
+                ))
+            })? as u32,
+    };
+    let surface = parse_surface(
+        v.get("surface").ok_or_else(|| err("surface: required"))?,
+        "surface",
+    )
+    .map_err(|e| err(e.0))?;
+    let kind = v
+        .get("kind")
+        .and_then(Value::as_str)
+        .ok_or_else(|| err("kind: required, one of intrinsic_delaunay, delaunay_flip, cone_angles, cotan_laplacian, conformal_equivalence"))?;
+    let assertion = match kind {
+        "intrinsic_delaunay" => Assertion::IntrinsicDelaunay,
+        "delaunay_flip" => {
+            let ptolemy = match v.get("flips").and_then(Value::as_str) {
+                Some("euclidean") => false,
+                Some("ptolemy") => true,
+                _ => return Err(err("flips: required, \"euclidean\" or \"ptolemy\"")),
+            };
+            let result = parse_surface(
+                v.get("result")
+                    .ok_or_else(|| err("result: required (the claimed Delaunay surface)"))?,
+                "result",
+            )
+            .map_err(|e| err(format!("result: {}", e.0)))?;
+            Assertion::DelaunayFlip { ptolemy, result }
+        }
+        "cone_angles" => Assertion::ConeAngles {
+            angles: numbers(&v["angles"], "angles", surface.mesh.n_vertices(), "vertex")?,
+            epsilon: epsilon(v)?,
+        },
+        "cotan_laplacian" => Assertion::CotanLaplacian {
+            weights: numbers(&v["weights"], "weights", surface.mesh.n_edges(), "edge")?,
+            epsilon: epsilon(v)?,
+        },
+        "conformal_equivalence" => {
+            let target = parse_surface(
+                v.get("target")
+                    .ok_or_else(|| err("target: required (the second metric)"))?,
+                "target",
+            )
+            .map_err(|e| err(format!("target: {}", e.0)))?;
+            if target.mesh != surface.mesh {
+                return Err(err(
+                    "target: must have the same triangulation (vertices, faces, gluing) as surface",
+                ));
+            }
+            Assertion::ConformalEquivalence {
+                u: numbers(&v["u"], "u", surface.mesh.n_vertices(), "vertex")?,
+                epsilon: epsilon(v)?,
+                target,
+            }
+        }
+        other => return Err(err(format!("kind: unknown claim kind {other:?}"))),
+    };
+    Ok(Claim {
+        id,
+        surface,
+        assertion,
+        max_bits,
+    })
+}
