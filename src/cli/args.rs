@@ -21,7 +21,7 @@ pub enum Command {
     Check {
         /// The surface file.
         surface: PathBuf,
-        /// Comma list of precisions: f64, dd, or MPFR bits (53..=65536).
+        /// Comma list of precisions: f64, dd, MPFR bits (53..=65536), exact.
         #[arg(long, default_value = penner::oracle::precision::DEFAULT_LIST)]
         precision: String,
         /// Only these checks (comma list of IDs such as T01,T05).
@@ -64,7 +64,7 @@ pub enum Command {
     /// The verification report on the built-in corpus (what `penner` alone runs).
     Report {
         /// Comma list of precisions.
-        #[arg(long, default_value = penner::oracle::precision::DEFAULT_LIST)]
+        #[arg(long, default_value = penner::oracle::precision::REPORT_LIST)]
         precision: String,
         /// Print JSON instead of a table.
         #[arg(long)]

@@ -111,10 +111,8 @@ fn shrink_failure(
     settings: &Settings,
 ) -> Case {
     let fails = |c: &Case| {
-        matches!(
-            registry::run_one(check, c, prec, settings).outcome,
-            Outcome::Verdict(Verdict::Fails { .. })
-        )
+        registry::run_one(check, c, prec, settings)
+            .is_some_and(|r| matches!(r.outcome, Outcome::Verdict(Verdict::Fails { .. })))
     };
     shrink(case, witnesses, &fails, Budget::default())
 }

@@ -1,6 +1,7 @@
 //! The `penner` binary: argument parsing, dispatch, messages and exit codes.
 
 mod args;
+mod certify;
 mod check;
 mod error;
 mod files;
@@ -29,7 +30,7 @@ pub fn main() -> ExitCode {
         }
     };
     let result = match cli.command {
-        None => report::run(penner::oracle::precision::DEFAULT_LIST, false),
+        None => report::run(penner::oracle::precision::REPORT_LIST, false),
         Some(Command::Report { precision, json }) => report::run(&precision, json),
         Some(Command::Check {
             surface,
@@ -45,7 +46,10 @@ pub fn main() -> ExitCode {
             no_failure_files,
         }),
         Some(Command::Replay { file, json }) => replay::run(&file, json),
-        Some(other) => not_yet(&other),
+        Some(Command::Certify { claim }) => certify::run(&claim),
+        Some(Command::Delaunay { .. }) => Err(CliError::Input(
+            "`delaunay` needs the flip algorithms, which this build lacks".to_string(),
+        )),
     };
     match result {
         Ok(c) => ExitCode::from(c),
@@ -54,12 +58,6 @@ pub fn main() -> ExitCode {
             ExitCode::from(e.exit_code())
         }
     }
-}
-
-fn not_yet(c: &Command) -> Result<u8, CliError> {
-    Err(CliError::Input(format!(
-        "{c:?} is not available in this build"
-    )))
 }
 
 /// A panic inside penner is a defect: print one line naming it, no backtrace.

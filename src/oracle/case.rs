@@ -45,6 +45,32 @@ impl Lengths {
         }
     }
 
+    /// The conformal scaling ℓ̃_ij = s_i s_j ℓ_ij with rational s_i = e^{u_i/2} (MATH.md §4,
+    /// Eq. 10), exact; squared lengths scale by s_i² s_j².
+    pub fn scaled(&self, mesh: &Mesh, s: &[Rational]) -> Lengths {
+        let factor = |e: crate::mesh::Edge, squared: bool| {
+            let h = e.halfedge();
+            let f = Rational::from(&s[mesh.tail(h).idx()] * &s[mesh.tip(h).idx()]);
+            if squared {
+                Rational::from(&f * &f)
+            } else {
+                f
+            }
+        };
+        match self {
+            Lengths::Exact(v) => Lengths::Exact(
+                mesh.edges()
+                    .map(|e| factor(e, false) * &v[e.idx()])
+                    .collect(),
+            ),
+            Lengths::Squared(v) => Lengths::Squared(
+                mesh.edges()
+                    .map(|e| factor(e, true) * &v[e.idx()])
+                    .collect(),
+            ),
+        }
+    }
+
     /// The metric restricted or re-indexed: entry `i` of the result is entry `map[i]` of
     /// `self`. Indices out of range are the caller's error (maps come from the mesh).
     pub fn reindex(&self, map: &[usize]) -> Lengths {

@@ -5,6 +5,7 @@
 //! predicates and packages their answers.
 
 pub mod case;
+pub mod certify;
 pub mod claim;
 pub mod failure;
 pub mod precision;

@@ -13,15 +13,18 @@ pub enum Prec {
     Dd,
     /// MPFR ([`crate::scalar::Mpfr`]) at this many bits, unit roundoff 2⁻ᵖ.
     Mpfr(Precision),
+    /// Exact rational arithmetic (checks that have an exact form; needs rational lengths).
+    Exact,
 }
 
 impl Prec {
-    /// Significand bits: 53, 106 or p.
+    /// Significand bits: 53, 106 or p; 0 for exact arithmetic.
     pub fn bits(self) -> u32 {
         match self {
             Prec::F64 => 53,
             Prec::Dd => 106,
             Prec::Mpfr(p) => p.bits(),
+            Prec::Exact => 0,
         }
     }
 }
@@ -32,6 +35,7 @@ impl fmt::Display for Prec {
             Prec::F64 => f.write_str("f64"),
             Prec::Dd => f.write_str("dd"),
             Prec::Mpfr(p) => write!(f, "mpfr-{}", p.bits()),
+            Prec::Exact => f.write_str("exact"),
         }
     }
 }
@@ -42,8 +46,8 @@ pub enum PrecListError {
     /// The list has no entries.
     #[error("the precision list is empty (expected e.g. `f64,dd,256`)")]
     Empty,
-    /// An entry is neither `f64`, `dd`, `mpfr-<bits>` nor a bit count.
-    #[error("precision `{0}` is not `f64`, `dd` or a number of bits such as `256`")]
+    /// An entry is neither `f64`, `dd`, `exact`, `mpfr-<bits>` nor a bit count.
+    #[error("precision `{0}` is not `f64`, `dd`, `exact` or a number of bits such as `256`")]
     Unknown(String),
     /// A bit count outside the supported range.
     #[error("precision `{entry}`: {source}")]
@@ -55,8 +59,8 @@ pub enum PrecListError {
     },
 }
 
-/// Parse a comma-separated precision list: `f64`, `dd`, a bit count (`128`) or
-/// `mpfr-128`, in any order; repeats are dropped, the order is kept.
+/// Parse a comma-separated precision list: `f64`, `dd`, a bit count (`128`), `mpfr-128`
+/// or `exact`, in any order; repeats are dropped, the order is kept.
 ///
 /// ```
 /// use penner::oracle::precision::{parse_list, Prec};
@@ -87,6 +91,7 @@ fn parse_one(entry: &str) -> Result<Prec, PrecListError> {
     match lower.as_str() {
         "f64" | "double" => return Ok(Prec::F64),
         "dd" | "double-double" => return Ok(Prec::Dd),
+        "exact" | "q" => return Ok(Prec::Exact),
         _ => {}
     }
     let digits = lower.strip_prefix("mpfr-").unwrap_or(&lower);
@@ -103,5 +108,9 @@ fn parse_one(entry: &str) -> Result<Prec, PrecListError> {
         })
 }
 
-/// The default ladder of `penner check` and the report: `f64`, `dd`, MPFR-256.
+/// The default ladder of `penner check`: `f64`, `dd`, MPFR-256.
 pub const DEFAULT_LIST: &str = "f64,dd,256";
+
+/// Every precision the report on the built-in corpus runs: the default ladder plus
+/// MPFR-128 and exact arithmetic.
+pub const REPORT_LIST: &str = "f64,dd,128,256,exact";

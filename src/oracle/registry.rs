@@ -17,12 +17,14 @@ pub struct Check {
     pub id: &'static str,
     /// Short statement, for tables.
     pub title: &'static str,
-    /// Runs the check on a case at one precision.
-    pub run: fn(&Case, Prec, &Settings) -> Verdict,
+    /// Runs the check on a case at one precision; `None` when the check has no form at
+    /// that precision (e.g. an exact-only check at `f64`) — the row is then left out.
+    pub run: fn(&Case, Prec, &Settings) -> Option<Verdict>,
 }
 
 /// Run `$body` with `$l` bound to the case's lengths in the backend of `$prec`
 /// (`Vec<f64>`, `Vec<Dd>` or `Vec<Mpfr>`); `$t` names the backend type inside `$body`.
+/// At `Prec::Exact` the macro yields `None` (use the check's exact form instead).
 #[allow(unused_macros)]
 macro_rules! at_precision {
     ($prec:expr, $case:expr, |$l:ident : $t:ident| $body:expr) => {
@@ -42,6 +44,7 @@ macro_rules! at_precision {
                 let $l: Vec<$t> = $case.lengths.to_real::<$t>(p);
                 $body
             }
+            $crate::oracle::precision::Prec::Exact => None,
         }
     };
 }
@@ -51,21 +54,43 @@ pub fn catalogue() -> Vec<Check> {
     Vec::new()
 }
 
-/// The checks whose ID is in `ids` (case-insensitive), or all of them for an empty list;
-/// an unknown ID is returned as the error.
+/// The checks named in `ids`, or all of them for an empty list. A name selects the check
+/// with that ID (case-insensitive) and its variants (`T21` also selects `T21P`); an
+/// unknown name is returned as the error.
 pub fn select(ids: &[String]) -> Result<Vec<Check>, String> {
     let all = catalogue();
     if ids.is_empty() {
         return Ok(all);
     }
-    let mut out = Vec::new();
+    let mut out: Vec<Check> = Vec::new();
     for id in ids {
-        match all.iter().find(|c| c.id.eq_ignore_ascii_case(id)) {
-            Some(c) => out.push(*c),
-            None => return Err(id.clone()),
+        let id = id.trim().to_ascii_uppercase();
+        let exact: Vec<Check> = all.iter().filter(|c| c.id == id).copied().collect();
+        let chosen: Vec<Check> = if exact.is_empty() || id.len() == 3 {
+            all.iter()
+                .filter(|c| c.id == id || (c.id.starts_with(&id) && id.len() == 3))
+                .copied()
+                .collect()
+        } else {
+            exact
+        };
+        if chosen.is_empty() {
+            return Err(id);
+        }
+        for c in chosen {
+            if !out.iter().any(|o| o.id == c.id) {
+                out.push(c);
+            }
         }
     }
     Ok(out)
+}
+
+/// The check with exactly this ID.
+pub fn by_id(id: &str) -> Option<Check> {
+    catalogue()
+        .into_iter()
+        .find(|c| c.id.eq_ignore_ascii_case(id))
 }
 
 /// What running one check produced.
@@ -94,24 +119,26 @@ pub struct Row {
     pub seconds: f64,
 }
 
-/// Run one check on one case at one precision, timing it. A panic inside the check is
-/// caught and reported as [`Outcome::Crashed`] so one defect cannot hide other rows.
-pub fn run_one(check: &Check, case: &Case, prec: Prec, settings: &Settings) -> Row {
+/// Run one check on one case at one precision, timing it; `None` when the check has no
+/// form at that precision. A panic inside the check is caught and reported as
+/// [`Outcome::Crashed`] so one defect cannot hide other rows.
+pub fn run_one(check: &Check, case: &Case, prec: Prec, settings: &Settings) -> Option<Row> {
     let start = Instant::now();
     let result = catch_unwind(AssertUnwindSafe(|| (check.run)(case, prec, settings)));
     let seconds = start.elapsed().as_secs_f64();
     let outcome = match result {
-        Ok(v) => Outcome::Verdict(v),
+        Ok(Some(v)) => Outcome::Verdict(v),
+        Ok(None) => return None,
         Err(payload) => Outcome::Crashed(panic_message(payload.as_ref())),
     };
-    Row {
+    Some(Row {
         case: case.name.clone(),
         id: check.id,
         title: check.title,
         precision: prec,
         outcome,
         seconds,
-    }
+    })
 }
 
 /// Run every check in `checks` on `case` at every precision in `precs`.
@@ -119,7 +146,7 @@ pub fn run_case(case: &Case, checks: &[Check], precs: &[Prec], settings: &Settin
     let mut rows = Vec::with_capacity(checks.len() * precs.len());
     for check in checks {
         for &p in precs {
-            rows.push(run_one(check, case, p, settings));
+            rows.extend(run_one(check, case, p, settings));
         }
     }
     rows

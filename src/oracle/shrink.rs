@@ -150,16 +150,27 @@ pub fn shrink(
         }
         ring = grow(&case.mesh, &ring);
     }
-    // Greedy: drop one face at a time while the check still fails.
-    let mut i = 0;
-    while i < best.mesh.n_faces() && best.mesh.n_faces() > 1 {
-        if !within(&mut attempts) {
-            break;
+    // Greedy passes: drop one face at a time (from the last face down, so indices of
+    // faces not yet visited stay valid) while the check still fails; repeat until a pass
+    // removes nothing.
+    'passes: loop {
+        let mut changed = false;
+        let mut i = best.mesh.n_faces();
+        while i > 0 && best.mesh.n_faces() > 1 {
+            i -= 1;
+            if !within(&mut attempts) {
+                break 'passes;
+            }
+            let keep: Vec<Face> = best.mesh.faces().filter(|f| f.idx() != i).collect();
+            if let Some(sub) = sub_case(&best, &keep) {
+                if fails(&sub) {
+                    best = sub;
+                    changed = true;
+                }
+            }
         }
-        let keep: Vec<Face> = best.mesh.faces().filter(|f| f.idx() != i).collect();
-        match sub_case(&best, &keep) {
-            Some(sub) if fails(&sub) => best = sub,
-            _ => i += 1,
+        if !changed {
+            break;
         }
     }
     best

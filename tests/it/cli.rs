@@ -195,3 +195,156 @@ fn hostile_json_is_refused_cleanly() {
         assert_refused(&out, 3, &[name, mention]);
     }
 }
+
+/// Run `penner certify` on a claim; return the exit code and the parsed answer.
+fn certify(
+    dir: &Path,
+    name: &str,
+    claim: &serde_json::Value,
+) -> (Option<i32>, serde_json::Value, String) {
+    let p = write(dir, name, claim.to_string().as_bytes());
+    let out = penner(&["certify", &p.display().to_string()]);
+    let answer = serde_json::from_slice(&out.stdout).unwrap_or_else(|e| {
+        panic!(
+            "answer is not JSON ({e}): {}\nstderr: {}",
+            text(&out.stdout),
+            text(&out.stderr)
+        )
+    });
+    (out.status.code(), answer, text(&out.stderr))
+}
+
+fn tetrahedron_json() -> serde_json::Value {
+    serde_json::from_str(TETRAHEDRON).unwrap()
+}
+
+/// 2 log 2 to 50 digits: the log scale factor that multiplies every length by 4.
+const TWO_LN_2: &str = "1.3862943611198906188344642429163531361510002687205";
+
+#[test]
+fn certify_cone_angles_holds_refuted_and_bad_input() {
+    let d = scratch("certify-angles");
+    let pi = "3.14159265358979323846264338327950288419716939937510";
+    let claim = |angles: serde_json::Value, eps: &str| {
+        serde_json::json!({"penner_claim": 1, "id": "t", "kind": "cone_angles",
+            "surface": tetrahedron_json(), "angles": angles, "epsilon": eps})
+    };
+    let (code, a, _) = certify(
+        &d,
+        "holds.json",
+        &claim(serde_json::json!([pi, pi, pi, pi]), "1e-40"),
+    );
+    assert_eq!(code, Some(0), "{a}");
+    assert_eq!(a["verdict"], "holds");
+    assert_eq!(a["certified"], true);
+    assert_eq!(a["id"], "t");
+    // Off by 1e-47 at vertex 3, epsilon 1e-48: refuted, counterexample v3, needs > 128 bits.
+    let off = "3.14159265358979323846264338327950288419716939938510";
+    let (code, a, _) = certify(
+        &d,
+        "refuted.json",
+        &claim(serde_json::json!([pi, pi, pi, off]), "1e-48"),
+    );
+    assert_eq!(code, Some(1), "{a}");
+    assert_eq!(a["verdict"], "refuted");
+    assert_eq!(a["counterexample"]["element"], "v3");
+    assert!(a["precision_bits"].as_u64().unwrap() > 128, "{a}");
+    // Wrong count of angles: bad input, with a JSON answer and a message naming the field.
+    let (code, a, err) = certify(&d, "count.json", &claim(serde_json::json!([pi]), "1e-9"));
+    assert_eq!(code, Some(3));
+    assert_eq!(a["verdict"], "bad_input");
+    assert!(
+        err.contains("angles") && err.contains("count.json"),
+        "{err}"
+    );
+}
+
+#[test]
+fn certify_conformal_equivalence_holds_refuted_and_undecided_at_a_tie() {
+    let d = scratch("certify-conformal");
+    let tet = tetrahedron_json();
+    let mut four = tet.clone();
+    four["lengths"] = serde_json::json!(["4", "4", "4", "4", "4", "4"]);
+    let claim = |target: &serde_json::Value, u: serde_json::Value, eps: &str| {
+        serde_json::json!({"penner_claim": 1, "kind": "conformal_equivalence",
+            "surface": tet, "target": target, "u": u, "epsilon": eps})
+    };
+    let u = serde_json::json!([TWO_LN_2, TWO_LN_2, TWO_LN_2, TWO_LN_2]);
+    let (code, a, _) = certify(&d, "holds.json", &claim(&four, u, "1e-45"));
+    assert_eq!(
+        (code, a["verdict"].as_str()),
+        (Some(0), Some("holds")),
+        "{a}"
+    );
+    // Negative control: u_2 off by 1e-6; the edges at vertex 2 are refuted.
+    let u = serde_json::json!([TWO_LN_2, TWO_LN_2, "1.386295", TWO_LN_2]);
+    let (code, a, _) = certify(&d, "refuted.json", &claim(&four, u, "1e-9"));
+    assert_eq!(
+        (code, a["verdict"].as_str()),
+        (Some(1), Some("refuted")),
+        "{a}"
+    );
+    let el = a["counterexample"]["element"].as_str().unwrap();
+    assert!(el.contains("v2"), "{el}");
+    assert_eq!(a["witnesses"].as_array().unwrap().len(), 3, "{a}");
+    // An exact tie (residual exactly 0 = epsilon) cannot be settled by enclosures.
+    let (code, a, _) = certify(
+        &d,
+        "tie.json",
+        &claim(&tet, serde_json::json!([0, 0, 0, 0]), "0"),
+    );
+    assert_eq!(
+        (code, a["verdict"].as_str()),
+        (Some(2), Some("undecided")),
+        "{a}"
+    );
+    assert_eq!(a["certified"], false);
+}
+
+#[test]
+fn certify_refuses_hostile_claims() {
+    let d = scratch("certify-hostile");
+    let tet = tetrahedron_json();
+    let cases: Vec<(&str, serde_json::Value, &str)> = vec![
+        (
+            "version.json",
+            serde_json::json!({"penner_claim": 2, "kind": "cone_angles", "surface": tet}),
+            "version 2",
+        ),
+        (
+            "kind.json",
+            serde_json::json!({"penner_claim": 1, "kind": "world_peace", "surface": tet}),
+            "world_peace",
+        ),
+        (
+            "eps.json",
+            serde_json::json!({"penner_claim": 1, "kind": "cone_angles", "surface": tet, "angles": [1,1,1,1], "epsilon": "-1"}),
+            "epsilon",
+        ),
+        (
+            "bits.json",
+            serde_json::json!({"penner_claim": 1, "kind": "cone_angles", "surface": tet, "angles": [1,1,1,1], "epsilon": 1, "max_bits": 99999999}),
+            "max_bits",
+        ),
+        (
+            "huge-exp.json",
+            serde_json::json!({"penner_claim": 1, "kind": "cone_angles", "surface": tet, "angles": ["1e999999999",1,1,1], "epsilon": 1}),
+            "angles[0]",
+        ),
+        (
+            "target.json",
+            serde_json::json!({"penner_claim": 1, "kind": "conformal_equivalence", "surface": tet,
+            "target": {"vertices": 3, "faces": [[0,1,2],[0,2,1]], "lengths": ["1","1","1"]}, "u": [0,0,0,0], "epsilon": 0}),
+            "same triangulation",
+        ),
+    ];
+    for (name, claim, mention) in cases {
+        let (code, a, err) = certify(&d, name, &claim);
+        assert_eq!(code, Some(3), "{name}: {a}");
+        assert_eq!(a["verdict"], "bad_input");
+        assert!(err.contains(mention) && err.contains(name), "{name}: {err}");
+        assert!(!err.contains("panicked"), "{err}");
+    }
+    let out = penner(&["certify", &d.join("missing.json").display().to_string()]);
+    assert_refused(&out, 3, &["missing.json"]);
+}

@@ -4,6 +4,7 @@ mod cli;
 mod interval;
 mod mesh;
 mod mesh_core;
+mod oracle;
 #[allow(dead_code)] // helpers used by some areas only
 mod support;
 mod tidy;

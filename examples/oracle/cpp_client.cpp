@@ -1,0 +1,108 @@
+// Using penner as an oracle from C++17 (no dependencies).
+//
+// Writes a claim about a unit tetrahedron, runs `penner certify` on it, and reads the
+// verdict from the JSON answer and the exit code. Usage:
+//
+//     g++ -std=c++17 -O2 -o cpp_client examples/oracle/cpp_client.cpp
+//     ./cpp_client path/to/penner
+//
+// Exit status 0 when every answer is the expected one.
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace {
+
+// The value of a top-level string or literal field `"key": value` in a flat JSON answer.
+// Enough for the fields this client reads; a real client would use a JSON library.
+std::string field(const std::string& json, const std::string& key) {
+    const std::string needle = "\"" + key + "\"";
+    auto at = json.find(needle);
+    if (at == std::string::npos) return "";
+    at = json.find(':', at + needle.size());
+    if (at == std::string::npos) return "";
+    ++at;
+    while (at < json.size() && (json[at] == ' ' || json[at] == '\n')) ++at;
+    if (at < json.size() && json[at] == '"') {
+        auto end = json.find('"', at + 1);
+        return json.substr(at + 1, end - at - 1);
+    }
+    auto end = json.find_first_of(",\n}", at);
+    return json.substr(at, end - at);
+}
+
+struct Result {
+    int exit_code;
+    std::string answer;
+};
+
+Result certify(const std::string& penner, const std::string& claim) {
+    char path[] = "/tmp/penner-claim-XXXXXX";
+    int fd = mkstemp(path);
+    if (fd < 0) {
+        std::perror("mkstemp");
+        std::exit(2);
+    }
+    close(fd);
+    std::ofstream(path) << claim;
+    const std::string cmd = "'" + penner + "' certify '" + path + "' 2>/dev/null";
+    FILE* pipe = popen(cmd.c_str(), "r");
+    if (!pipe) {
+        std::perror("popen");
+        std::exit(2);
+    }
+    std::string out;
+    char buf[4096];
+    size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, pipe)) > 0) out.append(buf, n);
+    int status = pclose(pipe);
+    std::remove(path);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+const char* kSurface =
+    R"({"vertices": 4, "faces": [[0,1,2],[0,2,3],[0,3,1],[1,3,2]],)"
+    R"( "lengths": ["1","1","1","1","1","1"]})";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const std::string penner = argc > 1 ? argv[1] : "target/release/penner";
+    const std::string pi = "\"3.141592653589793238462643383279502884197\"";
+    struct Case {
+        const char* what;
+        std::string claim;
+        const char* verdict;
+        int exit_code;
+    } cases[] = {
+        {"true cone angles",
+         std::string(R"({"penner_claim": 1, "kind": "cone_angles", "surface": )") + kSurface +
+             R"(, "angles": [)" + pi + "," + pi + "," + pi + "," + pi + R"(], "epsilon": "1e-35"})",
+         "holds", 0},
+        {"cone angles 3.0 (too small)",
+         std::string(R"({"penner_claim": 1, "kind": "cone_angles", "surface": )") + kSurface +
+             R"(, "angles": [3.0, 3.0, 3.0, 3.0], "epsilon": "0.1"})",
+         "refuted", 1},
+        {"malformed claim", R"({"penner_claim": 1, "kind": "cone_angles"})", "bad_input", 3},
+    };
+    int failures = 0;
+    for (const auto& c : cases) {
+        const Result r = certify(penner, c.claim);
+        const std::string verdict = field(r.answer, "verdict");
+        const bool ok = verdict == c.verdict && r.exit_code == c.exit_code;
+        std::cout << c.what << ": verdict=" << verdict << " certified=" << field(r.answer, "certified")
+                  << " bits=" << field(r.answer, "precision_bits") << " exit=" << r.exit_code << " -> "
+                  << (ok ? "ok" : "UNEXPECTED") << "\n";
+        failures += !ok;
+    }
+    if (failures) {
+        std::cerr << failures << " unexpected answer(s)\n";
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,75 @@
+#!/usr/bin/env python3
+"""Using penner as an oracle from Python (standard library only).
+
+Writes claims about a unit tetrahedron, runs `penner certify` on each, parses the JSON
+answer and checks the verdict and exit code. Usage:
+
+    python3 examples/oracle/python_client.py [path/to/penner]
+
+Exit status 0 when every answer is the expected one.
+"""
+
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+PENNER = sys.argv[1] if len(sys.argv) > 1 else os.environ.get("PENNER", "target/release/penner")
+
+TETRAHEDRON = {
+    "vertices": 4,
+    "faces": [[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]],
+    "lengths": ["1"] * 6,
+}
+
+# pi to 40 digits, as an exact decimal string: each vertex of the unit tetrahedron
+# carries three corners of pi/3.
+PI = "3.141592653589793238462643383279502884197"
+
+
+def certify(claim):
+    """Write `claim` to a file, run penner, return (exit code, parsed answer)."""
+    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+        json.dump(claim, f)
+        path = f.name
+    try:
+        proc = subprocess.run([PENNER, "certify", path], capture_output=True, text=True, timeout=120)
+    finally:
+        os.unlink(path)
+    return proc.returncode, json.loads(proc.stdout)
+
+
+def main():
+    cases = [
+        # (description, claim, expected verdict, expected exit code)
+        ("true cone angles",
+         {"penner_claim": 1, "id": "tet-true", "kind": "cone_angles", "surface": TETRAHEDRON,
+          "angles": [PI] * 4, "epsilon": "1e-35"},
+         "holds", 0),
+        ("cone angles off by 1e-9 at vertex 2",
+         {"penner_claim": 1, "id": "tet-off", "kind": "cone_angles", "surface": TETRAHEDRON,
+          "angles": [math.pi, math.pi, math.pi + 1e-9, math.pi], "epsilon": "1e-12"},
+         "refuted", 1),
+        ("unsupported protocol version",
+         {"penner_claim": 99, "kind": "cone_angles", "surface": TETRAHEDRON},
+         "bad_input", 3),
+    ]
+    failures = 0
+    for what, claim, verdict, code in cases:
+        rc, answer = certify(claim)
+        ok = rc == code and answer["verdict"] == verdict
+        print(f"{what}: verdict={answer['verdict']} certified={answer.get('certified')} "
+              f"bits={answer.get('precision_bits')} exit={rc} -> {'ok' if ok else 'UNEXPECTED'}")
+        if answer["verdict"] == "refuted":
+            print(f"  first counterexample: {answer['counterexample']['element']}")
+            ok = ok and answer["counterexample"]["element"] == "v2"
+        failures += not ok
+    if failures:
+        print(f"{failures} unexpected answer(s)", file=sys.stderr)
+        sys.exit(1)
+
+
+if __name__ == "__main__":
+    main()

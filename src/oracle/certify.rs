@@ -1,0 +1,192 @@
+//! Answering claims (protocol v1, [`super::claim`]) with certified verdicts.
+
+use super::case::Case;
+use super::claim::{Assertion, Claim};
+use super::surface::edge_order;
+use crate::geometry::cone_angles::cone_angles;
+use crate::mesh::{Edge, Mesh};
+use crate::predicates::within::{within_all, Batch, Within};
+use crate::scalar::{Certified, Interval, Mpfr, Precision, Real};
+use crate::theorems::Witness;
+use rug::Rational;
+use serde_json::{json, Value};
+
+/// First MPFR precision of the ladder used for claims.
+const START_BITS: u32 = 128;
+
+/// The verdict on a claim.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ClaimVerdict {
+    /// The claim holds.
+    Holds,
+    /// The claim is false; a counterexample is given.
+    Refuted,
+    /// Neither could be established up to the precision cap.
+    Undecided,
+}
+
+impl ClaimVerdict {
+    /// The protocol word: `holds`, `refuted`, `undecided`.
+    pub fn word(self) -> &'static str {
+        match self {
+            ClaimVerdict::Holds => "holds",
+            ClaimVerdict::Refuted => "refuted",
+            ClaimVerdict::Undecided => "undecided",
+        }
+    }
+}
+
+/// The answer to a claim.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Answer {
+    /// The claim's `id`, echoed.
+    pub id: Option<String>,
+    /// The claim kind.
+    pub kind: &'static str,
+    /// The verdict.
+    pub verdict: ClaimVerdict,
+    /// Whether the verdict is rigorous (exact arithmetic or enclosures).
+    pub certified: bool,
+    /// Highest precision used, in bits (0 for purely exact answers).
+    pub precision_bits: u32,
+    /// Largest discrepancy between claimed and computed values (display only).
+    pub max_discrepancy: Option<f64>,
+    /// For a refutation: the first counterexample element.
+    pub counterexample: Option<Witness>,
+    /// Every element found wrong (refutation) or left open (undecided).
+    pub witnesses: Vec<Witness>,
+}
+
+impl Answer {
+    /// As JSON (docs/oracle.md, "Answers").
+    pub fn to_json(&self) -> Value {
+        json!({
+            "penner_answer": super::claim::PROTOCOL_VERSION,
+            "id": self.id,
+            "kind": self.kind,
+            "verdict": self.verdict.word(),
+            "certified": self.certified,
+            "precision_bits": self.precision_bits,
+            "max_discrepancy": self.max_discrepancy,
+            "counterexample": self.counterexample,
+            "witnesses": self.witnesses,
+        })
+    }
+}
+
+/// A claim kind this build cannot evaluate.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("claim kind `{0}` cannot be evaluated by this build of penner")]
+pub struct Unsupported(pub &'static str);
+
+/// The user-facing index of each edge (first-appearance order of the surface format).
+fn user_edge_index(mesh: &Mesh) -> Vec<usize> {
+    let order = edge_order(mesh);
+    let mut idx = vec![0; mesh.n_edges()];
+    for (k, &e) in order.iter().enumerate() {
+        idx[e] = k;
+    }
+    idx
+}
+
+/// Turn a batch of per-element decisions into an answer.
+fn summarize(claim: &Claim, b: &Batch, name: &dyn Fn(usize) -> String, what: &str) -> Answer {
+    let mut refuted = Vec::new();
+    let mut open = Vec::new();
+    for (i, a) in b.answers.iter().enumerate() {
+        let w = || Witness {
+            element: name(i),
+            detail: String::new(),
+            value: b.discrepancy[i],
+        };
+        match a {
+            Certified::Known {
+                value: Within::Outside,
+                ..
+            } => refuted.push(Witness {
+                detail: format!("the {what} differs from the claimed value by more than epsilon"),
+                ..w()
+            }),
+            Certified::Known {
+                value: Within::Inside,
+                ..
+            } => {}
+            Certified::Undecided { bits_tried } => open.push(Witness {
+                detail: format!("cannot separate |difference| from epsilon at {bits_tried} bits"),
+                ..w()
+            }),
+        }
+    }
+    let max_discrepancy = b
+        .discrepancy
+        .iter()
+        .copied()
+        .filter(|x| !x.is_nan())
+        .reduce(f64::max);
+    let (verdict, witnesses) = if !refuted.is_empty() {
+        (ClaimVerdict::Refuted, refuted)
+    } else if !open.is_empty() {
+        (ClaimVerdict::Undecided, open)
+    } else {
+        (ClaimVerdict::Holds, Vec::new())
+    };
+    Answer {
+        id: claim.id.clone(),
+        kind: claim.assertion.kind(),
+        verdict,
+        certified: verdict != ClaimVerdict::Undecided,
+        precision_bits: b.bits,
+        max_discrepancy,
+        counterexample: if verdict == ClaimVerdict::Refuted {
+            witnesses.first().cloned()
+        } else {
+            None
+        },
+        witnesses,
+    }
+}
+
+fn interval_lengths(case: &Case, p: Precision) -> Vec<Interval<Mpfr>> {
+    case.lengths.to_real::<Interval<Mpfr>>(p)
+}
+
+/// Answer `claim`.
+pub fn certify(claim: &Claim) -> Result<Answer, Unsupported> {
+    let mesh = &claim.surface.mesh;
+    match &claim.assertion {
+        Assertion::ConeAngles { angles, epsilon } => {
+            let mut enclose = |p| cone_angles(mesh, &interval_lengths(&claim.surface, p));
+            let b = within_all(&mut enclose, angles, epsilon, START_BITS, claim.max_bits);
+            Ok(summarize(claim, &b, &|i| format!("v{i}"), "cone angle"))
+        }
+        Assertion::ConformalEquivalence { target, u, epsilon } => {
+            let user = user_edge_index(mesh);
+            let mut enclose = |p: Precision| {
+                let l = interval_lengths(&claim.surface, p);
+                let lt = interval_lengths(target, p);
+                let uu: Vec<Interval<Mpfr>> =
+                    u.iter().map(|x| Interval::from_rational(x, p)).collect();
+                let half = Interval::from_rational(&Rational::from((1, 2)), p);
+                // Residual per edge, in user order: log ℓ̃ − log ℓ − (u_i + u_j)/2.
+                let mut r = vec![Interval::from_rational(&Rational::new(), p); mesh.n_edges()];
+                for e in mesh.edges() {
+                    let h = e.halfedge();
+                    let (i, j) = (mesh.tail(h).idx(), mesh.tip(h).idx());
+                    let s = (uu[i].clone() + &uu[j]) * &half;
+                    r[user[e.idx()]] = lt[e.idx()].ln() - &l[e.idx()].ln() - &s;
+                }
+                r
+            };
+            let zeros = vec![Rational::new(); mesh.n_edges()];
+            let b = within_all(&mut enclose, &zeros, epsilon, START_BITS, claim.max_bits);
+            let order = edge_order(mesh);
+            let name = |k: usize| {
+                let e = Edge(order[k] as u32);
+                let h = e.halfedge();
+                format!("edge {k} (v{}–v{})", mesh.tail(h).0, mesh.tip(h).0)
+            };
+            Ok(summarize(claim, &b, &name, "log-length residual"))
+        }
+        other => Err(Unsupported(other.kind())),
+    }
+}
