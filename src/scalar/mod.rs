@@ -14,11 +14,13 @@ mod dd;
 mod f64_impl;
 pub mod interval;
 mod mpfr;
+pub mod parse;
 
 pub use certified::{Certified, Sign, Stage};
 pub use dd::Dd;
 pub use interval::{Interval, IntervalBound};
 pub use mpfr::{Mpfr, Precision, PrecisionError};
+pub use parse::{parse_rational, NumberError};
 
 use std::fmt::Debug;
 use std::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};

@@ -2,6 +2,7 @@
 
 mod cli;
 mod interval;
+mod io;
 mod mesh;
 mod mesh_core;
 mod oracle;
