@@ -10,7 +10,7 @@ pub fn run(precision: &str, json: bool) -> Result<u8, CliError> {
     let precs = super::precisions(precision)?;
     let checks = catalogue();
     let settings = Settings::default();
-    let corpus: Vec<penner::oracle::Case> = Vec::new();
+    let corpus = penner::oracle::corpus::standard();
     let mut rows = Vec::new();
     for case in &corpus {
         rows.extend(registry::run_case(case, &checks, &precs, &settings));

@@ -7,6 +7,7 @@
 pub mod case;
 pub mod certify;
 pub mod claim;
+pub mod corpus;
 pub mod failure;
 pub mod precision;
 #[macro_use]
