@@ -3,12 +3,13 @@
 //! | backend | type | unit roundoff `u` |
 //! |---|---|---|
 //! | IEEE binary64 | `f64` | 2⁻⁵³ |
-//! | double-double | [`Dd`] | 2⁻¹⁰⁴ (proofs/B-DD-*) |
+//! | double-double | [`Dd`] | 2⁻¹⁰⁴ (proofs B01–B15) |
 //! | MPFR | [`Mpfr`] | 2⁻ᵖ |
 //!
 //! The trait has **no `PartialOrd`**: generic code that must decide something asks
 //! [`crate::predicates`], which answers a [`Certified`] sign.
 
+mod approx_impls;
 mod certified;
 mod dd;
 mod f64_impl;
@@ -17,6 +18,8 @@ mod mpfr;
 pub mod parse;
 
 pub use certified::{Certified, Sign, Stage};
+#[doc(hidden)]
+pub use dd::sloppy_add as dd_sloppy_add;
 pub use dd::Dd;
 pub use interval::{Interval, IntervalBound};
 pub use mpfr::{Mpfr, Precision, PrecisionError};
@@ -33,7 +36,7 @@ use std::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
 /// allocation for MPFR).
 ///
 /// Every operation is rounded as documented by the backend: correctly rounded for `f64`
-/// arithmetic and all [`Mpfr`] operations, within the bounds of `proofs/B-DD-*` for [`Dd`].
+/// arithmetic and all [`Mpfr`] operations, within the bounds of proofs B01–B15 for [`Dd`].
 ///
 /// ```
 /// use penner::scalar::{Real, Mpfr, Precision};
@@ -75,7 +78,7 @@ pub trait Real:
     fn from_f64(x: f64, ctx: Self::Ctx) -> Self;
 
     /// Conversion of an exact rational, correctly rounded for `f64` and [`Mpfr`], within
-    /// 2u² relative for [`Dd`] (proofs/B-DD-01).
+    /// u²(1 + u) relative for [`Dd`] in the normal range (proofs/B09).
     fn from_rational(q: &rug::Rational, ctx: Self::Ctx) -> Self;
 
     /// π rounded to the working precision.

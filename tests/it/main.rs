@@ -6,6 +6,7 @@ mod io;
 mod mesh;
 mod mesh_core;
 mod oracle;
+mod scalar_dd;
 #[allow(dead_code)] // helpers used by some areas only
 mod support;
 mod tidy;

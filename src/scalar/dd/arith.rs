@@ -1,0 +1,117 @@
+//! Error-free transformations and the double-word algorithms of Joldes, Muller and Popescu,
+//! "Tight and rigorous error bounds for basic building blocks of double-word arithmetic",
+//! ACM TOMS 44(2), 2017 (JMP17). Every function states its bound and the `proofs/` file.
+//!
+//! All algorithms assume round-to-nearest binary64, an exact fused multiply-add
+//! (`f64::mul_add`, correctly rounded on every platform) and no overflow or underflow.
+
+use super::Dd;
+
+/// `a + b = s + e` exactly, with `s = RN(a + b)` (Knuth's TwoSum, 6 flops, no ordering
+/// condition). proof: B01
+#[inline]
+pub(crate) fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let ap = s - b;
+    let bp = s - ap;
+    (s, (a - ap) + (b - bp))
+}
+
+/// `a + b = s + e` exactly when `|a| ≥ |b|` (or `a = 0`), with `s = RN(a + b)`
+/// (Dekker's Fast2Sum). proof: B01
+#[inline]
+pub(crate) fn fast_two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    (s, b - (s - a))
+}
+
+/// `a · b = p + e` exactly, with `p = RN(a · b)`, via one FMA. proof: B02
+#[inline]
+pub(crate) fn two_prod(a: f64, b: f64) -> (f64, f64) {
+    let p = a * b;
+    (p, a.mul_add(b, -p))
+}
+
+/// JMP17 Algorithm 4 (DWPlusFP): `x + y` for a double-word `x` and a float `y`, relative
+/// error ≤ 2u². proof: B03
+#[inline]
+pub(crate) fn add_f64(x: Dd, y: f64) -> Dd {
+    let (sh, sl) = two_sum(x.hi, y);
+    let v = x.lo + sl;
+    let (hi, lo) = fast_two_sum(sh, v);
+    Dd { hi, lo }
+}
+
+/// JMP17 Algorithm 6 (AccurateDWPlusDW): `x + y`, relative error ≤ 3u² + 13u³ even under
+/// cancellation. proof: B04
+#[inline]
+pub(crate) fn add(x: Dd, y: Dd) -> Dd {
+    let (sh, sl) = two_sum(x.hi, y.hi);
+    let (th, tl) = two_sum(x.lo, y.lo);
+    let c = sl + th;
+    let (vh, vl) = fast_two_sum(sh, c);
+    let w = tl + vl;
+    let (hi, lo) = fast_two_sum(vh, w);
+    Dd { hi, lo }
+}
+
+/// JMP17 Algorithm 9 (DWTimesFP3, with FMA): `x · y` for a float `y`, relative error ≤ 2u².
+/// proof: B05
+#[inline]
+pub(crate) fn mul_f64(x: Dd, y: f64) -> Dd {
+    let (ch, cl1) = two_prod(x.hi, y);
+    let cl3 = x.lo.mul_add(y, cl1);
+    let (hi, lo) = fast_two_sum(ch, cl3);
+    Dd { hi, lo }
+}
+
+/// JMP17 Algorithm 12 (DWTimesDW3, with FMA): `x · y`, relative error ≤ 5u² (JMP17),
+/// improved to 4u² by Muller and Rideau (TOMS 2022). proof: B06
+#[inline]
+pub(crate) fn mul(x: Dd, y: Dd) -> Dd {
+    let (ch, cl1) = two_prod(x.hi, y.hi);
+    let tl0 = x.lo * y.lo;
+    let tl1 = x.hi.mul_add(y.lo, tl0);
+    let cl2 = x.lo.mul_add(y.hi, tl1);
+    let cl3 = cl1 + cl2;
+    let (hi, lo) = fast_two_sum(ch, cl3);
+    Dd { hi, lo }
+}
+
+/// JMP17 Algorithm 18 (DWDivDW3, with FMA): `x / y`, relative error ≤ 9.8u². proof: B07
+#[inline]
+pub(crate) fn div(x: Dd, y: Dd) -> Dd {
+    let th = 1.0 / y.hi;
+    // Exact: 1 − y_h·t_h is representable and the FMA rounds once.
+    let rh = (-y.hi).mul_add(th, 1.0);
+    let rl = -(y.lo * th);
+    let (eh, el) = fast_two_sum(rh, rl);
+    let d = mul_f64(Dd { hi: eh, lo: el }, th);
+    let m = add_f64(d, th);
+    mul(x, m)
+}
+
+/// Square root of a double-word `x > 0` by one Newton correction of `RN(√x_h)` with the
+/// exact FMA residual (SQRTDWtoDW of Lefèvre, Louvet, Muller, Picot and Rideau, TOMS 2023),
+/// relative error ≤ 25/8 u². proof: B08
+#[inline]
+pub(crate) fn sqrt(x: Dd) -> Dd {
+    let sh = x.hi.sqrt();
+    // Exact: x_h − s_h² is representable (s_h = RN(√x_h)) and the FMA rounds once.
+    let rho1 = (-sh).mul_add(sh, x.hi);
+    let rho2 = x.lo + rho1;
+    let sl = rho2 / (2.0 * sh);
+    let (hi, lo) = fast_two_sum(sh, sl);
+    Dd { hi, lo }
+}
+
+/// The "sloppy" double-word addition (QD's default), kept only as a negative control for
+/// the accuracy tests: it has no relative error bound under cancellation.
+#[doc(hidden)]
+pub fn sloppy_add(x: Dd, y: Dd) -> Dd {
+    let (sh, sl) = two_sum(x.hi, y.hi);
+    let v = x.lo + y.lo;
+    let w = sl + v;
+    let (hi, lo) = fast_two_sum(sh, w);
+    Dd { hi, lo }
+}

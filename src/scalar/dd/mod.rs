@@ -1,0 +1,281 @@
+//! [`Dd`]: double-double ("double-word") arithmetic, our own implementation of the
+//! algorithms of Joldes, Muller and Popescu (TOMS 2017) with FMA, plus elementary functions
+//! by argument reduction and polynomials in double-double.
+//!
+//! Bounds (u = 2⁻⁵³, so the double-double unit roundoff is 2⁻¹⁰⁴ = 4u²):
+//!
+//! | operation | algorithm | relative error | proof |
+//! |---|---|---|---|
+//! | `+`, `−` | JMP17 Alg. 6 (AccurateDWPlusDW) | 3u² + 13u³ | B04 |
+//! | `×` | JMP17 Alg. 12 (DWTimesDW3) | 4u² | B06 |
+//! | `÷` | JMP17 Alg. 18 (DWDivDW3) | 9.8u² | B07 |
+//! | `√` | SQRTDWtoDW (Lefèvre et al. 2023) | 25/8 u² | B08 |
+//! | `from_rational` | round twice to nearest | u² (1 + u) | B09 |
+//! | `+ f64`, `× f64` | JMP17 Alg. 4, Alg. 9 | 2u² | B03, B05 |
+//! | exp, ln, sin, cos, atan, atan2, acos | reduction + polynomial / Newton | measured ≤ 16u² | B10–B14 |
+
+mod arith;
+mod consts;
+mod exp_ln;
+mod trig;
+
+#[doc(hidden)]
+pub use arith::sloppy_add;
+
+use super::Real;
+use rug::Float;
+use std::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
+
+/// A double-double number: the unevaluated sum `hi + lo` of two `f64` with
+/// `|lo| ≤ ulp(hi)/2` (a normalized double-word, JMP17 Definition 1.1).
+///
+/// About 106 significand bits; the exponent range is that of `f64` (results near the
+/// underflow threshold lose the `lo` part). Arithmetic follows JMP17 with FMA
+/// (MATH.md §9, proofs B01–B09); the functions have measured bounds (proofs B10–B14).
+///
+/// ```
+/// use penner::scalar::{Dd, Real};
+/// let third = Dd::from_f64(1.0) / Dd::from_f64(3.0);
+/// // 1/3 to about 32 digits: the residual 1 − 3·(1/3) is of order 2⁻¹⁰⁴.
+/// let r = Dd::from_f64(1.0) - third * Dd::from_f64(3.0);
+/// assert!(r.approx_f64().abs() < 1e-31);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Dd {
+    /// Leading part, `RN(hi + lo)`.
+    pub hi: f64,
+    /// Trailing part, `|lo| ≤ ulp(hi)/2`.
+    pub lo: f64,
+}
+
+impl Dd {
+    /// The double-double holding one `f64` exactly.
+    pub const fn from_f64(x: f64) -> Dd {
+        Dd { hi: x, lo: 0.0 }
+    }
+
+    /// The sum `hi + lo` renormalized (Fast2Sum; exact when `|hi| ≥ |lo|`). proof: B01
+    pub fn from_parts(hi: f64, lo: f64) -> Dd {
+        let (h, l) = arith::two_sum(hi, lo);
+        Dd { hi: h, lo: l }
+    }
+
+    /// The double-double nearest to an MPFR float, by rounding twice to nearest
+    /// (`hi = RN(x)`, `lo = RN(x − hi)`), relative error ≤ u²(1 + u). proof: B09
+    pub fn from_float(x: &Float) -> Dd {
+        let hi = x.to_f64();
+        if !hi.is_finite() {
+            return Dd::from_f64(hi);
+        }
+        let rest = Float::with_val(x.prec().max(64) + 64, x - hi);
+        Dd {
+            hi,
+            lo: rest.to_f64(),
+        }
+    }
+
+    /// `self · 2ᵏ`, exact unless the result overflows or leaves the normal range.
+    pub fn ldexp(self, k: i32) -> Dd {
+        // Two steps so that 2^k itself never overflows for |k| ≤ 2046.
+        let k1 = k / 2;
+        let k2 = k - k1;
+        let s1 = pow2(k1);
+        let s2 = pow2(k2);
+        Dd {
+            hi: self.hi * s1 * s2,
+            lo: self.lo * s1 * s2,
+        }
+    }
+
+    /// `self + y` for an `f64` `y` (JMP17 Algorithm 4, DWPlusFP): relative error ≤ 2u².
+    /// proof: B03
+    pub fn add_f64(self, y: f64) -> Dd {
+        arith::add_f64(self, y)
+    }
+
+    /// `self · y` for an `f64` `y` (JMP17 Algorithm 9, DWTimesFP3 with FMA): relative
+    /// error ≤ 2u². proof: B05
+    pub fn mul_f64(self, y: f64) -> Dd {
+        arith::mul_f64(self, y)
+    }
+
+    /// `hi + lo` rounded to an `f64`.
+    pub fn to_f64(self) -> f64 {
+        self.hi + self.lo
+    }
+}
+
+fn pow2(k: i32) -> f64 {
+    f64::from_bits(((i64::from(k.clamp(-1022, 1023)) + 1023) as u64) << 52)
+}
+
+impl Neg for Dd {
+    type Output = Dd;
+    fn neg(self) -> Dd {
+        Dd {
+            hi: -self.hi,
+            lo: -self.lo,
+        }
+    }
+}
+
+impl Add for Dd {
+    type Output = Dd;
+    /// JMP17 Algorithm 6, ≤ 3u² + 13u³. proof: B04
+    fn add(self, y: Dd) -> Dd {
+        arith::add(self, y)
+    }
+}
+impl Sub for Dd {
+    type Output = Dd;
+    /// JMP17 Algorithm 6 on `−y`, ≤ 3u² + 13u³. proof: B04
+    fn sub(self, y: Dd) -> Dd {
+        arith::add(self, -y)
+    }
+}
+impl Mul for Dd {
+    type Output = Dd;
+    /// JMP17 Algorithm 12, ≤ 4u². proof: B06
+    fn mul(self, y: Dd) -> Dd {
+        arith::mul(self, y)
+    }
+}
+impl Div for Dd {
+    type Output = Dd;
+    /// JMP17 Algorithm 18, ≤ 9.8u². proof: B07
+    fn div(self, y: Dd) -> Dd {
+        arith::div(self, y)
+    }
+}
+
+impl<'a> Add<&'a Dd> for Dd {
+    type Output = Dd;
+    fn add(self, o: &'a Dd) -> Dd {
+        arith::add(self, *o)
+    }
+}
+impl<'a> Sub<&'a Dd> for Dd {
+    type Output = Dd;
+    fn sub(self, o: &'a Dd) -> Dd {
+        arith::add(self, -*o)
+    }
+}
+impl<'a> Mul<&'a Dd> for Dd {
+    type Output = Dd;
+    fn mul(self, o: &'a Dd) -> Dd {
+        arith::mul(self, *o)
+    }
+}
+impl<'a> Div<&'a Dd> for Dd {
+    type Output = Dd;
+    fn div(self, o: &'a Dd) -> Dd {
+        arith::div(self, *o)
+    }
+}
+impl<'a> AddAssign<&'a Dd> for Dd {
+    fn add_assign(&mut self, o: &'a Dd) {
+        *self = arith::add(*self, *o);
+    }
+}
+impl<'a> SubAssign<&'a Dd> for Dd {
+    fn sub_assign(&mut self, o: &'a Dd) {
+        *self = arith::add(*self, -*o);
+    }
+}
+impl<'a> MulAssign<&'a Dd> for Dd {
+    fn mul_assign(&mut self, o: &'a Dd) {
+        *self = arith::mul(*self, *o);
+    }
+}
+
+impl Real for Dd {
+    type Ctx = ();
+
+    fn ctx(&self) {}
+
+    fn backend_name((): ()) -> String {
+        "dd".to_string()
+    }
+
+    fn from_f64(x: f64, (): ()) -> Dd {
+        Dd::from_f64(x)
+    }
+
+    /// `hi = RN(q)`, `lo = RN(q − hi)`: relative error ≤ u²(1 + u) in the normal range.
+    /// proof: B09
+    fn from_rational(q: &rug::Rational, (): ()) -> Dd {
+        let hi = Float::with_val(53, q).to_f64();
+        if !hi.is_finite() {
+            return Dd::from_f64(hi);
+        }
+        let Some(h) = rug::Rational::from_f64(hi) else {
+            return Dd::from_f64(hi);
+        };
+        let rest = rug::Rational::from(q - &h);
+        Dd {
+            hi,
+            lo: Float::with_val(53, &rest).to_f64(),
+        }
+    }
+
+    fn pi((): ()) -> Dd {
+        consts::PI
+    }
+
+    /// proof: B08
+    fn sqrt(&self) -> Dd {
+        if self.hi > 0.0 && self.hi.is_finite() {
+            arith::sqrt(*self)
+        } else {
+            // ±0 → ±0, +∞ → +∞, negative or NaN → NaN.
+            Dd::from_f64(self.hi.sqrt())
+        }
+    }
+    /// proof: B10
+    fn exp(&self) -> Dd {
+        exp_ln::exp(*self)
+    }
+    /// proof: B11
+    fn ln(&self) -> Dd {
+        exp_ln::ln(*self)
+    }
+    /// proof: B12
+    fn sin(&self) -> Dd {
+        trig::sin(*self)
+    }
+    /// proof: B12
+    fn cos(&self) -> Dd {
+        trig::cos(*self)
+    }
+    /// proof: B13
+    fn atan(&self) -> Dd {
+        trig::atan2(*self, Dd::from_f64(1.0))
+    }
+    /// proof: B13
+    fn atan2(&self, x: &Dd) -> Dd {
+        trig::atan2(*self, *x)
+    }
+    /// `atan2(√((1 − x)(1 + x)), x)`, accurate near ±1. proof: B14
+    fn acos(&self) -> Dd {
+        trig::acos(*self)
+    }
+    fn abs(&self) -> Dd {
+        if self.hi < 0.0 {
+            -*self
+        } else {
+            *self
+        }
+    }
+    fn approx_f64(&self) -> f64 {
+        self.hi + self.lo
+    }
+    fn unit_roundoff((): ()) -> f64 {
+        (-104.0_f64).exp2()
+    }
+    fn precision_bits((): ()) -> u32 {
+        106
+    }
+    fn to_rational(&self) -> Option<rug::Rational> {
+        Some(rug::Rational::from_f64(self.hi)? + rug::Rational::from_f64(self.lo)?)
+    }
+}
