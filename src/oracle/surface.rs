@@ -16,6 +16,7 @@
 
 use super::case::{Case, Lengths};
 use crate::mesh::Mesh;
+use crate::scalar::parse::parse_rational;
 use rug::Rational;
 use serde_json::{json, Value};
 
@@ -37,9 +38,9 @@ pub fn exact_number(v: &Value, path: &str) -> Result<Rational, SurfaceError> {
             .as_f64()
             .and_then(Rational::from_f64)
             .ok_or_else(|| bad(format!("{path}: {n} is not a finite number"))),
-        Value::String(s) => parse_exact_str(s).ok_or_else(|| {
+        Value::String(s) => parse_rational(s.trim()).map_err(|e| {
             bad(format!(
-                "{path}: {s:?} is not an exact number such as \"3/2\", \"1.25\" or \"7e-3\""
+                "{path}: {s:?} is not an exact number such as \"3/2\", \"1.25\" or \"7e-3\" ({e})"
             ))
         }),
         other => Err(bad(format!(
@@ -48,58 +49,6 @@ pub fn exact_number(v: &Value, path: &str) -> Result<Rational, SurfaceError> {
     }
 }
 
-/// Exponents beyond this are refused (a `1e999999999` string would need a gigabyte).
-const MAX_DECIMAL_EXPONENT: i64 = 100_000;
-
-fn parse_exact_str(s: &str) -> Option<Rational> {
-    let s = s.trim();
-    if s.len() > 100_000 {
-        return None;
-    }
-    if s.contains('/') {
-        let (p, q) = s.split_once('/')?;
-        let p: rug::Integer = p.trim().parse().ok()?;
-        let q: rug::Integer = q.trim().parse().ok()?;
-        if q.cmp0() == std::cmp::Ordering::Equal {
-            return None;
-        }
-        return Some(Rational::from((p, q)));
-    }
-    let (mant, exp) = match s.find(['e', 'E']) {
-        Some(i) => (&s[..i], s[i + 1..].parse::<i64>().ok()?),
-        None => (s, 0),
-    };
-    if exp.abs() > MAX_DECIMAL_EXPONENT {
-        return None;
-    }
-    let (neg, mant) = match mant.strip_prefix('-') {
-        Some(m) => (true, m),
-        None => (false, mant.strip_prefix('+').unwrap_or(mant)),
-    };
-    let (int, frac) = mant.split_once('.').unwrap_or((mant, ""));
-    if int.is_empty() && frac.is_empty() {
-        return None;
-    }
-    if !int.bytes().chain(frac.bytes()).all(|b| b.is_ascii_digit()) {
-        return None;
-    }
-    let digits: rug::Integer = format!("{int}{frac}").parse().ok()?;
-    let e = exp - frac.len() as i64;
-    let mut q = Rational::from(digits);
-    let scale = Rational::from(rug::Integer::from(rug::Integer::u_pow_u(
-        10,
-        u32::try_from(e.unsigned_abs()).ok()?,
-    )));
-    if e >= 0 {
-        q *= scale;
-    } else {
-        q /= scale;
-    }
-    if neg {
-        q = -q;
-    }
-    Some(q)
-}
 
 /// The edge order of the format: edges in order of first appearance when reading the
 /// faces in order and each face's sides 0, 1, 2. Entry `k` is the `Edge.idx()` of the
@@ -244,31 +193,4 @@ pub fn parse_surface(s: &Value, name: &str) -> Result<Case, SurfaceError> {
             Lengths::Exact(vals)
         },
     })
-}
-
-#[cfg(test)]
-mod tests {
-    use super::parse_exact_str;
-    use rug::Rational;
-
-    #[test]
-    fn exact_strings() {
-        assert_eq!(parse_exact_str("3/2"), Some(Rational::from((3, 2))));
-        assert_eq!(parse_exact_str("-1.25e-3"), Some(Rational::from((-1, 800))));
-        assert_eq!(parse_exact_str("7e2"), Some(Rational::from(700)));
-        assert_eq!(parse_exact_str(".5"), Some(Rational::from((1, 2))));
-        for bad in [
-            "",
-            ".",
-            "1/0",
-            "NaN",
-            "inf",
-            "1e999999999",
-            "1.2.3",
-            "--1",
-            "0x10",
-        ] {
-            assert_eq!(parse_exact_str(bad), None, "{bad}");
-        }
-    }
 }
