@@ -29,6 +29,20 @@ TETRAHEDRON = {
 PI = "3.141592653589793238462643383279502884197"
 
 
+SCHEMA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "schema", "claim-v1.schema.json")
+
+
+def validator():
+    """A validator for schema/claim-v1.schema.json when the `jsonschema` package is
+    installed (optional), else None."""
+    try:
+        import jsonschema  # noqa: PLC0415
+    except ImportError:
+        return None
+    with open(SCHEMA) as f:
+        return jsonschema.Draft202012Validator(json.load(f))
+
+
 def certify(claim):
     """Write `claim` to a file, run penner, return (exit code, parsed answer)."""
     with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
@@ -57,9 +71,13 @@ def main():
          "bad_input", 3),
     ]
     failures = 0
+    check = validator()
     for what, claim, verdict, code in cases:
         rc, answer = certify(claim)
         ok = rc == code and answer["verdict"] == verdict
+        if check is not None:
+            # The schema accepts exactly the well-formed claims.
+            ok = ok and check.is_valid(claim) == (verdict != "bad_input")
         print(f"{what}: verdict={answer['verdict']} certified={answer.get('certified')} "
               f"bits={answer.get('precision_bits')} exit={rc} -> {'ok' if ok else 'UNEXPECTED'}")
         if answer["verdict"] == "refuted":
