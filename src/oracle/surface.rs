@@ -49,7 +49,6 @@ pub fn exact_number(v: &Value, path: &str) -> Result<Rational, SurfaceError> {
     }
 }
 
-
 /// The edge order of the format: edges in order of first appearance when reading the
 /// faces in order and each face's sides 0, 1, 2. Entry `k` is the `Edge.idx()` of the
 /// k-th edge.
