@@ -12,6 +12,7 @@
 mod approx_impls;
 mod certified;
 mod dd;
+pub mod exact;
 mod f64_impl;
 pub mod interval;
 mod mpfr;

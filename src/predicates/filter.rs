@@ -1,0 +1,82 @@
+//! Shared pieces of the f64 filters: input conversion and the filter decision.
+
+use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
+use rug::{Float, Rational};
+use std::ops::{Add, Mul, Sub};
+
+/// The ring operations the determinant formulas need, so one formula serves `f64` (the
+/// filter), `Interval<Mpfr>` (the enclosure) and `rug::Rational` (the exact value).
+pub(crate) trait Ring:
+    Clone
+    + for<'a> Add<&'a Self, Output = Self>
+    + for<'a> Sub<&'a Self, Output = Self>
+    + for<'a> Mul<&'a Self, Output = Self>
+{
+}
+
+impl<T> Ring for T where
+    T: Clone
+        + for<'a> Add<&'a T, Output = T>
+        + for<'a> Sub<&'a T, Output = T>
+        + for<'a> Mul<&'a T, Output = T>
+{
+}
+
+pub(crate) use crate::scalar::interval::next_up_f64 as next_up;
+
+/// Unit roundoff of binary64, `u = 2⁻⁵³`.
+pub(crate) const U: f64 = f64::EPSILON / 2.0;
+
+/// The f64 nearest to `q` when it is usable by a filter: `q = 0` exactly, or the nearest
+/// value is a normal number (so `|x − q| ≤ u|x|`, proofs/B23). `None` otherwise (subnormal,
+/// zero for a nonzero `q`, or overflow).
+pub(crate) fn input(q: &Rational) -> Option<f64> {
+    if q.cmp0().is_eq() {
+        return Some(0.0);
+    }
+    // Round to nearest at 53 bits with MPFR's exponent range, then read it as an f64 (exact
+    // whenever the result is a normal binary64).
+    let x = Float::with_val(53, q).to_f64();
+    x.is_normal().then_some(x)
+}
+
+/// The f64 inputs of a filter, all usable, or `None`.
+pub(crate) fn inputs<const N: usize>(qs: &[Rational; N]) -> Option<[f64; N]> {
+    let mut out = [0.0; N];
+    for (o, q) in out.iter_mut().zip(qs) {
+        *o = input(q)?;
+    }
+    Some(out)
+}
+
+/// Whether `x` is 0 or `2^lo_exp ≤ |x| ≤ 2^hi_exp` (magnitude guards of the filters).
+pub(crate) fn in_range(x: f64, lo_exp: i32, hi_exp: i32) -> bool {
+    let a = x.abs();
+    a == 0.0 || (a >= f64::from(lo_exp).exp2() && a <= f64::from(hi_exp).exp2())
+}
+
+/// The sign of `value` when `|value| > bound`, the filter's decision; `None` otherwise
+/// (including NaN or infinite values).
+pub(crate) fn decide(value: f64, bound: f64) -> Option<Sign> {
+    if !value.is_finite() || !bound.is_finite() {
+        return None;
+    }
+    if value > bound {
+        Some(Sign::Positive)
+    } else if -value > bound {
+        Some(Sign::Negative)
+    } else {
+        None
+    }
+}
+
+/// Enclosures of the inputs at `prec` bits (proofs/B20).
+pub(crate) fn enclose<const N: usize>(qs: &[Rational; N], prec: Precision) -> [Interval<Mpfr>; N] {
+    std::array::from_fn(|i| Interval::<Mpfr>::from_rational(&qs[i], prec))
+}
+
+/// The sign of an enclosure (`None` if it straddles 0 or is invalid).
+pub(crate) fn sign_of(x: &Interval<Mpfr>) -> Option<Sign> {
+    debug_assert!(Interval::<Mpfr>::precision_bits(x.ctx()) >= 53);
+    x.sign()
+}

@@ -1,0 +1,458 @@
+//! Certified planar and triangle predicates: on random and adversarial inputs the certified
+//! sign never contradicts the exact sign computed independently (malachite and
+//! num-rational, with different expansions); the filters decide most random cases; a
+//! filter with a too-small bound contradicts the exact sign (negative control).
+
+use crate::support::cases;
+use malachite::rational::Rational as MQ;
+use num_rational::BigRational as NQ;
+use penner::predicates::ladder::{decide, Ladder, SignPredicate};
+use penner::predicates::planar::{InCircle, Orient2d, Point};
+use penner::predicates::triangle::{
+    strict_triangle, strict_triangle_sq, TriangleAreaSq, TriangleSlack,
+};
+use penner::scalar::exact::Field;
+use penner::scalar::{Certified, Precision, Sign, Stage};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use rug::{Integer, Rational};
+
+fn mq(q: &Rational) -> MQ {
+    MQ::from_rug(q)
+}
+
+fn msign(x: &MQ) -> Sign {
+    x.sign()
+}
+
+/// Orientation by cofactor expansion of det [[ax, ay, 1], [bx, by, 1], [cx, cy, 1]] in
+/// malachite (a different expansion and library than the predicate's).
+fn oracle_orient(a: &Point, b: &Point, c: &Point) -> Sign {
+    let [ax, ay, bx, by, cx, cy] = [&a[0], &a[1], &b[0], &b[1], &c[0], &c[1]].map(mq);
+    let d = &ax * (&by - &cy) - &ay * (&bx - &cx) + (&bx * &cy - &by * &cx);
+    msign(&d)
+}
+
+/// Incircle as the 4×4 determinant det [[x, y, x²+y², 1]] over a, b, c, d by Laplace
+/// expansion along the last column, in num-rational.
+fn oracle_incircle(p: [&Point; 4]) -> Sign {
+    let rows: Vec<[NQ; 3]> = p
+        .iter()
+        .map(|q| {
+            let x = NQ::from_rug(&q[0]);
+            let y = NQ::from_rug(&q[1]);
+            let l = &x * &x + &y * &y;
+            [x, y, l]
+        })
+        .collect();
+    let det3 = |r: [&[NQ; 3]; 3]| -> NQ {
+        &r[0][0] * (&r[1][1] * &r[2][2] - &r[1][2] * &r[2][1])
+            - &r[0][1] * (&r[1][0] * &r[2][2] - &r[1][2] * &r[2][0])
+            + &r[0][2] * (&r[1][0] * &r[2][1] - &r[1][1] * &r[2][0])
+    };
+    // det4 = Σ_i (−1)^(i+3) · minor_i3 (0-based; the last column is all ones).
+    let mut det = <NQ as Field>::zero();
+    for i in 0..4 {
+        let minor: Vec<&[NQ; 3]> = (0..4).filter(|&j| j != i).map(|j| &rows[j]).collect();
+        let m = det3([minor[0], minor[1], minor[2]]);
+        if (i + 3) % 2 == 0 {
+            det += m;
+        } else {
+            det -= m;
+        }
+    }
+    det.sign()
+}
+
+#[derive(Default, Debug)]
+struct Stages {
+    filter: usize,
+    interval: usize,
+    exact: usize,
+}
+
+impl Stages {
+    fn add(&mut self, c: &Certified<Sign>) {
+        match c {
+            Certified::Known {
+                stage: Stage::Filter,
+                ..
+            } => self.filter += 1,
+            Certified::Known {
+                stage: Stage::Interval { .. },
+                ..
+            } => self.interval += 1,
+            Certified::Known {
+                stage: Stage::Exact,
+                ..
+            } => self.exact += 1,
+            Certified::Undecided { .. } => {}
+        }
+    }
+    fn total(&self) -> usize {
+        self.filter + self.interval + self.exact
+    }
+}
+
+/// Every rung that answers agrees with `want`, and the full ladder answers.
+fn check<P: SignPredicate>(p: &P, want: Sign, what: &dyn Fn() -> String, stages: &mut Stages) {
+    if let Some(s) = p.filter() {
+        assert_eq!(s, want, "filter contradicts the exact sign on {}", what());
+    }
+    for bits in [53u64, 128] {
+        if let Some(s) = p.enclosure_sign(Precision::new(bits).expect("valid")) {
+            assert_eq!(s, want, "{bits}-bit enclosure contradicts on {}", what());
+        }
+    }
+    let c = decide(p, &Ladder::default());
+    assert_eq!(c.value(), Some(want), "ladder answer {c:?} on {}", what());
+    stages.add(&c);
+}
+
+fn q(n: i64, d: i64) -> Rational {
+    Rational::from((n, d))
+}
+
+fn qf(x: f64) -> Rational {
+    Rational::from_f64(x).expect("finite")
+}
+
+fn pow10(e: i32) -> Rational {
+    let p = Rational::from(Integer::from(Integer::u_pow_u(10, e.unsigned_abs())));
+    if e >= 0 {
+        p
+    } else {
+        p.recip()
+    }
+}
+
+/// A random coordinate: f64 in [−1, 1], a random fraction, or a small grid value.
+fn coord(rng: &mut ChaCha8Rng, kind: u32) -> Rational {
+    match kind {
+        0 => qf(rng.gen_range(-1.0..1.0)),
+        1 => q(rng.gen_range(-1000..1000), rng.gen_range(1..1000)),
+        _ => q(rng.gen_range(-3..=3), 1 << 30),
+    }
+}
+
+fn pt(rng: &mut ChaCha8Rng, kind: u32) -> Point {
+    [coord(rng, kind), coord(rng, kind)]
+}
+
+/// Scale a point by `s` exactly.
+fn scale(p: &Point, s: &Rational) -> Point {
+    [Rational::from(&p[0] * s), Rational::from(&p[1] * s)]
+}
+
+/// Round a point's coordinates to f64 (a nearly-degenerate image of a degenerate input).
+fn round(p: &Point) -> Point {
+    [qf(p[0].to_f64()), qf(p[1].to_f64())]
+}
+
+/// Adversarial triples: collinear (exact or rounded to f64), extreme scale, tiny grid.
+fn adversarial_triple(rng: &mut ChaCha8Rng) -> [Point; 3] {
+    let a = pt(rng, 1);
+    let b = pt(rng, 1);
+    let t = q(rng.gen_range(-5..5), rng.gen_range(1..7));
+    let c = [
+        (&a[0] + (&t * Rational::from(&b[0] - &a[0]))),
+        (&a[1] + (&t * Rational::from(&b[1] - &a[1]))),
+    ];
+    let mut tri = [a, b, c];
+    match rng.gen_range(0..4) {
+        0 => {}
+        1 => tri = tri.map(|p| round(&p)),
+        2 => {
+            let s = pow10(rng.gen_range(-150..=150));
+            tri = tri.map(|p| round(&scale(&p, &s)));
+        }
+        _ => {
+            // Perturb one coordinate by a tiny amount.
+            let eps = q(rng.gen_range(-2..=2), 1) * pow10(-rng.gen_range(10..40));
+            tri[2][1] += eps;
+        }
+    }
+    tri
+}
+
+#[test]
+fn b25_orient2d_certified_sign_never_contradicts_exact_sign() {
+    let mut rng = ChaCha8Rng::seed_from_u64(101);
+    let n = cases(1500, 100_000);
+    let mut random = Stages::default();
+    let mut adversarial = Stages::default();
+    for i in 0..n {
+        let kind = (i % 3) as u32;
+        let [a, b, c] = [pt(&mut rng, kind), pt(&mut rng, kind), pt(&mut rng, kind)];
+        let o = Orient2d::new(&a, &b, &c);
+        check(
+            &o,
+            oracle_orient(&a, &b, &c),
+            &|| format!("{a:?} {b:?} {c:?}"),
+            &mut random,
+        );
+        let [a, b, c] = adversarial_triple(&mut rng);
+        let o = Orient2d::new(&a, &b, &c);
+        check(
+            &o,
+            oracle_orient(&a, &b, &c),
+            &|| format!("{a:?} {b:?} {c:?}"),
+            &mut adversarial,
+        );
+    }
+    eprintln!("orient2d stages: random {random:?}, adversarial {adversarial:?}");
+    assert_eq!(random.total(), n);
+    // Random f64 and fraction inputs are decided by the filter (grid points often are
+    // exactly collinear and go further up).
+    assert!(
+        random.filter * 10 >= n * 6,
+        "filter decided only {random:?}"
+    );
+    assert!(
+        adversarial.exact + adversarial.interval > n / 4,
+        "{adversarial:?}"
+    );
+}
+
+/// Four points, three on a rational circle; `d` on, near or off it.
+fn adversarial_quad(rng: &mut ChaCha8Rng) -> [Point; 4] {
+    // Rational points on the circle of centre (cx, cy) and radius r: (1−t²)/(1+t²), 2t/(1+t²).
+    let centre = pt(rng, 1);
+    let r = q(rng.gen_range(1..100), rng.gen_range(1..100));
+    let on = |t: Rational| -> Point {
+        let den = 1 + Rational::from(&t * &t);
+        let x = (1 - Rational::from(&t * &t)) / &den;
+        let y = (2 * t) / den;
+        [
+            (&centre[0] + Rational::from(&r * &x)),
+            (&centre[1] + Rational::from(&r * &y)),
+        ]
+    };
+    let mut ts = || q(rng.gen_range(-50..50), rng.gen_range(1..20));
+    let mut quad = [on(ts()), on(ts()), on(ts()), on(ts())];
+    match rng.gen_range(0..4) {
+        0 => {}
+        1 => quad = quad.map(|p| round(&p)),
+        2 => {
+            let s = pow10(rng.gen_range(-60..=60));
+            quad = quad.map(|p| round(&scale(&p, &s)));
+        }
+        _ => quad[3][0] += pow10(-rng.gen_range(10..40)),
+    }
+    quad
+}
+
+#[test]
+fn b26_incircle_certified_sign_never_contradicts_exact_sign() {
+    let mut rng = ChaCha8Rng::seed_from_u64(102);
+    let n = cases(800, 100_000);
+    let mut random = Stages::default();
+    let mut adversarial = Stages::default();
+    for i in 0..n {
+        let kind = (i % 3) as u32;
+        let p = [
+            pt(&mut rng, kind),
+            pt(&mut rng, kind),
+            pt(&mut rng, kind),
+            pt(&mut rng, kind),
+        ];
+        let ic = InCircle::new(&p[0], &p[1], &p[2], &p[3]);
+        let want = oracle_incircle([&p[0], &p[1], &p[2], &p[3]]);
+        check(&ic, want, &|| format!("{p:?}"), &mut random);
+        let p = adversarial_quad(&mut rng);
+        let ic = InCircle::new(&p[0], &p[1], &p[2], &p[3]);
+        let want = oracle_incircle([&p[0], &p[1], &p[2], &p[3]]);
+        check(&ic, want, &|| format!("{p:?}"), &mut adversarial);
+    }
+    eprintln!("incircle stages: random {random:?}, adversarial {adversarial:?}");
+    assert!(
+        random.filter * 10 >= n * 6,
+        "filter decided only {random:?}"
+    );
+    assert!(
+        adversarial.exact + adversarial.interval > n / 4,
+        "{adversarial:?}"
+    );
+}
+
+#[test]
+fn b23_b24_triangle_predicates_never_contradict_exact_sign() {
+    let mut rng = ChaCha8Rng::seed_from_u64(103);
+    let n = cases(1500, 100_000);
+    let mut slack = Stages::default();
+    let mut area = Stages::default();
+    for i in 0..n {
+        let s = pow10(rng.gen_range(-150..=150));
+        let len = |rng: &mut ChaCha8Rng| q(rng.gen_range(1..1000), rng.gen_range(1..1000));
+        let (a, b) = (len(&mut rng), len(&mut rng));
+        // c random, or exactly |a − b| / a + b (degenerate), or those rounded to f64.
+        let mut c = match i % 4 {
+            0 => len(&mut rng),
+            1 => Rational::from(&a + &b),
+            2 => Rational::from(&a - &b).abs(),
+            _ => Rational::from(&a + &b) - pow10(-rng.gen_range(5..30)),
+        };
+        let (mut a, mut b) = (a, b);
+        if i % 3 == 1 {
+            (a, b, c) = (
+                Rational::from(&a * &s),
+                Rational::from(&b * &s),
+                Rational::from(&c * &s),
+            );
+        }
+        if i % 5 == 2 {
+            (a, b, c) = (qf(a.to_f64()), qf(b.to_f64()), qf(c.to_f64()));
+        }
+        // Independent oracle: (b − a) + c in num-rational.
+        let want = {
+            let [na, nb, nc] = [&a, &b, &c].map(NQ::from_rug);
+            ((nb - na) + nc).sign()
+        };
+        let what = || format!("slack {a} {b} {c}");
+        check(
+            &TriangleSlack::new(&c, &a, &b),
+            want_perm(&c, &a, &b),
+            &what,
+            &mut slack,
+        );
+        check(&TriangleSlack::new(&a, &b, &c), want, &what, &mut slack);
+        // Squared lengths; oracle 16·Area² = 4AB − (A + B − C)² in malachite.
+        let [a2, b2, c2] = [&a, &b, &c].map(|x| Rational::from(x * x));
+        let want = {
+            let [ma, mb, mc] = [&a2, &b2, &c2].map(mq);
+            let t = &ma + &mb - &mc;
+            msign(&(MQ::from(4u32) * &ma * &mb - &t * &t))
+        };
+        check(
+            &TriangleAreaSq::new(&a2, &b2, &c2),
+            want,
+            &|| format!("area {a2} {b2} {c2}"),
+            &mut area,
+        );
+        // The strict forms agree with each other (lengths vs squares) and with the oracle.
+        let l = Ladder::default();
+        let strict = strict_triangle(&a, &b, &c, &l).value();
+        assert_eq!(strict, Some(want == Sign::Positive), "strict {a} {b} {c}");
+        assert_eq!(strict_triangle_sq(&a2, &b2, &c2, &l).value(), strict);
+    }
+    eprintln!("slack stages {slack:?}, area² stages {area:?}");
+    assert!(
+        slack.filter > n / 2 && area.filter > n / 4,
+        "{slack:?} {area:?}"
+    );
+    assert!(slack.exact + slack.interval > n / 4, "{slack:?}");
+}
+
+fn want_perm(a: &Rational, b: &Rational, c: &Rational) -> Sign {
+    let [na, nb, nc] = [a, b, c].map(NQ::from_rug);
+    ((nb - na) + nc).sign()
+}
+
+/// Negative control: the filters without their error bound (factor 0, the plain f64 sign)
+/// contradict the exact sign on adversarial inputs; with the proven bound they never do.
+#[test]
+fn b25_b26_b23_too_small_filter_bound_contradicts_exact_sign() {
+    let mut rng = ChaCha8Rng::seed_from_u64(104);
+    let (mut orient_bad, mut incircle_bad, mut slack_bad) = (0, 0, 0);
+    for _ in 0..2000 {
+        let [a, b, c] = adversarial_triple(&mut rng);
+        let o = Orient2d::new(&a, &b, &c);
+        let want = oracle_orient(&a, &b, &c);
+        if o.filter_scaled(0.0).is_some_and(|s| s != want) {
+            orient_bad += 1;
+        }
+        assert!(o.filter_scaled(1.0).is_none_or(|s| s == want));
+        let p = adversarial_quad(&mut rng);
+        let ic = InCircle::new(&p[0], &p[1], &p[2], &p[3]);
+        let want = oracle_incircle([&p[0], &p[1], &p[2], &p[3]]);
+        if ic.filter_scaled(0.0).is_some_and(|s| s != want) {
+            incircle_bad += 1;
+        }
+        let (x, y) = (q(rng.gen_range(1..1000), 3), q(rng.gen_range(1..1000), 7));
+        let sum = Rational::from(&x + &y);
+        let s = TriangleSlack::new(&sum, &x, &y); // exactly 0
+        if s.filter_scaled(0.0).is_some_and(|s| s != Sign::Zero) {
+            slack_bad += 1;
+        }
+    }
+    eprintln!("unbounded filter contradictions: orient {orient_bad}, incircle {incircle_bad}, slack {slack_bad}");
+    assert!(orient_bad > 0 && incircle_bad > 0 && slack_bad > 0);
+}
+
+#[test]
+fn b25_b26_agree_with_robust_on_f64_inputs() {
+    let mut rng = ChaCha8Rng::seed_from_u64(105);
+    let rs = |v: f64| {
+        if v > 0.0 {
+            Sign::Positive
+        } else if v < 0.0 {
+            Sign::Negative
+        } else {
+            Sign::Zero
+        }
+    };
+    for i in 0..cases(1000, 100_000) {
+        let f = |rng: &mut ChaCha8Rng| {
+            if i % 2 == 0 {
+                rng.gen_range(-1.0..1.0)
+            } else {
+                f64::from(rng.gen_range(-4..4)) * 0.125
+            }
+        };
+        let xs: [f64; 8] = std::array::from_fn(|_| f(&mut rng));
+        let c = |k: usize| robust::Coord {
+            x: xs[2 * k],
+            y: xs[2 * k + 1],
+        };
+        let p = |k: usize| [qf(xs[2 * k]), qf(xs[2 * k + 1])];
+        let o = decide(&Orient2d::new(&p(0), &p(1), &p(2)), &Ladder::default()).value();
+        assert_eq!(o, Some(rs(robust::orient2d(c(0), c(1), c(2)))), "{xs:?}");
+        let ic = decide(
+            &InCircle::new(&p(0), &p(1), &p(2), &p(3)),
+            &Ladder::default(),
+        )
+        .value();
+        assert_eq!(
+            ic,
+            Some(rs(robust::incircle(c(0), c(1), c(2), c(3)))),
+            "{xs:?}"
+        );
+    }
+}
+
+/// The filter constants dominate the error coefficients of proofs/B23–B26, recomputed in
+/// MPFR: `((1+e)^m (1+u)^k − 1) / (1−u)^j` with `e = u` (rounded inputs) or `e = u(2+u)`
+/// (differences of rounded inputs), `m` the degree, `k` the roundings on a monomial's
+/// path and `j` the roundings in the computed majorant.
+#[test]
+fn b23_b24_b25_b26_filter_constants_cover_the_error_lemma() {
+    use penner::predicates::planar::{INCIRCLE_FILTER, ORIENT2D_FILTER};
+    use penner::predicates::triangle::{AREA_SQ_FILTER, SLACK_FILTER};
+    use rug::ops::Pow;
+    use rug::Float;
+    let p = 256;
+    let u = Float::with_val(p, f64::EPSILON / 2.0);
+    let one = Float::with_val(p, 1);
+    let e_diff = Float::with_val(p, &u * (Float::with_val(p, 2) + &u));
+    let coeff = |e: &Float, m: u32, k: u32, j: u32| -> Float {
+        let a = Float::with_val(p, &one + e).pow(m) * Float::with_val(p, &one + &u).pow(k) - &one;
+        a / Float::with_val(p, &one - &u).pow(j)
+    };
+    let cases = [
+        ("B23 slack", coeff(&u, 1, 2, 3), SLACK_FILTER),
+        ("B24 area²", coeff(&u, 2, 4, 7), AREA_SQ_FILTER),
+        ("B25 orient2d", coeff(&e_diff, 2, 2, 6), ORIENT2D_FILTER),
+        ("B26 incircle", coeff(&e_diff, 4, 7, 15), INCIRCLE_FILTER),
+    ];
+    for (name, need, have) in cases {
+        assert!(
+            need < have,
+            "{name}: constant {have:e} below the needed {need}"
+        );
+        // Negative control: half the constant would not cover the coefficient.
+        assert!(
+            need > have / 2.0,
+            "{name}: constant {have:e} is needlessly loose"
+        );
+    }
+}
