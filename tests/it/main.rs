@@ -7,8 +7,8 @@ mod io;
 mod mesh;
 mod mesh_core;
 mod oracle;
-mod scalar_dd;
 mod predicates_planar;
+mod scalar_dd;
 #[allow(dead_code)] // helpers used by some areas only
 mod support;
 mod tidy;
