@@ -12,6 +12,7 @@
 mod approx_impls;
 mod certified;
 mod dd;
+pub mod dual;
 pub mod exact;
 mod f64_impl;
 pub mod interval;
@@ -22,6 +23,7 @@ pub use certified::{Certified, Sign, Stage};
 #[doc(hidden)]
 pub use dd::sloppy_add as dd_sloppy_add;
 pub use dd::Dd;
+pub use dual::Dual;
 pub use interval::{Interval, IntervalBound};
 pub use mpfr::{Mpfr, Precision, PrecisionError};
 pub use parse::{parse_rational, NumberError};

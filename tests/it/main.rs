@@ -1,6 +1,7 @@
 //! The integration test crate: one module per area.
 
 mod cli;
+mod dual;
 mod exact;
 mod interval;
 mod io;
