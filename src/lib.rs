@@ -10,6 +10,7 @@
 //! [`predicates`] → `algorithms` → `theorems` → `oracle` → the `penner` binary.
 
 pub mod geometry;
+pub mod io;
 pub mod mesh;
 pub mod oracle;
 pub mod predicates;

@@ -1,0 +1,182 @@
+//! Surface files: the penner JSON surface format (any Δ-complex, exact lengths), OBJ and
+//! OFF (exact decimal coordinates), into a [`Surface`]. Format reference:
+//! `docs/surface-format.md`.
+//!
+//! Every reader returns a typed [`ReadError`] naming the line (OBJ, OFF, JSON syntax) or
+//! the element (JSON paths such as `lengths[3]`, faces, edges) and never panics, whatever
+//! the bytes.
+//!
+//! ```
+//! use penner::io::{json, Metric};
+//! let s = json::read(r#"{"vertices": 3, "faces": [[0,1,2],[0,2,1]],
+//!                        "lengths": ["1", "3/2", "1.25"]}"#).unwrap();
+//! assert_eq!(s.mesh.euler_characteristic(), 2);
+//! assert!(matches!(s.metric, Metric::Lengths(_)));
+//! assert!(json::read(r#"{"vertices": 3, "faces": [[0,1,2],[0,2,1]],
+//!                        "lengths": ["1", "1", "2"]}"#).is_err()); // degenerate
+//! ```
+
+pub mod json;
+pub mod obj;
+pub mod off;
+pub mod surface;
+mod text;
+
+pub use surface::{Metric, MetricError, Surface};
+
+use crate::mesh::MeshError;
+use crate::scalar::NumberError;
+use std::path::Path;
+
+/// Why a surface file was refused.
+#[derive(Debug, thiserror::Error)]
+pub enum ReadError {
+    /// The file could not be read.
+    #[error("cannot read {path}: {message}")]
+    File {
+        /// The path.
+        path: String,
+        /// The operating system's message.
+        message: String,
+    },
+    /// The bytes are not UTF-8 text (binary data).
+    #[error("not UTF-8 text: invalid byte at offset {offset}")]
+    NotText {
+        /// Byte offset of the first invalid byte.
+        offset: usize,
+    },
+    /// The file name has no known extension.
+    #[error("unknown surface format for {path} (expected .json, .obj or .off)")]
+    UnknownFormat {
+        /// The path.
+        path: String,
+    },
+    /// Malformed syntax at a line.
+    #[error("line {line}: {message}")]
+    Syntax {
+        /// 1-based line.
+        line: usize,
+        /// What is wrong.
+        message: String,
+    },
+    /// A JSON document with the wrong shape (a missing field, a wrong type, …).
+    #[error("{element}: {message}")]
+    Schema {
+        /// JSON path of the element, such as `faces[3][1]`.
+        element: String,
+        /// What is wrong.
+        message: String,
+    },
+    /// A number that is not an exact finite literal.
+    #[error("{element}: {source}")]
+    Number {
+        /// Line (`line 12`) or JSON path (`lengths[3]`).
+        element: String,
+        /// The parse error.
+        source: NumberError,
+    },
+    /// The file ended before an element the header or syntax requires.
+    #[error("line {line}: file ends early, expected {expected}")]
+    Truncated {
+        /// 1-based line where the file ended.
+        line: usize,
+        /// What was still expected.
+        expected: String,
+    },
+    /// A count in a header is larger than the file could hold.
+    #[error("header declares {count} {what}, but the file is too short to hold them")]
+    HugeCount {
+        /// What is counted (vertices, faces).
+        what: &'static str,
+        /// The declared count.
+        count: u64,
+    },
+    /// A vertex index outside the vertex list.
+    #[error("{element}: vertex index {index} is out of range ({n_vertices} vertices)")]
+    IndexOutOfRange {
+        /// Line or JSON path.
+        element: String,
+        /// The index as written.
+        index: i64,
+        /// Number of vertices.
+        n_vertices: usize,
+    },
+    /// A face with other than three corners (only triangles are accepted: no
+    /// triangulation is invented).
+    #[error("{element}: face with {count} corners; only triangles are accepted")]
+    NotTriangle {
+        /// Line or JSON path.
+        element: String,
+        /// Number of corners.
+        count: usize,
+    },
+    /// The connectivity is not an oriented surface (non-manifold, inconsistent or
+    /// non-orientable gluing, isolated vertex, …); `element` names the face's line or
+    /// path when the error concerns one face.
+    #[error("{element}: {source}")]
+    Mesh {
+        /// Where (a line, a JSON path, or `surface`).
+        element: String,
+        /// The connectivity error.
+        source: MeshError,
+    },
+    /// The metric is not a valid discrete metric (non-positive length, triangle
+    /// inequality, glued sides with different lengths).
+    #[error("{element}: {source}")]
+    Metric {
+        /// Where (a JSON path, or `surface`).
+        element: String,
+        /// The metric error.
+        source: MetricError,
+    },
+    /// Two glued face sides carry different lengths.
+    #[error("{element}: glued sides (f{face_a}, s{side_a}) and (f{face_b}, s{side_b}) have lengths {a} and {b}")]
+    GluedUnequal {
+        /// JSON path.
+        element: String,
+        /// First side's face.
+        face_a: u32,
+        /// First side's index.
+        side_a: u8,
+        /// Second side's face.
+        face_b: u32,
+        /// Second side's index.
+        side_b: u8,
+        /// First length.
+        a: String,
+        /// Second length.
+        b: String,
+    },
+}
+
+/// Text from bytes, refusing binary data with the offset of the first invalid byte.
+pub fn text_of(bytes: &[u8]) -> Result<&str, ReadError> {
+    std::str::from_utf8(bytes).map_err(|e| ReadError::NotText {
+        offset: e.valid_up_to(),
+    })
+}
+
+/// Read a surface file, choosing the format by extension (`.json`, `.obj`, `.off`, any
+/// case). The surface is named after the file.
+pub fn read_path(path: &Path) -> Result<Surface, ReadError> {
+    let shown = path.display().to_string();
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    let reader: fn(&[u8]) -> Result<Surface, ReadError> = match ext.as_deref() {
+        Some("json") => json::read_bytes,
+        Some("obj") => obj::read_bytes,
+        Some("off") => off::read_bytes,
+        _ => return Err(ReadError::UnknownFormat { path: shown }),
+    };
+    let bytes = std::fs::read(path).map_err(|e| ReadError::File {
+        path: shown.clone(),
+        message: e.to_string(),
+    })?;
+    let mut s = reader(&bytes)?;
+    if s.name.is_empty() {
+        s.name = shown;
+    }
+    Ok(s)
+}

@@ -1,0 +1,174 @@
+//! OFF (Object File Format): a header line `OFF`, a count line `V F E` (the counts may
+//! also follow `OFF` on its line; E is ignored), V vertex lines `x y z` with exact decimal
+//! coordinates, and F face lines `3 a b c` (0-based), optionally followed by colour
+//! numbers, which are ignored. `#` starts a comment. Faces with other than three corners
+//! are refused ([`ReadError::NotTriangle`]); `COFF`, `NOFF` and other variants are not
+//! read. Counts are checked against the file size before anything is allocated.
+
+use super::surface::Surface;
+use super::text::{content_lines, coordinate, surface_from_soup};
+use super::{text_of, ReadError};
+use rug::Rational;
+
+/// Read an OFF surface from bytes (refusing non-UTF-8 data).
+pub fn read_bytes(bytes: &[u8]) -> Result<Surface, ReadError> {
+    read(text_of(bytes)?)
+}
+
+fn count(tok: Option<&str>, line: usize, what: &str) -> Result<u64, ReadError> {
+    let tok = tok.ok_or_else(|| ReadError::Syntax {
+        line,
+        message: format!("expected the {what} count"),
+    })?;
+    tok.parse::<u64>().map_err(|_| ReadError::Syntax {
+        line,
+        message: format!(
+            "the {what} count `{}` is not a non-negative integer",
+            short(tok)
+        ),
+    })
+}
+
+/// Read an OFF surface from text.
+///
+/// ```
+/// let s = penner::io::off::read("OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n\
+///     3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n").unwrap();
+/// assert_eq!(s.mesh.n_faces(), 4);
+/// ```
+pub fn read(text: &str) -> Result<Surface, ReadError> {
+    let last_line = text.lines().count().max(1);
+    let mut lines = content_lines(text).peekable();
+    let Some((hline, header)) = lines.next() else {
+        return Err(ReadError::Truncated {
+            line: last_line,
+            expected: "the `OFF` header".into(),
+        });
+    };
+    let mut toks = header.split_ascii_whitespace();
+    if toks.next() != Some("OFF") {
+        return Err(ReadError::Syntax {
+            line: hline,
+            message: "expected the header `OFF`".into(),
+        });
+    }
+    let rest: Vec<&str> = toks.collect();
+    let (cline, counts): (usize, Vec<&str>) = if rest.is_empty() {
+        let (l, c) = lines.next().ok_or_else(|| ReadError::Truncated {
+            line: last_line,
+            expected: "the counts line `V F E`".into(),
+        })?;
+        (l, c.split_ascii_whitespace().collect())
+    } else {
+        (hline, rest)
+    };
+    if counts.len() > 3 {
+        return Err(ReadError::Syntax {
+            line: cline,
+            message: "expected `V F E`".into(),
+        });
+    }
+    let nv = count(counts.first().copied(), cline, "vertex")?;
+    let nf = count(counts.get(1).copied(), cline, "face")?;
+    // Smallest possible lines: "0 0 0" and "3 0 1 2", plus a newline each.
+    let remaining = text.len() as u64;
+    if nv.saturating_mul(6) > remaining + 1 {
+        return Err(ReadError::HugeCount {
+            what: "vertices",
+            count: nv,
+        });
+    }
+    if nf.saturating_mul(8) > remaining + 1 {
+        return Err(ReadError::HugeCount {
+            what: "faces",
+            count: nf,
+        });
+    }
+    let mut positions: Vec<[Rational; 3]> = Vec::with_capacity(nv as usize);
+    let mut vertex_lines = Vec::with_capacity(nv as usize);
+    for i in 0..nv {
+        let (line, l) = lines.next().ok_or_else(|| ReadError::Truncated {
+            line: last_line,
+            expected: format!("vertex {} of {nv}", i + 1),
+        })?;
+        positions.push(vertex_line(line, l)?);
+        vertex_lines.push(line);
+    }
+    let mut faces = Vec::with_capacity(nf as usize);
+    let mut face_lines = Vec::with_capacity(nf as usize);
+    for i in 0..nf {
+        let (line, l) = lines.next().ok_or_else(|| ReadError::Truncated {
+            line: last_line,
+            expected: format!("face {} of {nf}", i + 1),
+        })?;
+        let tri = face_line(line, l, nv)?;
+        faces.push(tri);
+        face_lines.push(line);
+    }
+    if let Some((line, _)) = lines.next() {
+        return Err(ReadError::Syntax {
+            line,
+            message: "unexpected content after the last face".into(),
+        });
+    }
+    surface_from_soup(positions, &faces, &vertex_lines, &face_lines)
+}
+
+fn short(s: &str) -> String {
+    s.chars().take(40).collect()
+}
+
+fn vertex_line(line: usize, l: &str) -> Result<[Rational; 3], ReadError> {
+    let t: Vec<&str> = l.split_ascii_whitespace().collect();
+    if t.len() != 3 {
+        return Err(ReadError::Syntax {
+            line,
+            message: format!("a vertex line needs 3 coordinates, found {}", t.len()),
+        });
+    }
+    Ok([
+        coordinate(t[0], line)?,
+        coordinate(t[1], line)?,
+        coordinate(t[2], line)?,
+    ])
+}
+
+fn face_line(line: usize, l: &str, nv: u64) -> Result<[u32; 3], ReadError> {
+    let t: Vec<&str> = l.split_ascii_whitespace().collect();
+    let k = count(t.first().copied(), line, "corner")?;
+    if k != 3 {
+        return Err(ReadError::NotTriangle {
+            element: format!("line {line}"),
+            count: usize::try_from(k).unwrap_or(usize::MAX),
+        });
+    }
+    if t.len() < 4 {
+        return Err(ReadError::Syntax {
+            line,
+            message: format!(
+                "a face line `3 a b c` needs 3 indices, found {}",
+                t.len() - 1
+            ),
+        });
+    }
+    let mut tri = [0u32; 3];
+    for c in 0..3 {
+        let tok = t[1 + c];
+        let idx: i64 = tok.parse().map_err(|_| ReadError::Syntax {
+            line,
+            message: format!("`{}` is not a vertex index", short(tok)),
+        })?;
+        if idx < 0 || idx >= nv as i64 {
+            return Err(ReadError::IndexOutOfRange {
+                element: format!("line {line}"),
+                index: idx,
+                n_vertices: nv as usize,
+            });
+        }
+        tri[c] = idx as u32;
+    }
+    for colour in &t[4..] {
+        coordinate(colour, line)?;
+    }
+    Ok(tri)
+}
