@@ -9,6 +9,7 @@
 //! Layers (each imports only layers above it): [`scalar`] → [`mesh`] → [`geometry`] →
 //! [`predicates`] → `algorithms` → `theorems` → `oracle` → the `penner` binary.
 
+pub mod algorithms;
 pub mod geometry;
 pub mod io;
 pub mod mesh;

@@ -1,4 +1,6 @@
 //! The only place a number becomes a decision: certified signs and the escalation ladder.
+pub mod delaunay;
+pub mod directed;
 mod filter;
 pub mod ladder;
 pub mod planar;

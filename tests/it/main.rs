@@ -1,12 +1,15 @@
 //! The integration test crate: one module per area.
 
 mod cli;
+mod delaunay;
+mod delaunay_flips;
 mod dual;
 mod exact;
 mod interval;
 mod io;
 mod mesh;
 mod mesh_core;
+mod meshgen;
 mod oracle;
 mod predicates_planar;
 mod scalar_dd;

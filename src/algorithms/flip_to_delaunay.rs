@@ -1,0 +1,438 @@
+//! Flip to an intrinsic Delaunay triangulation (notes §1.5.2; MATH.md §5), deciding every
+//! edge with the certified predicate of [`crate::predicates::delaunay`] — never with a raw
+//! floating-point comparison.
+//!
+//! The algorithm keeps a work list of edges. An edge is flipped only when its sign is
+//! certified `Negative`; the new diagonal is accepted only when *its* sign, computed on
+//! the stored new length, is certified `Positive` or `Zero`. Near a tie the rounded new
+//! length can land on the wrong side; since `P` of the new edge decreases with its length
+//! and the exact new diagonal is strictly Delaunay, the stored length is then shrunk by
+//! `4u` relative, at most [`MAX_NUDGES`] times (proof: B65; counted in
+//! [`FlipReport::nudged`]). If that does not certify it, the flip is undone
+//! and the edge reported in [`FlipReport::refused`]). After a flip the four sides of the
+//! quadrilateral are re-queued. When the list is empty every edge not listed in
+//! [`FlipReport::undecided`] or [`FlipReport::refused`] is certified Delaunay for the
+//! stored lengths (T21). A cap on the number of flips (default `64·E + 1024`) bounds the
+//! run even if rounding of new lengths were to create a cycle; hitting it is reported.
+//!
+//! Lengths after Euclidean flips in `f64`/`Dd`/`Mpfr` are rounded values: the certificate
+//! is about the stored metric. Exact Ptolemy flipping over ℚ
+//! ([`flip_to_delaunay_exact`]) has no rounding at all until the bit-growth guard is
+//! passed, after which it continues on outward-rounded MPFR enclosures.
+//!
+//! ```
+//! use penner::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
+//! use penner::mesh::Mesh;
+//! // A thin rhombus split along its long diagonal: not Delaunay, one flip fixes it.
+//! let mut m = Mesh::from_faces(4, &[[0, 1, 2], [0, 2, 3]]).unwrap();
+//! let mut l: Vec<f64> = m.edges().map(|e| {
+//!     let h = e.halfedge();
+//!     let (a, b) = (m.tail(h).0, m.tip(h).0);
+//!     if a.min(b) == 0 && a.max(b) == 2 { 1.9 } else { 1.0 }
+//! }).collect();
+//! let r = flip_to_delaunay(&mut m, &mut l, FlipKind::Euclidean, &FlipOptions::default()).unwrap();
+//! assert_eq!(r.flips, 1);
+//! assert!(r.all_certified_delaunay());
+//! ```
+
+pub use super::flips::FlipKind;
+use super::flips::{
+    euclidean_length, ptolemy_length, ptolemy_length_enclosure, ptolemy_length_exact,
+};
+use crate::mesh::{Edge, Mesh};
+use crate::predicates::delaunay::{
+    check_length, DelaunayError, EnclosureQuad, Quad, QuadEdges, RationalQuad, RealQuad,
+};
+use crate::predicates::directed::Enclosure;
+use crate::predicates::ladder::{decide, Ladder};
+use crate::scalar::{Certified, Real, Sign, Stage};
+use rug::Rational;
+
+/// At most this many times a rounded new diagonal is shrunk by `4u` relative before a
+/// flip is refused (proof: B65).
+pub const MAX_NUDGES: usize = 8;
+
+/// Options of [`flip_to_delaunay`] (default: [`Ladder::default`], cap `64·E + 1024`,
+/// edge order, no recording).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct FlipOptions {
+    /// The ladder for every decision.
+    pub ladder: Ladder,
+    /// Stop after this many flips (default `64·E + 1024`).
+    pub max_flips: Option<usize>,
+    /// Visit the edges in a random order drawn from this seed (default: edge order).
+    pub order_seed: Option<u64>,
+    /// Record the flipped edges in order in [`FlipReport::sequence`].
+    pub record: bool,
+}
+
+/// How many decisions each rung of the ladder made.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct StageCounts {
+    /// Decided by the f64 filter.
+    pub filter: usize,
+    /// Decided by an MPFR enclosure.
+    pub interval: usize,
+    /// Decided in exact arithmetic.
+    pub exact: usize,
+    /// Not decided.
+    pub undecided: usize,
+}
+
+impl StageCounts {
+    fn record(&mut self, c: &Certified<Sign>) {
+        match c {
+            Certified::Known {
+                stage: Stage::Filter,
+                ..
+            } => self.filter += 1,
+            Certified::Known {
+                stage: Stage::Interval { .. },
+                ..
+            } => self.interval += 1,
+            Certified::Known {
+                stage: Stage::Exact,
+                ..
+            } => self.exact += 1,
+            Certified::Undecided { .. } => self.undecided += 1,
+        }
+    }
+}
+
+/// What [`flip_to_delaunay`] did.
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
+pub struct FlipReport {
+    /// Flips performed.
+    pub flips: usize,
+    /// Edges whose sign no rung could decide at the end (sorted).
+    pub undecided: Vec<Edge>,
+    /// Edges certified non-Delaunay whose flip was undone because the new diagonal could
+    /// not be certified Delaunay on its stored length (sorted).
+    pub refused: Vec<Edge>,
+    /// Whether the flip cap stopped the run (then edges may remain unchecked).
+    pub hit_cap: bool,
+    /// Decisions per rung.
+    pub stages: StageCounts,
+    /// Exact path only: the largest bit size (numerator + denominator) of a length seen.
+    pub max_bits: u64,
+    /// Exact path only: the flip count at which the bit guard switched to enclosures.
+    pub fell_back_after: Option<usize>,
+    /// Flips whose rounded new length was shrunk by a few units of rounding so that the
+    /// new diagonal is certified Delaunay (proof: B65).
+    pub nudged: usize,
+    /// The flipped edges in order, when [`FlipOptions::record`] is set.
+    pub sequence: Vec<Edge>,
+}
+
+impl FlipReport {
+    /// Whether every edge ended certified Delaunay.
+    pub fn all_certified_delaunay(&self) -> bool {
+        self.undecided.is_empty() && self.refused.is_empty() && !self.hit_cap
+    }
+}
+
+/// Why flipping could not start.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum FlipToDelaunayError {
+    /// A length is invalid or the length array has the wrong size.
+    #[error(transparent)]
+    Lengths(#[from] DelaunayError),
+}
+
+/// Per-edge lengths together with how to decide and how to flip them.
+trait Metric {
+    /// The old length of a flipped edge, kept to undo the flip.
+    type Saved;
+    fn sign(&self, q: Quad<Edge>, ladder: &Ladder) -> Certified<Sign>;
+    /// Compute the new diagonal length, store it, and return the old one (`None` if the
+    /// new length is invalid; nothing is stored then).
+    fn flip_length(&mut self, q: &QuadEdges) -> Option<Self::Saved>;
+    fn restore(&mut self, e: Edge, old: Self::Saved);
+    /// Shrink the stored length of `e` by a few units of rounding (see [`MAX_NUDGES`]);
+    /// `false` where lengths are exact.
+    fn nudge(&mut self, _e: Edge) -> bool {
+        false
+    }
+    /// Called after an accepted flip.
+    fn accepted(&mut self, _flips: usize) {}
+}
+
+/// The driver shared by every length type.
+fn run<M: Metric>(mesh: &mut Mesh, m: &mut M, opts: &FlipOptions) -> FlipReport {
+    let ne = mesh.n_edges();
+    let cap = opts.max_flips.unwrap_or(64 * ne + 1024);
+    let mut report = FlipReport::default();
+    let mut queued = vec![true; ne];
+    let mut undecided = vec![false; ne];
+    let mut refused = vec![false; ne];
+    let mut stack: Vec<Edge> = (0..ne as u32).rev().map(Edge).collect();
+    if let Some(seed) = opts.order_seed {
+        use rand::seq::SliceRandom;
+        use rand::SeedableRng;
+        stack.shuffle(&mut rand_chacha::ChaCha8Rng::seed_from_u64(seed));
+    }
+    while let Some(e) = stack.pop() {
+        queued[e.idx()] = false;
+        let Some(q) = QuadEdges::of(mesh, e) else {
+            continue;
+        };
+        let s = m.sign(q.edges, &opts.ladder);
+        report.stages.record(&s);
+        match s.value() {
+            None => {
+                undecided[e.idx()] = true;
+                continue;
+            }
+            Some(Sign::Positive | Sign::Zero) => {
+                undecided[e.idx()] = false;
+                refused[e.idx()] = false;
+                continue;
+            }
+            Some(Sign::Negative) => undecided[e.idx()] = false,
+        }
+        if report.flips >= cap {
+            report.hit_cap = true;
+            break;
+        }
+        let Some(saved) = m.flip_length(&q) else {
+            refused[e.idx()] = true;
+            continue;
+        };
+        let mut nudges = 0;
+        let accepted = loop {
+            let after = m.sign(q.flipped(), &opts.ladder);
+            report.stages.record(&after);
+            match after.value() {
+                Some(Sign::Positive | Sign::Zero) => break true,
+                // Rounded new length on the wrong side of a near-tie: the exact new
+                // diagonal is strictly Delaunay and `P` decreases with its length.
+                Some(Sign::Negative) if nudges < MAX_NUDGES && m.nudge(e) => nudges += 1,
+                _ => break false,
+            }
+        };
+        report.nudged += usize::from(nudges > 0);
+        if !accepted {
+            m.restore(e, saved);
+            refused[e.idx()] = true;
+            continue;
+        }
+        if mesh.flip(e).is_err() {
+            // Unreachable: `QuadEdges::of` succeeded, so the edge is flippable.
+            m.restore(e, saved);
+            refused[e.idx()] = true;
+            continue;
+        }
+        refused[e.idx()] = false;
+        report.flips += 1;
+        if opts.record {
+            report.sequence.push(e);
+        }
+        m.accepted(report.flips);
+        for side in [q.edges.jk, q.edges.ki, q.edges.il, q.edges.lj] {
+            if !queued[side.idx()] {
+                queued[side.idx()] = true;
+                stack.push(side);
+            }
+        }
+    }
+    report.undecided = flagged(&undecided);
+    report.refused = flagged(&refused);
+    report
+}
+
+fn flagged(flags: &[bool]) -> Vec<Edge> {
+    flags
+        .iter()
+        .enumerate()
+        .filter(|(_, &f)| f)
+        .map(|(i, _)| Edge(i as u32))
+        .collect()
+}
+
+fn check_all<T: Real>(mesh: &Mesh, lengths: &[T]) -> Result<(), DelaunayError> {
+    if lengths.len() != mesh.n_edges() {
+        return Err(DelaunayError::LengthCount {
+            expected: mesh.n_edges(),
+            got: lengths.len(),
+        });
+    }
+    for e in mesh.edges() {
+        check_length(e, &lengths[e.idx()])?;
+    }
+    Ok(())
+}
+
+struct RealMetric<'a, T> {
+    lengths: &'a mut [T],
+    kind: FlipKind,
+}
+
+impl<T: Real> Metric for RealMetric<'_, T> {
+    type Saved = T;
+    #[inline]
+    fn sign(&self, q: Quad<Edge>, ladder: &Ladder) -> Certified<Sign> {
+        decide(&RealQuad(q.map(|e| &self.lengths[e.idx()])), ladder)
+    }
+    fn flip_length(&mut self, q: &QuadEdges) -> Option<T> {
+        let quad = q.lengths(self.lengths);
+        let new = match self.kind {
+            FlipKind::Euclidean => euclidean_length(quad),
+            FlipKind::Ptolemy => ptolemy_length(quad),
+        };
+        check_length(q.edge, &new).ok()?;
+        Some(std::mem::replace(&mut self.lengths[q.edge.idx()], new))
+    }
+    fn restore(&mut self, e: Edge, old: T) {
+        self.lengths[e.idx()] = old;
+    }
+    fn nudge(&mut self, e: Edge) -> bool {
+        let l = &mut self.lengths[e.idx()];
+        let u = T::unit_roundoff(l.ctx());
+        // proof: B65 — one step moves the stored value by at most ~4u relative.
+        let step = l.clone() * &l.lit(4.0 * u);
+        *l -= &step;
+        true
+    }
+}
+
+/// Flip `mesh` to an intrinsic Delaunay triangulation of the metric `lengths` (one per
+/// edge) with Euclidean or Ptolemy flips (T21). Works on closed surfaces and surfaces with
+/// boundary; boundary edges and self-folded edges are never flipped.
+pub fn flip_to_delaunay<T: Real>(
+    mesh: &mut Mesh,
+    lengths: &mut [T],
+    kind: FlipKind,
+    opts: &FlipOptions,
+) -> Result<FlipReport, FlipToDelaunayError> {
+    check_all(mesh, lengths)?;
+    let mut m = RealMetric { lengths, kind };
+    Ok(run(mesh, &mut m, opts))
+}
+
+/// Rational lengths, or enclosures once the bit-growth guard is passed.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExactLengths {
+    /// Exact lengths.
+    Exact(Vec<Rational>),
+    /// Outward-rounded enclosures of the exact lengths.
+    Enclosed(Vec<Enclosure>),
+}
+
+/// Bit size of a rational: significant bits of numerator plus denominator.
+pub fn rational_bits(q: &Rational) -> u64 {
+    u64::from(q.numer().significant_bits()) + u64::from(q.denom().significant_bits())
+}
+
+struct ExactMetric {
+    lengths: ExactLengths,
+    guard_bits: u64,
+    max_bits: u64,
+    fell_back_after: Option<usize>,
+}
+
+impl ExactMetric {
+    fn enclosure_bits(&self) -> u32 {
+        // Enough to hold the guard-sized rationals tightly, at least 128 bits.
+        (2 * self.guard_bits).clamp(128, 1 << 14) as u32
+    }
+}
+
+/// An old length on the exact path.
+enum ExactSaved {
+    Exact(Rational),
+    Enclosed(Enclosure),
+}
+
+impl Metric for ExactMetric {
+    type Saved = ExactSaved;
+    fn sign(&self, q: Quad<Edge>, ladder: &Ladder) -> Certified<Sign> {
+        match &self.lengths {
+            ExactLengths::Exact(l) => decide(&RationalQuad(q.map(|e| &l[e.idx()])), ladder),
+            ExactLengths::Enclosed(l) => decide(&EnclosureQuad(q.map(|e| &l[e.idx()])), ladder),
+        }
+    }
+    fn flip_length(&mut self, q: &QuadEdges) -> Option<ExactSaved> {
+        match &mut self.lengths {
+            ExactLengths::Exact(l) => {
+                let new = ptolemy_length_exact(q.lengths(l));
+                self.max_bits = self.max_bits.max(rational_bits(&new));
+                Some(ExactSaved::Exact(std::mem::replace(
+                    &mut l[q.edge.idx()],
+                    new,
+                )))
+            }
+            ExactLengths::Enclosed(l) => {
+                let new = ptolemy_length_enclosure(q.lengths(l))?;
+                if !new.is_positive() {
+                    return None;
+                }
+                Some(ExactSaved::Enclosed(std::mem::replace(
+                    &mut l[q.edge.idx()],
+                    new,
+                )))
+            }
+        }
+    }
+    fn restore(&mut self, e: Edge, old: ExactSaved) {
+        match (&mut self.lengths, old) {
+            (ExactLengths::Exact(l), ExactSaved::Exact(o)) => l[e.idx()] = o,
+            (ExactLengths::Enclosed(l), ExactSaved::Enclosed(o)) => l[e.idx()] = o,
+            // A fall-back happens only after an accepted flip, never between a flip and
+            // its undo; keep the current value otherwise.
+            _ => {}
+        }
+    }
+    fn accepted(&mut self, flips: usize) {
+        if self.fell_back_after.is_none() && self.max_bits > self.guard_bits {
+            let prec = self.enclosure_bits();
+            if let ExactLengths::Exact(l) = &self.lengths {
+                let enc = l
+                    .iter()
+                    .map(|q| Enclosure::from_rational(q, prec))
+                    .collect();
+                self.lengths = ExactLengths::Enclosed(enc);
+                self.fell_back_after = Some(flips);
+            }
+        }
+    }
+}
+
+/// Exact Ptolemy flipping over ℚ (rational lengths stay rational, T28). When a length
+/// exceeds `guard_bits` (numerator + denominator bits) the run continues on MPFR
+/// enclosures at `2·guard_bits` bits (at least 128), rounded outward, and says so in
+/// [`FlipReport::fell_back_after`]; [`FlipReport::max_bits`] reports the growth.
+pub fn flip_to_delaunay_exact(
+    mesh: &mut Mesh,
+    lengths: Vec<Rational>,
+    guard_bits: u64,
+    opts: &FlipOptions,
+) -> Result<(FlipReport, ExactLengths), FlipToDelaunayError> {
+    if lengths.len() != mesh.n_edges() {
+        return Err(DelaunayError::LengthCount {
+            expected: mesh.n_edges(),
+            got: lengths.len(),
+        }
+        .into());
+    }
+    for e in mesh.edges() {
+        if lengths[e.idx()] <= 0 {
+            return Err(DelaunayError::BadLength {
+                edge: e,
+                value: lengths[e.idx()].to_f64(),
+            }
+            .into());
+        }
+    }
+    let max_bits = lengths.iter().map(rational_bits).max().unwrap_or(0);
+    let mut m = ExactMetric {
+        lengths: ExactLengths::Exact(lengths),
+        guard_bits,
+        max_bits,
+        fell_back_after: None,
+    };
+    m.accepted(0);
+    let mut report = run(mesh, &mut m, opts);
+    report.max_bits = m.max_bits;
+    report.fell_back_after = m.fell_back_after;
+    Ok((report, m.lengths))
+}

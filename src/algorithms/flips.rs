@@ -1,0 +1,174 @@
+//! Metric edge flips: the Euclidean flip (planar layout of the two triangles, preserves the
+//! cone metric) and the Ptolemy flip (MATH.md §5, notes Eq. 18), generic over [`Real`],
+//! exact over [`rug::Rational`] and outward-rounded over [`Enclosure`].
+//!
+//! Both refuse, with the mesh's [`FlipError`], an edge that cannot be flipped: a boundary
+//! edge, or an edge with the same face on both sides (a self-folded triangle around a
+//! degree-1 vertex).
+//!
+//! ```
+//! use penner::algorithms::flips::flip_ptolemy_exact;
+//! use penner::mesh::{Edge, Mesh};
+//! use rug::Rational;
+//! let mut m = Mesh::from_faces(4, &[[0, 1, 2], [0, 2, 3]]).unwrap();
+//! let diag = m.edges().find(|&e| !m.is_boundary_edge(e)).unwrap();
+//! let mut l: Vec<Rational> = m.edges().map(|e| Rational::from(e.0 + 2)).collect();
+//! let before = l.clone();
+//! flip_ptolemy_exact(&mut m, &mut l, diag).unwrap();
+//! flip_ptolemy_exact(&mut m, &mut l, diag).unwrap();
+//! assert_eq!(l, before); // the Ptolemy flip is an involution, exactly
+//! ```
+
+use crate::mesh::{Edge, FlipError, Mesh};
+use crate::predicates::delaunay::{Quad, QuadEdges};
+use crate::predicates::directed::Enclosure;
+use crate::scalar::Real;
+use rug::Rational;
+
+/// Which flip updates the length of the new diagonal.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+pub enum FlipKind {
+    /// Planar layout of the two triangles; preserves the cone metric (T23).
+    Euclidean,
+    /// `ℓ_kl = (ℓ_ik ℓ_jl + ℓ_il ℓ_jk)/ℓ_ij`; preserves the decorated hyperbolic structure
+    /// and commutes with scaling (T28).
+    Ptolemy,
+}
+
+/// The Ptolemy length `ℓ_kl = (ℓ_ik ℓ_jl + ℓ_il ℓ_jk) / ℓ_ij` (MATH.md §5), evaluated as
+/// `ℓ_ki·(ℓ_lj/ℓ_ij) + ℓ_il·(ℓ_jk/ℓ_ij)` so that products of large lengths do not overflow.
+pub fn ptolemy_length<T: Real>(q: Quad<&T>) -> T {
+    q.ki.clone() * &(q.lj.clone() / q.ij) + &(q.il.clone() * &(q.jk.clone() / q.ij))
+}
+
+/// The Ptolemy length in exact rational arithmetic.
+pub fn ptolemy_length_exact(q: Quad<&Rational>) -> Rational {
+    (Rational::from(q.ki * q.lj) + Rational::from(q.il * q.jk)) / q.ij
+}
+
+/// The Ptolemy length of enclosed lengths, rounded outward; `None` if `ℓ_ij` may be ≤ 0.
+pub fn ptolemy_length_enclosure(q: Quad<&Enclosure>) -> Option<Enclosure> {
+    q.ki.mul(q.lj).add(&q.il.mul(q.jk)).div_positive(q.ij)
+}
+
+/// The Euclidean length of the new diagonal `kl`: lay out `i = (0,0)`, `j = (a,0)`, `k`
+/// above and `l` below the x-axis; then
+///
+/// ```text
+/// ℓ_kl = √( ((c−b)(c+b) + (e−d)(e+d))² + (S_ijk + S_jil)² ) / (2a),
+/// S = 4·Area = √((x+(y+z))(z−(x−y))(z+(x−y))(x+(y−z)))   (x ≥ y ≥ z, Kahan),
+/// ```
+///
+/// with `a = ℓ_ij, b = ℓ_jk, c = ℓ_ki, d = ℓ_il, e = ℓ_lj` (MATH.md §1, §5). Kahan's
+/// ordering keeps the area accurate for needles and caps. The lengths are first scaled by
+/// a power of two near `1/a` (exact in binary arithmetic) so that squares of squares do
+/// not overflow. For triangles that violate the triangle inequality the square root of a
+/// negative number is NaN (`f64`): the caller refuses such a flip.
+pub fn euclidean_length<T: Real>(q: Quad<&T>) -> T {
+    let a0 = q.ij.approx_f64();
+    let (scale, unscale) = if a0.is_normal() && a0 > 0.0 {
+        let k = a0.log2().floor() as i32;
+        (q.ij.lit(2f64.powi(-k)), q.ij.lit(2f64.powi(k)))
+    } else {
+        (q.ij.one_like(), q.ij.one_like())
+    };
+    let [a, b, c, d, e] = q.to_array().map(|x| x.clone() * &scale);
+    let x = (c.clone() - &b) * &(c.clone() + &b) + &((e.clone() - &d) * &(e.clone() + &d));
+    let y = four_area(&a, &b, &c) + &four_area(&a, &d, &e);
+    let r = (x.clone() * &x + &(y.clone() * &y)).sqrt();
+    r / &(a.clone() * &a.lit(2.0)) * &unscale
+}
+
+/// `4·Area` of a triangle by Kahan's formula, ordering the sides by their `f64` images
+/// (an ordering error between nearly equal sides changes the result only by rounding).
+fn four_area<T: Real>(p: &T, q: &T, r: &T) -> T {
+    let mut s = [p, q, r];
+    s.sort_by(|u, v| v.approx_f64().total_cmp(&u.approx_f64()));
+    let [x, y, z] = s;
+    let xy = x.clone() - y;
+    let prod = (x.clone() + &(y.clone() + z))
+        * &(z.clone() - &xy)
+        * &(z.clone() + &xy)
+        * &(x.clone() + &(y.clone() - z));
+    prod.sqrt()
+}
+
+/// The Euclidean length of [`euclidean_length`] on enclosed lengths, rounded outward;
+/// `None` if a triangle may violate the triangle inequality (its area factor may be
+/// negative) or `ℓ_ij` may be ≤ 0.
+pub fn euclidean_length_enclosure(q: Quad<&Enclosure>) -> Option<Enclosure> {
+    let prec = q.ij.lo.prec();
+    let one = Enclosure::from_f64(1.0, prec);
+    let b = q.jk.div_positive(q.ij)?;
+    let c = q.ki.div_positive(q.ij)?;
+    let d = q.il.div_positive(q.ij)?;
+    let e = q.lj.div_positive(q.ij)?;
+    let four_area = |b: &Enclosure, c: &Enclosure| -> Option<Enclosure> {
+        b.add(c)
+            .sub(&one)
+            .mul(&one.sub(b).add(c))
+            .mul(&one.add(b).sub(c))
+            .mul(&one.add(b).add(c))
+            .sqrt()
+    };
+    let x = c.sub(&b).mul(&c.add(&b)).add(&e.sub(&d).mul(&e.add(&d)));
+    let y = four_area(&b, &c)?.add(&four_area(&d, &e)?);
+    let r = x.mul(&x).add(&y.mul(&y)).sqrt()?;
+    Some(r.mul(q.ij).mul_pow2(-1))
+}
+
+fn quad_or_refuse(mesh: &Mesh, e: Edge) -> Result<QuadEdges, FlipError> {
+    if e.idx() >= mesh.n_edges() {
+        return Err(FlipError::OutOfRange(e));
+    }
+    if mesh.is_boundary_edge(e) {
+        return Err(FlipError::Boundary(e));
+    }
+    QuadEdges::of(mesh, e).ok_or(FlipError::SameFace(e))
+}
+
+/// Flip edge `e` combinatorially and update its length with `kind` (no Delaunay test).
+/// `lengths` has one entry per edge.
+pub fn flip_metric<T: Real>(
+    mesh: &mut Mesh,
+    lengths: &mut [T],
+    e: Edge,
+    kind: FlipKind,
+) -> Result<(), FlipError> {
+    let q = quad_or_refuse(mesh, e)?;
+    let quad = q.lengths(lengths);
+    let new = match kind {
+        FlipKind::Euclidean => euclidean_length(quad),
+        FlipKind::Ptolemy => ptolemy_length(quad),
+    };
+    mesh.flip(e)?;
+    lengths[e.idx()] = new;
+    Ok(())
+}
+
+/// Euclidean flip of `e` (see [`euclidean_length`]).
+pub fn flip_euclidean<T: Real>(
+    mesh: &mut Mesh,
+    lengths: &mut [T],
+    e: Edge,
+) -> Result<(), FlipError> {
+    flip_metric(mesh, lengths, e, FlipKind::Euclidean)
+}
+
+/// Ptolemy flip of `e` (see [`ptolemy_length`]).
+pub fn flip_ptolemy<T: Real>(mesh: &mut Mesh, lengths: &mut [T], e: Edge) -> Result<(), FlipError> {
+    flip_metric(mesh, lengths, e, FlipKind::Ptolemy)
+}
+
+/// Ptolemy flip of `e` in exact rational arithmetic: rational lengths stay rational.
+pub fn flip_ptolemy_exact(
+    mesh: &mut Mesh,
+    lengths: &mut [Rational],
+    e: Edge,
+) -> Result<(), FlipError> {
+    let q = quad_or_refuse(mesh, e)?;
+    let new = ptolemy_length_exact(q.lengths(lengths));
+    mesh.flip(e)?;
+    lengths[e.idx()] = new;
+    Ok(())
+}

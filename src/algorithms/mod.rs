@@ -1,0 +1,11 @@
+//! Algorithms on metric Δ-complexes. Every decision goes through [`crate::predicates`].
+//!
+//! - [`flips`]: Euclidean and Ptolemy flips of one edge (MATH.md §5).
+//! - [`flip_to_delaunay`]: flip to an intrinsic Delaunay triangulation with certified
+//!   signs (T21).
+//! - [`naive`]: an uncertified `f64` baseline, for benchmarks and for showing where raw
+//!   floating-point decisions go wrong.
+
+pub mod flip_to_delaunay;
+pub mod flips;
+pub mod naive;

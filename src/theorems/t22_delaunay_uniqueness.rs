@@ -1,0 +1,233 @@
+//! T22 (notes §1.5.2): without cocircular pairs the Delaunay triangulation is unique;
+//! at ties `D = 0` and both diagonals pass.
+//!
+//! Two comparisons:
+//! - [`check_delaunay_uniqueness`]: flip one start with several visit orders and compare
+//!   the strictly Delaunay edges (certified `P > 0`) as multisets of vertex pairs; tie
+//!   edges (certified `P = 0`) must stay ties after flipping them. Vertex labels are
+//!   preserved by flips, so the comparison is up to the identity isomorphism; with
+//!   multi-edges equal multisets are necessary, not sufficient.
+//! - [`check_planar_delaunay_matches_spade`]: a planar triangulation with convex boundary,
+//!   flipped intrinsically, has the edge set of `spade`'s constrained Delaunay
+//!   triangulation of the same points (an independent implementation).
+
+use super::{Settings, Verdict, Witness};
+use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
+use crate::algorithms::flips::flip_metric;
+use crate::mesh::Mesh;
+use crate::predicates::delaunay::{edge_delaunay_sign, EdgeDelaunay};
+use crate::scalar::{Certified, Real, Sign};
+use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
+use std::collections::BTreeMap;
+
+type PairCounts = BTreeMap<(u32, u32), usize>;
+
+fn pair(mesh: &Mesh, e: crate::mesh::Edge) -> (u32, u32) {
+    let h = e.halfedge();
+    let (a, b) = (mesh.tail(h).0, mesh.tip(h).0);
+    (a.min(b), a.max(b))
+}
+
+/// Strict (P > 0 or boundary) edges, tie edges, and undecided edges of a triangulation.
+fn classify<T: Real>(
+    mesh: &Mesh,
+    lengths: &[T],
+    settings: &Settings,
+) -> Result<(PairCounts, Vec<crate::mesh::Edge>, Vec<Witness>), String> {
+    let mut strict = PairCounts::new();
+    let mut ties = Vec::new();
+    let mut bad = Vec::new();
+    for e in mesh.edges() {
+        match edge_delaunay_sign(mesh, lengths, e, &settings.ladder).map_err(|x| x.to_string())? {
+            EdgeDelaunay::Interior(Certified::Known {
+                value: Sign::Zero, ..
+            }) => ties.push(e),
+            EdgeDelaunay::Interior(Certified::Known {
+                value: Sign::Negative,
+                ..
+            }) => bad.push(Witness {
+                element: e.to_string(),
+                detail: "non-Delaunay edge after flipping".into(),
+                value: -1.0,
+            }),
+            EdgeDelaunay::Interior(Certified::Undecided { .. }) => bad.push(Witness {
+                element: e.to_string(),
+                detail: "undecided edge after flipping".into(),
+                value: 0.0,
+            }),
+            _ => *strict.entry(pair(mesh, e)).or_default() += 1,
+        }
+    }
+    Ok((strict, ties, bad))
+}
+
+/// Flip `(mesh, lengths)` to Delaunay once per seed in `seeds` (random visit orders) and
+/// compare the results (see the module documentation).
+pub fn check_delaunay_uniqueness<T: Real>(
+    mesh: &Mesh,
+    lengths: &[T],
+    kind: FlipKind,
+    seeds: &[u64],
+    settings: &Settings,
+) -> Verdict {
+    let mut reference: Option<PairCounts> = None;
+    let mut witnesses = Vec::new();
+    for &seed in seeds {
+        let (mut m, mut l) = (mesh.clone(), lengths.to_vec());
+        let opts = FlipOptions {
+            ladder: settings.ladder,
+            order_seed: Some(seed),
+            ..FlipOptions::default()
+        };
+        if let Err(err) = flip_to_delaunay(&mut m, &mut l, kind, &opts) {
+            return Verdict::NotApplicable {
+                reason: err.to_string(),
+            };
+        }
+        let (strict, ties, bad) = match classify(&m, &l, settings) {
+            Ok(x) => x,
+            Err(reason) => return Verdict::NotApplicable { reason },
+        };
+        witnesses.extend(bad);
+        // At a tie both diagonals pass: flip it and the new diagonal is a tie again.
+        for e in ties {
+            let (mut m2, mut l2) = (m.clone(), l.clone());
+            if flip_metric(&mut m2, &mut l2, e, kind).is_ok() {
+                let s = edge_delaunay_sign(&m2, &l2, e, &settings.ladder);
+                if !matches!(s, Ok(EdgeDelaunay::Interior(c)) if c.value() == Some(Sign::Zero)) {
+                    witnesses.push(Witness {
+                        element: e.to_string(),
+                        detail: format!("seed {seed}: tie edge whose flip is not a tie"),
+                        value: 0.0,
+                    });
+                }
+            }
+        }
+        match &reference {
+            None => reference = Some(strict),
+            Some(r) if *r != strict => witnesses.push(Witness {
+                element: "surface".into(),
+                detail: format!("seed {seed}: strictly Delaunay edges differ from the first run"),
+                value: seed as f64,
+            }),
+            Some(_) => {}
+        }
+    }
+    if witnesses.is_empty() {
+        Verdict::Holds {
+            certified: true,
+            max_error: 0.0,
+        }
+    } else {
+        Verdict::Fails {
+            certified: true,
+            witnesses,
+        }
+    }
+}
+
+/// Flip the planar triangulation `faces` of `points` (convex boundary) with Euclidean flips
+/// on its `f64` edge lengths and compare its edges with `spade`'s constrained Delaunay
+/// triangulation (boundary edges as constraints). Every edge present in one and not in the
+/// other is listed. Edges at certified ties are exempt.
+pub fn check_planar_delaunay_matches_spade(
+    points: &[[f64; 2]],
+    faces: &[[u32; 3]],
+    settings: &Settings,
+) -> Verdict {
+    let Ok(mut m) = Mesh::from_faces(points.len() as u32, faces) else {
+        return Verdict::NotApplicable {
+            reason: "faces do not form a surface".into(),
+        };
+    };
+    let mut l: Vec<f64> = m
+        .edges()
+        .map(|e| {
+            let (a, b) = pair(&m, e);
+            let (p, q) = (points[a as usize], points[b as usize]);
+            (p[0] - q[0]).hypot(p[1] - q[1])
+        })
+        .collect();
+    let opts = FlipOptions {
+        ladder: settings.ladder,
+        ..FlipOptions::default()
+    };
+    if let Err(err) = flip_to_delaunay(&mut m, &mut l, FlipKind::Euclidean, &opts) {
+        return Verdict::NotApplicable {
+            reason: err.to_string(),
+        };
+    }
+    let witnesses = match planar_edge_mismatches(points, &m, &l, settings) {
+        Ok(w) => w,
+        Err(reason) => return Verdict::NotApplicable { reason },
+    };
+    if witnesses.is_empty() {
+        Verdict::Holds {
+            certified: true,
+            max_error: 0.0,
+        }
+    } else {
+        Verdict::Fails {
+            certified: true,
+            witnesses,
+        }
+    }
+}
+
+/// Every edge of the triangulation `(m, l)` of `points` that is not in `spade`'s constrained
+/// Delaunay triangulation (boundary edges as constraints), and every edge of spade's that
+/// is missing here; edges at certified ties are exempt.
+pub fn planar_edge_mismatches(
+    points: &[[f64; 2]],
+    m: &Mesh,
+    l: &[f64],
+    settings: &Settings,
+) -> Result<Vec<Witness>, String> {
+    let mut cdt: ConstrainedDelaunayTriangulation<Point2<f64>> =
+        ConstrainedDelaunayTriangulation::new();
+    let mut handles = Vec::with_capacity(points.len());
+    for p in points {
+        match cdt.insert(Point2::new(p[0], p[1])) {
+            Ok(h) => handles.push(h),
+            Err(err) => return Err(format!("spade rejected a point: {err:?}")),
+        }
+    }
+    if cdt.num_vertices() != points.len() {
+        return Err("duplicate points".into());
+    }
+    for e in m.edges().filter(|&e| m.is_boundary_edge(e)) {
+        let (a, b) = pair(m, e);
+        cdt.add_constraint(handles[a as usize], handles[b as usize]);
+    }
+    let index_of: BTreeMap<usize, u32> = handles
+        .iter()
+        .enumerate()
+        .map(|(i, h)| (h.index(), i as u32))
+        .collect();
+    let mut theirs = std::collections::BTreeSet::new();
+    for e in cdt.undirected_edges() {
+        let [a, b] = e.vertices().map(|v| index_of[&v.fix().index()]);
+        theirs.insert((a.min(b), a.max(b)));
+    }
+    let (strict, ties, mut witnesses) = classify(m, l, settings)?;
+    let tie_pairs: std::collections::BTreeSet<_> = ties.iter().map(|&e| pair(m, e)).collect();
+    for p in strict.keys() {
+        if !theirs.contains(p) {
+            witnesses.push(Witness {
+                element: format!("v{}-v{}", p.0, p.1),
+                detail: "edge not in spade's Delaunay triangulation".into(),
+                value: 1.0,
+            });
+        }
+    }
+    for p in &theirs {
+        if !strict.contains_key(p) && !tie_pairs.contains(p) {
+            witnesses.push(Witness {
+                element: format!("v{}-v{}", p.0, p.1),
+                detail: "spade's Delaunay edge missing after flipping".into(),
+                value: 1.0,
+            });
+        }
+    }
+    Ok(witnesses)
+}

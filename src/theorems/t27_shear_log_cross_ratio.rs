@@ -1,0 +1,60 @@
+//! T27 (notes §1.6.2, Eq. 15): the shear coordinate `2 s_ij = λ_jk − λ_ki + λ_il − λ_lj`
+//! of the Penner coordinates `λ = 2 log ℓ` equals `log c_ij`, with the length cross ratio
+//! `c_ij = ℓ_il ℓ_jk / (ℓ_ki ℓ_lj)` (MATH.md §4, §6).
+//!
+//! Numerical, at MPFR precision `p` with `u = 2⁻ᵖ`: the two evaluations may differ by at
+//! most `8u (Σ|ln ℓ| + |ln c| + 1)` (proof: B64).
+
+use super::{Settings, Verdict, Witness};
+use crate::mesh::Mesh;
+use crate::predicates::delaunay::QuadEdges;
+use crate::scalar::{Mpfr, Real};
+
+/// Compare shear (from Penner coordinates) with the log cross ratio on every interior edge.
+pub fn check_shear_log_cross_ratio(mesh: &Mesh, lengths: &[Mpfr], settings: &Settings) -> Verdict {
+    if lengths.len() != mesh.n_edges() || lengths.is_empty() {
+        return Verdict::NotApplicable {
+            reason: "one length per edge is required".into(),
+        };
+    }
+    let u = Mpfr::unit_roundoff(lengths[0].ctx());
+    let mut witnesses = Vec::new();
+    let mut max_error: f64 = 0.0;
+    for e in mesh.edges() {
+        let Some(q) = QuadEdges::of(mesh, e) else {
+            continue;
+        };
+        let l = q.lengths(lengths);
+        let lam = |x: &Mpfr| x.ln() * &x.lit(2.0);
+        let two_s = lam(l.jk) - &lam(l.ki) + &lam(l.il) - &lam(l.lj);
+        let s = two_s / &l.ij.lit(2.0);
+        let c = (l.il.clone() * l.jk) / &(l.ki.clone() * l.lj);
+        let log_c = c.ln();
+        let diff = (s - &log_c).abs().approx_f64();
+        let sum_abs: f64 = [l.jk, l.ki, l.il, l.lj]
+            .iter()
+            .map(|x| x.ln().abs().approx_f64())
+            .sum();
+        // proof: B64
+        let tol = settings.slack * 8.0 * u * (sum_abs + log_c.abs().approx_f64() + 1.0);
+        max_error = max_error.max(diff);
+        if diff.is_nan() || diff > tol {
+            witnesses.push(Witness {
+                element: e.to_string(),
+                detail: format!("shear − log cross ratio = {diff:e} > {tol:e}"),
+                value: diff,
+            });
+        }
+    }
+    if witnesses.is_empty() {
+        Verdict::Holds {
+            certified: false,
+            max_error,
+        }
+    } else {
+        Verdict::Fails {
+            certified: false,
+            witnesses,
+        }
+    }
+}

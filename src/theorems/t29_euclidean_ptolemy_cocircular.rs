@@ -1,0 +1,117 @@
+//! T29 (notes §1.6.4; MATH.md §5): the Euclidean and Ptolemy flips of an edge give the same
+//! new length iff the quadrilateral is cocircular (`D = 0`); otherwise the Ptolemy length
+//! is the longer one (Ptolemy's inequality).
+//!
+//! Certified: the sign of `D` comes from the ladder; both new lengths are enclosed with
+//! outward rounding at rising precision. At `D = 0` the enclosures must intersect; at
+//! `D ≠ 0` the Ptolemy enclosure must lie strictly above the Euclidean one.
+
+use super::{Settings, Verdict, Witness};
+use crate::algorithms::flips::{euclidean_length_enclosure, ptolemy_length_enclosure};
+use crate::mesh::Mesh;
+use crate::predicates::delaunay::{QuadEdges, RealQuad};
+use crate::predicates::directed::Enclosure;
+use crate::predicates::ladder::decide;
+use crate::scalar::{Real, Sign};
+
+/// Check T29 on every interior edge whose two triangles satisfy the triangle inequality.
+pub fn check_euclidean_equals_ptolemy_iff_cocircular<T: Real>(
+    mesh: &Mesh,
+    lengths: &[T],
+    settings: &Settings,
+) -> Verdict {
+    let mut witnesses = Vec::new();
+    let mut undecided = Vec::new();
+    for e in mesh.edges() {
+        let Some(q) = QuadEdges::of(mesh, e) else {
+            continue;
+        };
+        let quad = q.lengths(lengths);
+        let Some(sign) = decide(&RealQuad(quad), &settings.ladder).value() else {
+            undecided.push(Witness {
+                element: e.to_string(),
+                detail: "sign of D undecided".into(),
+                value: 0.0,
+            });
+            continue;
+        };
+        let Some(rat) = quad
+            .to_array()
+            .map(Real::to_rational)
+            .into_iter()
+            .collect::<Option<Vec<_>>>()
+        else {
+            return Verdict::NotApplicable {
+                reason: format!("a length at {e} is not finite"),
+            };
+        };
+        let mut outcome = None;
+        let mut bits = settings.ladder.start_bits.max(64);
+        while bits <= settings.ladder.max_bits.max(64) {
+            let enc: Vec<Enclosure> = rat
+                .iter()
+                .map(|x| Enclosure::from_rational(x, bits))
+                .collect();
+            let eq = crate::predicates::delaunay::Quad {
+                ij: &enc[0],
+                jk: &enc[1],
+                ki: &enc[2],
+                il: &enc[3],
+                lj: &enc[4],
+            };
+            let (Some(eu), Some(pt)) =
+                (euclidean_length_enclosure(eq), ptolemy_length_enclosure(eq))
+            else {
+                outcome = Some(None);
+                break;
+            };
+            match sign {
+                Sign::Zero => {
+                    outcome = Some(Some(eu.overlaps(&pt)));
+                    break;
+                }
+                _ if pt.lo > eu.hi => {
+                    outcome = Some(Some(true));
+                    break;
+                }
+                _ if pt.hi < eu.lo => {
+                    outcome = Some(Some(false));
+                    break;
+                }
+                _ => bits *= 2,
+            }
+        }
+        match outcome {
+            // `Some(None)`: a triangle may violate the triangle inequality (no Euclidean flip).
+            Some(None | Some(true)) => {}
+            Some(Some(false)) => witnesses.push(Witness {
+                element: e.to_string(),
+                detail: format!(
+                    "D is {sign}, but the Euclidean and Ptolemy lengths disagree with that"
+                ),
+                value: 1.0,
+            }),
+            None => undecided.push(Witness {
+                element: e.to_string(),
+                detail: "enclosures of the two new lengths overlap at every precision".into(),
+                value: 0.0,
+            }),
+        }
+    }
+    if !witnesses.is_empty() {
+        Verdict::Fails {
+            certified: true,
+            witnesses,
+        }
+    } else if !undecided.is_empty() {
+        Verdict::Undecided {
+            bits_tried: settings.ladder.max_bits,
+            witnesses: undecided,
+        }
+    } else {
+        Verdict::Holds {
+            certified: true,
+            max_error: 0.0,
+        }
+    }
+}

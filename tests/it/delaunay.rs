@@ -1,0 +1,467 @@
+//! The certified Delaunay predicate against independent oracles (malachite rationals with
+//! the D-form of GSC21, integer incircle determinants), and the adversarial suite.
+
+use crate::support::cases;
+use malachite::base::num::arithmetic::traits::Sign as _;
+use malachite::rational::Rational as MRational;
+use penner::algorithms::naive::naive_p;
+use penner::mesh::{Edge, Mesh};
+use penner::predicates::delaunay::{
+    delaunay_sign_squared, edge_delaunay_sign_scaled, enclose_p, filter_f64, EdgeDelaunay, Quad,
+    RationalQuad, RealQuad,
+};
+use penner::predicates::directed::Enclosure;
+use penner::predicates::ladder::{decide, Ladder};
+use penner::scalar::{Certified, Dd, Mpfr, Precision, Real, Sign, Stage};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use rug::Rational;
+use std::cmp::Ordering;
+use std::str::FromStr;
+
+/// Convert through the decimal string: a different code path from rug's arithmetic.
+pub fn to_m(q: &Rational) -> MRational {
+    MRational::from_str(&q.to_string()).unwrap()
+}
+
+/// The oracle: sign of GSC21's `D = ℓ_kl(ℓ_il ℓ_ki + ℓ_jk ℓ_lj) − ℓ_ij(ℓ_jk ℓ_ki + ℓ_il ℓ_lj)`
+/// with the Ptolemy diagonal `ℓ_kl = (ℓ_ki ℓ_lj + ℓ_il ℓ_jk)/ℓ_ij`, in malachite.
+pub fn oracle(q: [&MRational; 5]) -> Sign {
+    let [ij, jk, ki, il, lj] = q;
+    let kl = (ki * lj + il * jk) / ij;
+    let d = &kl * (il * ki + jk * lj) - ij * (jk * ki + il * lj);
+    match d.sign() {
+        Ordering::Less => Sign::Negative,
+        Ordering::Equal => Sign::Zero,
+        Ordering::Greater => Sign::Positive,
+    }
+}
+
+pub fn oracle_f64(q: [f64; 5]) -> Sign {
+    let m = q.map(|x| MRational::try_from(x).unwrap());
+    oracle([&m[0], &m[1], &m[2], &m[3], &m[4]])
+}
+
+fn quad(q: [f64; 5]) -> Quad<f64> {
+    Quad {
+        ij: q[0],
+        jk: q[1],
+        ki: q[2],
+        il: q[3],
+        lj: q[4],
+    }
+}
+
+fn dist(p: [f64; 2], q: [f64; 2]) -> f64 {
+    (p[0] - q[0]).hypot(p[1] - q[1])
+}
+
+/// Lengths `[ij, jk, ki, il, lj]` of four points `i, j, k, l`.
+fn lengths_of(p: [[f64; 2]; 4]) -> [f64; 5] {
+    let [i, j, k, l] = p;
+    [dist(i, j), dist(j, k), dist(k, i), dist(i, l), dist(l, j)]
+}
+
+/// A random quadrilateral of one of several adversarial families.
+fn adversarial_quad(rng: &mut ChaCha8Rng, family: u32) -> [f64; 5] {
+    match family % 6 {
+        // Random valid triangles.
+        0 => {
+            let p: [[f64; 2]; 4] = std::array::from_fn(|_| [rng.gen(), rng.gen()]);
+            lengths_of(p)
+        }
+        // Four points on a circle (f64 coordinates): nearly cocircular.
+        1 => {
+            let t: [f64; 4] = std::array::from_fn(|_| rng.gen_range(0.0..std::f64::consts::TAU));
+            lengths_of(t.map(|a| [a.cos(), a.sin()]))
+        }
+        // Arbitrary positive lengths (triangle inequality may fail).
+        2 => std::array::from_fn(|_| rng.gen_range(0.01..3.0)),
+        // Needles and caps.
+        3 => {
+            let eps = 10f64.powi(-rng.gen_range(3..14));
+            [
+                1.0,
+                1.0 + eps * rng.gen::<f64>(),
+                eps,
+                1.0,
+                eps * rng.gen::<f64>() + 1e-300,
+            ]
+        }
+        // Cocircular rectangle 3-4-5 with a relative perturbation 1e-15 … 1e-17.
+        4 => {
+            let eps = rng.gen_range(-1.0..1.0) * 10f64.powi(-rng.gen_range(15..18));
+            [5.0 * (1.0 + eps), 4.0, 3.0, 4.0, 3.0]
+        }
+        // Random scale 1e-150 … 1e150 of a near-cocircular quad.
+        _ => {
+            let t: [f64; 4] = std::array::from_fn(|_| rng.gen_range(0.0..std::f64::consts::TAU));
+            let s = 10f64.powi(rng.gen_range(-150..=150));
+            lengths_of(t.map(|a| [a.cos(), a.sin()])).map(|x| x * s)
+        }
+    }
+}
+
+#[test]
+fn b61_filter_never_contradicts_exact_oracle() {
+    let mut rng = ChaCha8Rng::seed_from_u64(61);
+    let n = cases(6_000, 200_000);
+    let mut decided = 0;
+    for i in 0..n {
+        let q = adversarial_quad(&mut rng, i as u32);
+        let exact = oracle_f64(q);
+        if let Some(s) = filter_f64(q) {
+            decided += 1;
+            assert_eq!(s, exact, "filter contradicts exact arithmetic on {q:?}");
+        }
+        let qq = quad(q);
+        let c = decide(&RealQuad(qq.as_refs()), &Ladder::default());
+        assert_eq!(c.value(), Some(exact), "ladder on {q:?}");
+    }
+    // The filter decides most inputs (else it would be useless), not all (near ties).
+    assert!(
+        decided > n / 2 && decided < n,
+        "filter decided {decided} of {n}"
+    );
+}
+
+#[test]
+fn b61_negative_control_naive_f64_sign_contradicts_exact() {
+    // The same inputs decided by the raw f64 value of P (no error bound): wrong signs.
+    let mut rng = ChaCha8Rng::seed_from_u64(62);
+    let mut wrong = Vec::new();
+    for _ in 0..4_000 {
+        let q = adversarial_quad(&mut rng, 1);
+        let exact = oracle_f64(q);
+        let p = naive_p(q);
+        let naive = if p > 0.0 {
+            Sign::Positive
+        } else if p < 0.0 {
+            Sign::Negative
+        } else {
+            Sign::Zero
+        };
+        if naive != exact {
+            wrong.push((q, naive, exact));
+        }
+    }
+    assert!(
+        !wrong.is_empty(),
+        "expected naive f64 decisions to err on near-cocircular quads"
+    );
+    // ... while the certified predicate agrees on every one of them.
+    for (q, _, exact) in &wrong {
+        let qq = quad(*q);
+        let r = RealQuad(qq.as_refs());
+        assert_eq!(decide(&r, &Ladder::default()).value(), Some(*exact));
+    }
+}
+
+#[test]
+fn b62_enclosure_contains_exact_value() {
+    let mut rng = ChaCha8Rng::seed_from_u64(63);
+    let mut strict = 0;
+    for i in 0..cases(1_500, 50_000) {
+        let q = adversarial_quad(&mut rng, i as u32);
+        let m = q.map(|x| MRational::try_from(x).unwrap());
+        // Oracle value ℓ_ij·D in malachite.
+        let [ij, jk, ki, il, lj] = [&m[0], &m[1], &m[2], &m[3], &m[4]];
+        let kl = (ki * lj + il * jk) / ij;
+        let p_exact = ij * (&kl * (il * ki + jk * lj) - ij * (jk * ki + il * lj));
+        for bits in [53u32, 64, 100] {
+            let e = enclose_p(&q.map(|x| Enclosure::from_f64(x, bits)));
+            let lo = to_m(&e.lo.to_rational().unwrap());
+            let hi = to_m(&e.hi.to_rational().unwrap());
+            assert!(lo <= p_exact && p_exact <= hi, "{q:?} at {bits} bits");
+            // Negative control: the round-to-nearest midpoint is generally not the value.
+            if lo < hi {
+                strict += 1;
+            }
+        }
+    }
+    assert!(
+        strict > 0,
+        "every enclosure was a point: rounding never exercised"
+    );
+}
+
+/// Integer incircle determinant (independent oracle): > 0 iff `d` lies inside the
+/// circle through `a, b, c` (counter-clockwise).
+fn incircle(a: [i64; 2], b: [i64; 2], c: [i64; 2], d: [i64; 2]) -> i128 {
+    let r = |p: [i64; 2]| {
+        let (x, y) = (i128::from(p[0] - d[0]), i128::from(p[1] - d[1]));
+        (x, y, x * x + y * y)
+    };
+    let (ax, ay, a2) = r(a);
+    let (bx, by, b2) = r(b);
+    let (cx, cy, c2) = r(c);
+    ax * (by * c2 - b2 * cy) - ay * (bx * c2 - b2 * cx) + a2 * (bx * cy - by * cx)
+}
+
+fn orient(a: [i64; 2], b: [i64; 2], c: [i64; 2]) -> i64 {
+    (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+}
+
+#[test]
+fn b63_squared_length_sign_matches_integer_incircle() {
+    let mut rng = ChaCha8Rng::seed_from_u64(64);
+    let (mut zeros, mut n) = (0, 0);
+    let target = cases(3_000, 100_000);
+    while n < target {
+        let range = if n % 3 == 0 { 3 } else { 1000 };
+        let p: [[i64; 2]; 4] =
+            std::array::from_fn(|_| [rng.gen_range(-range..=range), rng.gen_range(-range..=range)]);
+        let [i, j, k, l] = p;
+        if orient(i, j, k) <= 0 || orient(i, j, l) >= 0 {
+            continue;
+        }
+        n += 1;
+        let sq =
+            |a: [i64; 2], b: [i64; 2]| Rational::from((a[0] - b[0]).pow(2) + (a[1] - b[1]).pow(2));
+        let s = [sq(i, j), sq(j, k), sq(k, i), sq(i, l), sq(l, j)];
+        let got = delaunay_sign_squared(Quad {
+            ij: &s[0],
+            jk: &s[1],
+            ki: &s[2],
+            il: &s[3],
+            lj: &s[4],
+        });
+        let expected = Sign::of_ordering(0.cmp(&incircle(i, j, k, l)));
+        assert_eq!(got, expected, "{p:?}");
+        zeros += usize::from(got == Sign::Zero);
+    }
+    assert!(zeros > 0, "no cocircular lattice quadrilateral was tested");
+}
+
+#[test]
+fn b63_negative_control_squared_sign_of_wrong_quad_differs() {
+    // Swapping the roles of the two triangles' sides (jk ↔ lj) changes the quadrilateral;
+    // the same incircle oracle then disagrees on some inputs.
+    let mut rng = ChaCha8Rng::seed_from_u64(65);
+    let mut disagreements = 0;
+    for _ in 0..500 {
+        let p: [[i64; 2]; 4] =
+            std::array::from_fn(|_| [rng.gen_range(-50..=50), rng.gen_range(-50..=50)]);
+        let [i, j, k, l] = p;
+        if orient(i, j, k) <= 0 || orient(i, j, l) >= 0 {
+            continue;
+        }
+        let sq =
+            |a: [i64; 2], b: [i64; 2]| Rational::from((a[0] - b[0]).pow(2) + (a[1] - b[1]).pow(2));
+        let s = [sq(i, j), sq(l, j), sq(k, i), sq(i, l), sq(j, k)];
+        let got = delaunay_sign_squared(Quad {
+            ij: &s[0],
+            jk: &s[1],
+            ki: &s[2],
+            il: &s[3],
+            lj: &s[4],
+        });
+        disagreements += usize::from(got != Sign::of_ordering(0.cmp(&incircle(i, j, k, l))));
+    }
+    assert!(disagreements > 0);
+}
+
+#[test]
+fn perturbations_1e15_to_1e40_decided_correctly_at_mpfr_and_exact() {
+    // The 3-4-5 rectangle is cocircular (P = 0); perturb the diagonal by ±10⁻ᵏ relative.
+    let p = Precision::new(256).unwrap();
+    for k in 15..=40 {
+        for sign in [-1i32, 1] {
+            let eps = Rational::from((sign, 1))
+                / Rational::from(rug::Integer::from(rug::Integer::u_pow_u(10, k as u32)));
+            let diag = Rational::from(5) * (Rational::from(1) + &eps);
+            // Exact rung on rationals.
+            let l = [diag.clone(), 4.into(), 3.into(), 4.into(), 3.into()];
+            let r = RationalQuad(Quad {
+                ij: &l[0],
+                jk: &l[1],
+                ki: &l[2],
+                il: &l[3],
+                lj: &l[4],
+            });
+            let ml = l.each_ref().map(to_m);
+            let expected = oracle([&ml[0], &ml[1], &ml[2], &ml[3], &ml[4]]);
+            assert_eq!(
+                expected,
+                if sign > 0 {
+                    Sign::Negative
+                } else {
+                    Sign::Positive
+                }
+            );
+            assert_eq!(
+                decide(&r, &Ladder::default()).value(),
+                Some(expected),
+                "k={k}"
+            );
+            // MPFR lengths at 256 bits (the rounded diagonal still carries the perturbation).
+            let m: Vec<Mpfr> = l.iter().map(|x| Mpfr::from_rational(x, p)).collect();
+            let rq = RealQuad(Quad {
+                ij: &m[0],
+                jk: &m[1],
+                ki: &m[2],
+                il: &m[3],
+                lj: &m[4],
+            });
+            let exact_of_rounded = {
+                let q = m
+                    .iter()
+                    .map(|x| to_m(&x.to_rational().unwrap()))
+                    .collect::<Vec<_>>();
+                oracle([&q[0], &q[1], &q[2], &q[3], &q[4]])
+            };
+            assert_eq!(exact_of_rounded, expected);
+            assert_eq!(
+                decide(&rq, &Ladder::default()).value(),
+                Some(expected),
+                "k={k}"
+            );
+        }
+    }
+    // Unperturbed: exactly zero, decided (a point enclosure or the exact rung).
+    let l: [Rational; 5] = [5.into(), 4.into(), 3.into(), 4.into(), 3.into()];
+    let r = RationalQuad(Quad {
+        ij: &l[0],
+        jk: &l[1],
+        ki: &l[2],
+        il: &l[3],
+        lj: &l[4],
+    });
+    assert_eq!(decide(&r, &Ladder::default()).value(), Some(Sign::Zero));
+}
+
+#[test]
+fn dd_lengths_decided_like_exact_oracle() {
+    let mut rng = ChaCha8Rng::seed_from_u64(66);
+    for i in 0..cases(300, 20_000) {
+        let q = adversarial_quad(&mut rng, i as u32);
+        let tiny = adversarial_quad(&mut rng, 2).map(|x| x * 1e-20);
+        let d: Vec<Dd> = (0..5)
+            .map(|k| <Dd as Real>::from_f64(q[k], ()) + <Dd as Real>::from_f64(tiny[k] * q[k], ()))
+            .collect();
+        let r: Vec<MRational> = d.iter().map(|x| to_m(&x.to_rational().unwrap())).collect();
+        let expected = oracle([&r[0], &r[1], &r[2], &r[3], &r[4]]);
+        let rq = RealQuad(Quad {
+            ij: &d[0],
+            jk: &d[1],
+            ki: &d[2],
+            il: &d[3],
+            lj: &d[4],
+        });
+        assert_eq!(decide(&rq, &Ladder::default()).value(), Some(expected));
+    }
+}
+
+fn two_triangles() -> Mesh {
+    Mesh::from_faces(4, &[[0, 1, 2], [0, 2, 3]]).unwrap()
+}
+
+#[test]
+fn scale_factors_up_to_800_do_not_overflow() {
+    // Square 0-1-2-3 with diagonal 0-2: unit sides, diagonal √2 as f64.
+    let m = two_triangles();
+    let diag = m.edges().find(|&e| !m.is_boundary_edge(e)).unwrap();
+    let l: Vec<f64> = m
+        .edges()
+        .map(|e| if e == diag { 2f64.sqrt() } else { 1.0 })
+        .collect();
+    // Naive f64 lengths overflow: e^{(800+800)/2} = inf.
+    assert!(800.0f64.exp().is_infinite());
+    let mut rng = ChaCha8Rng::seed_from_u64(67);
+    let prec = Precision::new(3000).unwrap();
+    let mut decided = 0;
+    for _ in 0..cases(40, 2_000) {
+        let u: Vec<f64> = (0..4).map(|_| rng.gen_range(-800.0..800.0)).collect();
+        let s = edge_delaunay_sign_scaled(&m, &l, &u, diag, &Ladder::default()).unwrap();
+        // Oracle: the D-form in 3000-bit MPFR arithmetic (a different formula and code).
+        let len = |e: Edge| {
+            let h = e.halfedge();
+            let (a, b) = (m.tail(h).idx(), m.tip(h).idx());
+            let half = Mpfr::from_f64(u[a], prec) + &Mpfr::from_f64(u[b], prec);
+            (half / &Mpfr::from_f64(2.0, prec)).exp() * &Mpfr::from_f64(l[e.idx()], prec)
+        };
+        let q = penner::predicates::delaunay::QuadEdges::of(&m, diag).unwrap();
+        let [ij, jk, ki, il, lj] = q.edges.to_array().map(len);
+        let kl = (ki.clone() * &lj + &(il.clone() * &jk)) / &ij;
+        let d = kl * &(il.clone() * &ki + &(jk.clone() * &lj)) - &(ij * &(jk * &ki + &(il * &lj)));
+        let v = d.as_float().clone();
+        if let EdgeDelaunay::Interior(Certified::Known { value, .. }) = s {
+            decided += 1;
+            let expected = if v > 0 {
+                Sign::Positive
+            } else {
+                Sign::Negative
+            };
+            assert!(!v.is_zero() && !v.is_nan());
+            assert_eq!(value, expected, "u = {u:?}");
+        }
+    }
+    assert!(decided > 0);
+    // Uniform u: scaling does not change the sign; the exact rung decides on base lengths.
+    let u = vec![800.0; 4];
+    let s = edge_delaunay_sign_scaled(&m, &l, &u, diag, &Ladder::default()).unwrap();
+    let q = penner::predicates::delaunay::QuadEdges::of(&m, diag).unwrap();
+    let base = q.edges.to_array().map(|e| l[e.idx()]);
+    assert_eq!(s.is_delaunay(), Some(oracle_f64(base) != Sign::Negative));
+}
+
+#[test]
+fn lengths_from_1e_minus_150_to_1e150_keep_their_sign() {
+    let mut rng = ChaCha8Rng::seed_from_u64(68);
+    for i in 0..cases(400, 20_000) {
+        let q = adversarial_quad(&mut rng, i as u32 % 2);
+        for k in (-150..=150).step_by(25) {
+            let s = 2f64.powi(k * 10 / 3); // exact power of two: the sign is unchanged
+            let qs = q.map(|x| x * s);
+            let qq = quad(qs);
+            let r = RealQuad(qq.as_refs());
+            let c = decide(&r, &Ladder::default());
+            assert_eq!(c.value(), Some(oracle_f64(q)), "scale 2^{}", k * 10 / 3);
+        }
+        // Decimal scales round the lengths; compare with the oracle of the rounded values.
+        let qs = q.map(|x| x * 1e150);
+        let qq = quad(qs);
+        let r = RealQuad(qq.as_refs());
+        assert_eq!(decide(&r, &Ladder::default()).value(), Some(oracle_f64(qs)));
+    }
+}
+
+#[test]
+fn filter_rescales_extreme_quads() {
+    // All lengths near 1e300: without rescaling the products would overflow.
+    let q = [1.5e300, 1e300, 1e300, 1e300, 1e300];
+    assert_eq!(filter_f64(q), Some(oracle_f64(q)));
+    let q = [1.5e-300, 1e-300, 1e-300, 1e-300, 1e-300];
+    assert_eq!(filter_f64(q), Some(oracle_f64(q)));
+    // Spanning more than 2^200 inside one quad: the filter declines, the ladder decides.
+    let q = [1.0, 1.0, 1e-70, 1.0, 1.0];
+    assert_eq!(filter_f64(q), None);
+    let qq = quad(q);
+    let r = RealQuad(qq.as_refs());
+    assert_eq!(
+        decide(&r, &Ladder::default()),
+        Certified::Known {
+            value: oracle_f64(q),
+            stage: Stage::Interval { bits: 128 }
+        }
+    );
+}
+
+#[test]
+fn bad_lengths_are_typed_errors() {
+    let m = two_triangles();
+    let diag = m.edges().find(|&e| !m.is_boundary_edge(e)).unwrap();
+    for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        let l: Vec<f64> = m
+            .edges()
+            .map(|e| if e == diag { bad } else { 1.0 })
+            .collect();
+        let r = penner::predicates::delaunay::edge_delaunay_sign(&m, &l, diag, &Ladder::default());
+        assert!(
+            matches!(r, Err(penner::predicates::delaunay::DelaunayError::BadLength { edge, .. }) if edge == diag),
+            "{bad}: {r:?}"
+        );
+    }
+    let r = penner::predicates::delaunay::edge_delaunay_sign(&m, &[1.0], diag, &Ladder::default());
+    assert!(r.is_err());
+}
