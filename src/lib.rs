@@ -16,4 +16,6 @@ pub mod mesh;
 pub mod oracle;
 pub mod predicates;
 pub mod scalar;
+#[cfg(feature = "strategies")]
+pub mod strategies;
 pub mod theorems;

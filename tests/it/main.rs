@@ -13,6 +13,8 @@ mod meshgen;
 mod oracle;
 mod predicates_planar;
 mod scalar_dd;
+#[cfg(feature = "strategies")]
+mod strategies;
 #[allow(dead_code)] // helpers used by some areas only
 mod support;
 mod tidy;
