@@ -669,10 +669,19 @@ fn mutate(base: &[u8], edits: &[(usize, u8, u8)]) -> Vec<u8> {
     b
 }
 
+/// Every reader on `bytes`: no panic, and whatever is accepted is a valid surface.
 fn all_readers(bytes: &[u8]) {
-    let _ = json::read_bytes(bytes);
-    let _ = obj::read_bytes(bytes);
-    let _ = off::read_bytes(bytes);
+    for s in [
+        json::read_bytes(bytes),
+        obj::read_bytes(bytes),
+        off::read_bytes(bytes),
+    ]
+    .into_iter()
+    .flatten()
+    {
+        assert!(s.mesh.check_invariants().is_ok());
+        assert!(s.validate().is_ok());
+    }
 }
 
 proptest! {
