@@ -6,7 +6,7 @@ use super::files::{emit, write_fresh_failure};
 use penner::oracle::failure::Failure;
 use penner::oracle::registry::{self, Check, Outcome};
 use penner::oracle::shrink::{shrink, Budget};
-use penner::oracle::{report, Case, Prec};
+use penner::oracle::{report, Prec, Surface};
 use penner::theorems::{Settings, Verdict};
 use std::path::{Path, PathBuf};
 
@@ -105,12 +105,12 @@ pub fn select(only: &[String]) -> Result<Vec<Check>, CliError> {
 /// Shrink `case` while `check` still fails at `prec`.
 fn shrink_failure(
     check: &Check,
-    case: &Case,
+    case: &Surface,
     prec: Prec,
     witnesses: &[penner::theorems::Witness],
     settings: &Settings,
-) -> Case {
-    let fails = |c: &Case| {
+) -> Surface {
+    let fails = |c: &Surface| {
         registry::run_one(check, c, prec, settings)
             .is_some_and(|r| matches!(r.outcome, Outcome::Verdict(Verdict::Fails { .. })))
     };

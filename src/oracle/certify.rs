@@ -1,9 +1,9 @@
 //! Answering claims (protocol v1, [`super::claim`]) with certified verdicts.
 
-use super::case::Case;
 use super::claim::{Assertion, Claim};
-use super::surface::edge_order;
 use crate::geometry::cone_angles::cone_angles;
+use crate::io::json::edge_order;
+use crate::io::Surface;
 use crate::mesh::{Edge, Mesh};
 use crate::predicates::within::{within_all, Batch, Within};
 use crate::scalar::{Certified, Interval, Mpfr, Precision, Real};
@@ -146,8 +146,8 @@ fn summarize(claim: &Claim, b: &Batch, name: &dyn Fn(usize) -> String, what: &st
     }
 }
 
-fn interval_lengths(case: &Case, p: Precision) -> Vec<Interval<Mpfr>> {
-    case.lengths.to_real::<Interval<Mpfr>>(p)
+fn interval_lengths(case: &Surface, p: Precision) -> Vec<Interval<Mpfr>> {
+    case.lengths::<Interval<Mpfr>>(p)
 }
 
 /// Answer `claim`.

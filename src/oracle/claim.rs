@@ -1,8 +1,8 @@
 //! The claim protocol, version 1: what another implementation asserts about a surface,
 //! parsed from JSON (`schema/claim-v1.schema.json`, `docs/oracle.md`).
 
-use super::case::Case;
-use super::surface::{exact_number, parse_surface, SurfaceError};
+use crate::io::json::{exact_number, from_value};
+use crate::io::{ReadError, Surface};
 use rug::Rational;
 use serde_json::Value;
 
@@ -24,7 +24,7 @@ pub enum Assertion {
         /// `true` for Ptolemy flips, `false` for Euclidean flips.
         ptolemy: bool,
         /// The claimed Delaunay surface.
-        result: Case,
+        result: Surface,
     },
     /// `cone_angles`: the cone angle θ_v (sum of corner angles, MATH.md §2) of every
     /// vertex is within `epsilon` of `angles[v]`.
@@ -47,7 +47,7 @@ pub enum Assertion {
     /// `u`, within `epsilon` on the log lengths: |log ℓ̃_ij − log ℓ_ij − (u_i+u_j)/2| ≤ ε.
     ConformalEquivalence {
         /// The second metric (same triangulation).
-        target: Case,
+        target: Surface,
         /// One log scale factor per vertex.
         u: Vec<Rational>,
         /// Absolute tolerance ε ≥ 0 on log lengths.
@@ -74,7 +74,7 @@ pub struct Claim {
     /// Optional identifier, echoed in the answer.
     pub id: Option<String>,
     /// The surface the claim is about.
-    pub surface: Case,
+    pub surface: Surface,
     /// What is claimed.
     pub assertion: Assertion,
     /// Highest MPFR precision the ladder may use (default 1024).
@@ -86,10 +86,18 @@ pub struct Claim {
 #[error("{0}")]
 pub struct ClaimError(pub String);
 
-impl From<SurfaceError> for ClaimError {
-    fn from(e: SurfaceError) -> ClaimError {
-        ClaimError(e.0)
+impl From<ReadError> for ClaimError {
+    fn from(e: ReadError) -> ClaimError {
+        ClaimError(e.to_string())
     }
+}
+
+/// Read the surface at field `key` of the claim.
+fn surface_at(v: &Value, key: &str, what: &str) -> Result<Surface, ClaimError> {
+    let s = v
+        .get(key)
+        .ok_or_else(|| err(format!("{key}: required ({what})")))?;
+    from_value(s).map_err(|e| err(format!("{key}: {e}")))
 }
 
 fn err(msg: impl Into<String>) -> ClaimError {
@@ -168,11 +176,7 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
                 ))
             })? as u32,
     };
-    let surface = parse_surface(
-        v.get("surface").ok_or_else(|| err("surface: required"))?,
-        "surface",
-    )
-    .map_err(|e| err(e.0))?;
+    let surface = surface_at(v, "surface", "the surface the claim is about")?;
     let kind = v
         .get("kind")
         .and_then(Value::as_str)
@@ -185,12 +189,7 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
                 Some("ptolemy") => true,
                 _ => return Err(err("flips: required, \"euclidean\" or \"ptolemy\"")),
             };
-            let result = parse_surface(
-                v.get("result")
-                    .ok_or_else(|| err("result: required (the claimed Delaunay surface)"))?,
-                "result",
-            )
-            .map_err(|e| err(format!("result: {}", e.0)))?;
+            let result = surface_at(v, "result", "the claimed Delaunay surface")?;
             Assertion::DelaunayFlip { ptolemy, result }
         }
         "cone_angles" => Assertion::ConeAngles {
@@ -202,12 +201,7 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
             epsilon: epsilon(v)?,
         },
         "conformal_equivalence" => {
-            let target = parse_surface(
-                v.get("target")
-                    .ok_or_else(|| err("target: required (the second metric)"))?,
-                "target",
-            )
-            .map_err(|e| err(format!("target: {}", e.0)))?;
+            let target = surface_at(v, "target", "the second metric")?;
             if target.mesh != surface.mesh {
                 return Err(err(
                     "target: must have the same triangulation (vertices, faces, gluing) as surface",

@@ -1,43 +1,16 @@
 //! The built-in corpus of the report (`penner` with no arguments): the standard surfaces
-//! with metrics from their embeddings, intrinsic flat metrics, and exact conformal
-//! scalings of some of them.
+//! with metrics from their embeddings, unit lengths, an intrinsic flat metric, and exact
+//! conformal scalings.
 
-use super::case::{Case, Lengths};
-use crate::mesh::builders::{self, CubeDiagonals, Embedded};
+use super::case::MetricOps;
+use crate::io::{Metric, MetricError, Surface};
+use crate::mesh::builders::{self, CubeDiagonals};
 use crate::mesh::Mesh;
 use rug::Rational;
 
-/// Squared edge lengths `|p_tip − p_tail|²` of an embedded surface, exact.
-fn embedded_squared_lengths(e: &Embedded) -> Vec<Rational> {
-    e.mesh
-        .edges()
-        .map(|edge| {
-            let h = edge.halfedge();
-            let (a, b) = (
-                &e.positions[e.mesh.tail(h).idx()],
-                &e.positions[e.mesh.tip(h).idx()],
-            );
-            let mut s = Rational::new();
-            for k in 0..3 {
-                let d = Rational::from(&b[k] - &a[k]);
-                s += Rational::from(&d * &d);
-            }
-            s
-        })
-        .collect()
-}
-
-fn embedded(name: &str, e: &Embedded) -> Case {
-    Case {
-        name: name.to_string(),
-        mesh: e.mesh.clone(),
-        lengths: Lengths::Squared(embedded_squared_lengths(e)),
-    }
-}
-
-/// Corpus scale factors s_v = 1 + ((3v + 1) mod 5 − 2)/20 ∈ {9/10, …, 11/10}: exact, irregular,
-/// with max/min < 1.23, which keeps every triangle of the near-equilateral solids a
-/// triangle.
+/// Corpus scale factors s_v = 1 + ((3v + 1) mod 5 − 2)/20 ∈ {9/10, …, 11/10}: exact,
+/// irregular, with max/min < 1.23, which keeps every triangle of the near-equilateral
+/// solids a triangle (the surfaces are validated exactly anyway).
 fn corpus_factors(n: usize) -> Vec<Rational> {
     (0..n)
         .map(|v| {
@@ -47,72 +20,80 @@ fn corpus_factors(n: usize) -> Vec<Rational> {
         .collect()
 }
 
-fn scaled(name: &str, base: &Case) -> Case {
+fn scaled(name: &str, base: &Surface) -> Result<Surface, MetricError> {
     let s = corpus_factors(base.mesh.n_vertices());
-    Case {
-        name: name.to_string(),
-        mesh: base.mesh.clone(),
-        lengths: base.lengths.scaled(&base.mesh, &s),
-    }
+    Surface::new(
+        name,
+        base.mesh.clone(),
+        base.metric.scaled(&base.mesh, &s),
+        None,
+    )
 }
 
-/// A case with every edge of length 1 (the regular solid's intrinsic metric, exactly).
-fn unit(name: &str, mesh: &Mesh) -> Case {
-    Case {
-        name: name.to_string(),
-        mesh: mesh.clone(),
-        lengths: Lengths::Exact(vec![Rational::from(1); mesh.n_edges()]),
-    }
+/// Every edge of length 1 (the regular solid's intrinsic metric, exactly).
+fn unit(name: &str, mesh: &Mesh) -> Result<Surface, MetricError> {
+    Surface::new(
+        name,
+        mesh.clone(),
+        Metric::Lengths(vec![Rational::from(1); mesh.n_edges()]),
+        None,
+    )
 }
 
-/// The corpus, in report order. Every surface is small, so the whole report runs in
-/// seconds.
-pub fn standard() -> Vec<Case> {
-    let mut out = Vec::new();
-    let tet = embedded("tetrahedron", &builders::tetrahedron());
-    let oct = embedded("octahedron", &builders::octahedron());
-    let ico = embedded("icosahedron", &builders::icosahedron());
-    let unit_tet = unit("regular tetrahedron (unit lengths)", &tet.mesh);
-    let unit_ico = unit("regular icosahedron (unit lengths)", &ico.mesh);
-    out.push(scaled("tetrahedron, conformally scaled", &tet));
-    out.push(scaled("octahedron, conformally scaled", &oct));
-    out.push(scaled("icosahedron, conformally scaled", &ico));
-    out.push(scaled("regular icosahedron, conformally scaled", &unit_ico));
-    out.splice(0..0, [tet, oct, ico, unit_tet, unit_ico]);
-    out.push(embedded(
-        "cube, diagonals one way",
-        &builders::cube(CubeDiagonals::Even),
-    ));
-    out.push(embedded(
-        "triakis tetrahedron",
-        &builders::triakis_tetrahedron(),
-    ));
-    out.push(embedded(
-        "triakis octahedron",
-        &builders::triakis_octahedron(),
-    ));
-    // Two-triangle sphere with sides 3, 4, 5 and one-vertex torus with sides 4, 5, 6.
-    let sphere2 = builders::two_triangle_sphere();
-    out.push(Case {
-        name: "two-triangle sphere (3, 4, 5)".to_string(),
-        lengths: Lengths::Exact([3, 4, 5].map(Rational::from).to_vec()),
-        mesh: sphere2,
-    });
-    let torus1 = builders::one_vertex_torus();
-    out.push(Case {
-        name: "one-vertex torus (4, 5, 6)".to_string(),
-        lengths: Lengths::Exact([4, 5, 6].map(Rational::from).to_vec()),
-        mesh: torus1,
-    });
+fn lengths(name: &str, mesh: Mesh, l: &[i64]) -> Result<Surface, MetricError> {
+    Surface::new(
+        name,
+        mesh,
+        Metric::Lengths(l.iter().map(|&x| Rational::from(x)).collect()),
+        None,
+    )
+}
+
+/// Every corpus surface, each validated exactly ([`Surface::new`]); an invalid one is a
+/// defect and is returned as the error.
+pub fn try_standard() -> Result<Vec<Surface>, MetricError> {
+    let tet = Surface::from_embedded("tetrahedron", builders::tetrahedron())?;
+    let oct = Surface::from_embedded("octahedron", builders::octahedron())?;
+    let ico = Surface::from_embedded("icosahedron", builders::icosahedron())?;
+    let unit_ico = unit("regular icosahedron (unit lengths)", &ico.mesh)?;
+    Ok(vec![
+        unit("regular tetrahedron (unit lengths)", &tet.mesh)?,
+        scaled("tetrahedron, conformally scaled", &tet)?,
+        scaled("octahedron, conformally scaled", &oct)?,
+        scaled("icosahedron, conformally scaled", &ico)?,
+        scaled("regular icosahedron, conformally scaled", &unit_ico)?,
+        tet,
+        oct,
+        ico,
+        unit_ico,
+        Surface::from_embedded(
+            "cube, diagonals one way",
+            builders::cube(CubeDiagonals::Even),
+        )?,
+        Surface::from_embedded("triakis tetrahedron", builders::triakis_tetrahedron())?,
+        Surface::from_embedded("triakis octahedron", builders::triakis_octahedron())?,
+        lengths(
+            "two-triangle sphere (3, 4, 5)",
+            builders::two_triangle_sphere(),
+            &[3, 4, 5],
+        )?,
+        lengths(
+            "one-vertex torus (4, 5, 6)",
+            builders::one_vertex_torus(),
+            &[4, 5, 6],
+        )?,
+    ])
+}
+
+/// The corpus, in report order (see [`try_standard`]); small surfaces, so the whole report
+/// runs in seconds. Intrinsic and boundary surfaces follow the solids.
+pub fn standard() -> Vec<Surface> {
+    let mut out = try_standard().unwrap_or_default();
     if let Ok(t) = builders::flat_torus(4, 3) {
-        out.push(Case {
-            name: "flat torus 4×3".to_string(),
-            mesh: t.mesh,
-            lengths: Lengths::Squared(t.squared_lengths),
-        });
+        out.extend(Surface::from_intrinsic("flat torus 4×3", t));
     }
     if let Ok(d) = builders::grid_disk(3, 3) {
-        out.push(embedded("grid disk 3×3", &d));
+        out.extend(Surface::from_embedded("grid disk 3×3", d));
     }
     out
 }

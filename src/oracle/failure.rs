@@ -10,14 +10,11 @@
 //!   "surface": { "vertices": 4, "faces": [[0,1,2], …], "gluing": [[[0,0],[1,2]], …],
 //!                "squared_lengths": ["2", "9/4", …] } }
 //! ```
-//! `gluing` (optional: without it, side `a→b` is glued to the unique side `b→a`) lists the interior edges as pairs of face sides (side `s` of a face runs from
-//! corner `s` to corner `s+1`); sides not listed are boundary. Exactly one of `lengths`
-//! and `squared_lengths` is present, one exact rational string per edge, edges in order of
-//! first appearance when reading face 0 sides 0, 1, 2, then face 1, … ([`edge_order`]).
+//! `surface` is a surface in the JSON surface format (`docs/surface-format.md`), so it can
+//! be cut out and given to `penner check` as it is.
 
-use super::case::Case;
 use super::precision::{parse_list, Prec};
-use super::surface::{parse_surface, surface_json};
+use crate::io::{json as surface_json, Surface};
 use crate::theorems::Witness;
 use serde_json::{json, Value};
 
@@ -47,7 +44,7 @@ pub struct Failure {
     /// Every witness of the failure on the original surface.
     pub witnesses: Vec<Witness>,
     /// The shrunk surface that still fails.
-    pub surface: Case,
+    pub surface: Surface,
 }
 
 impl Failure {
@@ -60,7 +57,7 @@ impl Failure {
             "source": self.source,
             "source_faces": self.source_faces,
             "witnesses": self.witnesses,
-            "surface": surface_json(&self.surface),
+            "surface": surface_json::to_value(&self.surface),
         })
     }
 
@@ -94,8 +91,8 @@ impl Failure {
         };
         let witnesses: Vec<Witness> = serde_json::from_value(v["witnesses"].clone())
             .map_err(|e| bad(format!("{name}: witnesses: {e}")))?;
-        let surface =
-            parse_surface(&v["surface"], name).map_err(|e| bad(format!("{name}: {e}")))?;
+        let surface = surface_json::from_value(&v["surface"])
+            .map_err(|e| bad(format!("{name}: surface: {e}")))?;
         Ok(Failure {
             check,
             precision,

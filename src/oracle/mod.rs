@@ -14,8 +14,8 @@ pub mod precision;
 pub mod registry;
 pub mod report;
 pub mod shrink;
-pub mod surface;
 
-pub use case::{Case, Lengths};
+pub use crate::io::{Metric, Surface};
+pub use case::MetricOps;
 pub use precision::Prec;
 pub use registry::{catalogue, Check, Outcome, Row};

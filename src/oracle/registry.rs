@@ -1,11 +1,11 @@
-//! The check registry: every catalogue check the binary can run on a [`Case`], and the
+//! The check registry: every catalogue check the binary can run on a [`Surface`], and the
 //! runner that applies them at a list of precisions.
 //!
 //! A check that is not implemented is absent from [`catalogue`], never reported with an
 //! invented verdict.
 
-use super::case::Case;
 use super::precision::Prec;
+use crate::io::Surface;
 use crate::theorems::{Settings, Verdict};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::time::Instant;
@@ -19,7 +19,7 @@ pub struct Check {
     pub title: &'static str,
     /// Runs the check on a case at one precision; `None` when the check has no form at
     /// that precision (e.g. an exact-only check at `f64`) — the row is then left out.
-    pub run: fn(&Case, Prec, &Settings) -> Option<Verdict>,
+    pub run: fn(&Surface, Prec, &Settings) -> Option<Verdict>,
 }
 
 /// Run `$body` with `$l` bound to the case's lengths in the backend of `$prec`
@@ -31,17 +31,17 @@ macro_rules! at_precision {
         match $prec {
             $crate::oracle::precision::Prec::F64 => {
                 type $t = f64;
-                let $l: Vec<$t> = $case.lengths.to_real::<$t>(());
+                let $l: Vec<$t> = $case.lengths::<$t>(());
                 $body
             }
             $crate::oracle::precision::Prec::Dd => {
                 type $t = $crate::scalar::Dd;
-                let $l: Vec<$t> = $case.lengths.to_real::<$t>(());
+                let $l: Vec<$t> = $case.lengths::<$t>(());
                 $body
             }
             $crate::oracle::precision::Prec::Mpfr(p) => {
                 type $t = $crate::scalar::Mpfr;
-                let $l: Vec<$t> = $case.lengths.to_real::<$t>(p);
+                let $l: Vec<$t> = $case.lengths::<$t>(p);
                 $body
             }
             $crate::oracle::precision::Prec::Exact => None,
@@ -122,7 +122,7 @@ pub struct Row {
 /// Run one check on one case at one precision, timing it; `None` when the check has no
 /// form at that precision. A panic inside the check is caught and reported as
 /// [`Outcome::Crashed`] so one defect cannot hide other rows.
-pub fn run_one(check: &Check, case: &Case, prec: Prec, settings: &Settings) -> Option<Row> {
+pub fn run_one(check: &Check, case: &Surface, prec: Prec, settings: &Settings) -> Option<Row> {
     let start = Instant::now();
     let result = catch_unwind(AssertUnwindSafe(|| (check.run)(case, prec, settings)));
     let seconds = start.elapsed().as_secs_f64();
@@ -142,7 +142,7 @@ pub fn run_one(check: &Check, case: &Case, prec: Prec, settings: &Settings) -> O
 }
 
 /// Run every check in `checks` on `case` at every precision in `precs`.
-pub fn run_case(case: &Case, checks: &[Check], precs: &[Prec], settings: &Settings) -> Vec<Row> {
+pub fn run_case(case: &Surface, checks: &[Check], precs: &[Prec], settings: &Settings) -> Vec<Row> {
     let mut rows = Vec::with_capacity(checks.len() * precs.len());
     for check in checks {
         for &p in precs {

@@ -1,7 +1,8 @@
 //! Shrinking a failing case to a small reproducing surface: extract the neighbourhood of
 //! the failing elements, then remove faces one at a time while the check still fails.
 
-use super::case::Case;
+use super::case::MetricOps;
+use crate::io::Surface;
 use crate::mesh::{Face, Mesh};
 use crate::theorems::Witness;
 use std::collections::{BTreeSet, HashMap};
@@ -11,7 +12,7 @@ use std::time::{Duration, Instant};
 /// densely, sides glued where both faces are kept, other sides on the boundary, lengths
 /// carried over edge by edge. `None` when the faces do not form a valid surface (e.g. a
 /// vertex would become non-manifold) or `keep` is empty.
-pub fn sub_case(case: &Case, keep: &[Face]) -> Option<Case> {
+pub fn sub_case(case: &Surface, keep: &[Face]) -> Option<Surface> {
     let mesh = &case.mesh;
     let faces = mesh.face_list();
     let gluing = mesh.gluing_list();
@@ -47,10 +48,19 @@ pub fn sub_case(case: &Case, keep: &[Face]) -> Option<Case> {
     if edge_map.contains(&usize::MAX) {
         return None;
     }
-    Some(Case {
+    let mut old_vertex = vec![0usize; vmap.len()];
+    for (&old, &new) in &vmap {
+        old_vertex[new as usize] = old as usize;
+    }
+    let positions = case
+        .positions
+        .as_ref()
+        .map(|p| old_vertex.iter().map(|&v| p[v].clone()).collect());
+    Some(Surface {
         name: case.name.clone(),
-        lengths: case.lengths.reindex(&edge_map),
+        metric: case.metric.reindex(&edge_map),
         mesh: sub,
+        positions,
     })
 }
 
@@ -121,11 +131,11 @@ impl Default for Budget {
 /// the witnesses' faces, k = 0…3) that still fails, then greedy removal of single faces.
 /// Returns the smallest failing case found (at worst `case` itself).
 pub fn shrink(
-    case: &Case,
+    case: &Surface,
     witnesses: &[Witness],
-    fails: &dyn Fn(&Case) -> bool,
+    fails: &dyn Fn(&Surface) -> bool,
     budget: Budget,
-) -> Case {
+) -> Surface {
     let start = Instant::now();
     let mut attempts = 0usize;
     let within = |attempts: &mut usize| {

@@ -138,8 +138,19 @@ fn missing_file_and_directory_are_refused() {
     let missing = d.join("nope.json");
     let m = missing.display().to_string();
     assert_refused(&penner(&["check", &m]), 3, &["nope.json"]);
-    let dir = d.display().to_string();
-    assert_refused(&penner(&["check", &dir]), 3, &["directory"]);
+    let dir = d.join("surface.json");
+    std::fs::create_dir(&dir).unwrap();
+    assert_refused(
+        &penner(&["check", &dir.display().to_string()]),
+        3,
+        &["directory"],
+    );
+    let unknown = write(&d, "surface.ply", b"ply");
+    assert_refused(
+        &penner(&["check", &unknown.display().to_string()]),
+        3,
+        &["surface.ply", "format"],
+    );
     assert_refused(&penner(&["replay", &m]), 3, &["nope.json"]);
 }
 
@@ -176,13 +187,13 @@ fn hostile_json_is_refused_cleanly() {
         ("truncated.json", TETRAHEDRON.as_bytes()[..40].to_vec(), ":"),
         ("garbage.json", (0..4096u32).map(|i| (i.wrapping_mul(2_654_435_761) >> 24) as u8).collect(), "garbage.json"),
         ("deep.json", deep.into_bytes(), "deep.json"),
-        ("not-object.json", b"[1, 2, 3]".to_vec(), "vertices"),
+        ("not-object.json", b"[1, 2, 3]".to_vec(), "object"),
         ("neg-vertex.json", br#"{"vertices": 4, "faces": [[0,1,-2]], "lengths": []}"#.to_vec(), "faces[0][2]"),
         ("huge-count.json", br#"{"vertices": 1e300, "faces": [[0,1,2]], "lengths": ["1","1","1"]}"#.to_vec(), "vertices"),
-        ("range.json", br#"{"vertices": 3, "faces": [[0,1,7]], "lengths": ["1","1","1"]}"#.to_vec(), "vertex 7"),
-        ("isolated.json", br#"{"vertices": 4294967295, "faces": [[0,1,2]], "lengths": ["1","1","1"]}"#.to_vec(), "vertices"),
-        ("zero-length.json", br#"{"vertices": 4, "faces": [[0,1,2],[0,2,3],[0,3,1],[1,3,2]], "lengths": ["1","0","1","1","1","1"]}"#.to_vec(), "lengths[1]"),
-        ("neg-length.json", br#"{"vertices": 4, "faces": [[0,1,2],[0,2,3],[0,3,1],[1,3,2]], "lengths": ["1","1","-3/2","1","1","1"]}"#.to_vec(), "lengths[2]"),
+        ("range.json", br#"{"vertices": 3, "faces": [[0,1,7]], "lengths": ["1","1","1"]}"#.to_vec(), "faces[0][2]"),
+        ("isolated.json", br#"{"vertices": 4294967295, "faces": [[0,1,2]], "lengths": ["1","1","1"]}"#.to_vec(), "no face"),
+        ("zero-length.json", br#"{"vertices": 4, "faces": [[0,1,2],[0,2,3],[0,3,1],[1,3,2]], "lengths": ["1","0","1","1","1","1"]}"#.to_vec(), "not positive"),
+        ("neg-length.json", br#"{"vertices": 4, "faces": [[0,1,2],[0,2,3],[0,3,1],[1,3,2]], "lengths": ["1","1","-3/2","1","1","1"]}"#.to_vec(), "not positive"),
         ("nan-length.json", br#"{"vertices": 4, "faces": [[0,1,2],[0,2,3],[0,3,1],[1,3,2]], "lengths": ["1","1","1","NaN","1","1"]}"#.to_vec(), "lengths[3]"),
         ("count.json", br#"{"vertices": 4, "faces": [[0,1,2],[0,2,3],[0,3,1],[1,3,2]], "lengths": ["1","1"]}"#.to_vec(), "edges"),
         ("nonmanifold.json", br#"{"vertices": 5, "faces": [[0,1,2],[0,3,4]], "lengths": ["1","1","1","1","1","1"]}"#.to_vec(), "non-manifold"),
@@ -347,4 +358,74 @@ fn certify_refuses_hostile_claims() {
     }
     let out = penner(&["certify", &d.join("missing.json").display().to_string()]);
     assert_refused(&out, 3, &["missing.json"]);
+}
+
+const TET_OBJ: &str =
+    "# tetrahedron\nv 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n";
+const TET_OFF: &str =
+    "OFF\n4 4 6\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n3 0 1 2\n3 0 2 3\n3 0 3 1\n3 1 3 2\n";
+
+#[test]
+fn check_reads_obj_and_off_exactly() {
+    let d = scratch("obj-off");
+    for (name, body) in [("tet.obj", TET_OBJ), ("tet.off", TET_OFF)] {
+        let p = write(&d, name, body.as_bytes());
+        let out = penner(&["check", &p.display().to_string(), "--precision", "f64"]);
+        let s = text(&out.stdout);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{name}: {s}\n{}",
+            text(&out.stderr)
+        );
+        assert!(s.contains("4 vertices, 6 edges, 4 faces"), "{name}: {s}");
+    }
+}
+
+#[test]
+fn hostile_obj_and_off_are_refused_cleanly() {
+    let d = scratch("hostile-obj-off");
+    let cases: Vec<(&str, Vec<u8>, &str)> = vec![
+        (
+            "truncated.off",
+            TET_OFF.as_bytes()[..40].to_vec(),
+            "truncated.off",
+        ),
+        (
+            "nan.obj",
+            TET_OBJ.replace("v 1 1 1", "v nan 1 1").into_bytes(),
+            "line 2",
+        ),
+        (
+            "index.obj",
+            TET_OBJ.replace("f 2 4 3", "f 2 4 99").into_bytes(),
+            "line 9",
+        ),
+        (
+            "garbage.off",
+            (0..2048u32)
+                .map(|i| (i.wrapping_mul(2_654_435_761) >> 24) as u8)
+                .collect(),
+            "garbage.off",
+        ),
+        (
+            "huge-header.off",
+            b"OFF\n4000000000 4000000000 0\n".to_vec(),
+            "huge-header.off",
+        ),
+        (
+            "flat.obj",
+            b"v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n".to_vec(),
+            "degenerate",
+        ),
+        ("empty.obj", Vec::new(), "empty.obj"),
+    ];
+    for (name, bytes, mention) in cases {
+        let p = write(&d, name, &bytes);
+        assert_refused(
+            &penner(&["check", &p.display().to_string()]),
+            3,
+            &[name, mention],
+        );
+    }
 }

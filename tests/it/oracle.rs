@@ -2,28 +2,29 @@
 //! never panic on mutated input.
 
 use crate::support::cases;
+use penner::io::json::{from_value, to_value};
 use penner::mesh::Mesh;
 use penner::oracle::claim;
 use penner::oracle::failure::Failure;
 use penner::oracle::shrink::{shrink, sub_case, Budget};
-use penner::oracle::surface::{parse_surface, surface_json};
-use penner::oracle::{Case, Lengths, Prec};
+use penner::oracle::{Metric, Prec, Surface};
 use penner::theorems::Witness;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rug::Rational;
 
-fn one_vertex_torus() -> Case {
+fn one_vertex_torus() -> Surface {
     let mesh = Mesh::from_gluing(
         1,
         &[[0, 0, 0], [0, 0, 0]],
         &[((0, 0), (1, 0)), ((0, 1), (1, 1)), ((0, 2), (1, 2))],
     )
     .unwrap();
-    Case {
+    Surface {
         name: "torus".into(),
         mesh,
-        lengths: Lengths::Exact(vec![
+        positions: None,
+        metric: Metric::Lengths(vec![
             Rational::from(4),
             Rational::from((5, 2)),
             Rational::from(6),
@@ -32,7 +33,7 @@ fn one_vertex_torus() -> Case {
 }
 
 /// A strip of `n` triangles (a disk), with lengths 1 + k/7 on edge k.
-fn strip(n: u32) -> Case {
+fn strip(n: u32) -> Surface {
     let faces: Vec<[u32; 3]> = (0..n)
         .map(|i| {
             if i % 2 == 0 {
@@ -46,20 +47,21 @@ fn strip(n: u32) -> Case {
     let lengths = (0..mesh.n_edges())
         .map(|k| Rational::from((7 + k as i64, 7)))
         .collect();
-    Case {
+    Surface {
         name: "strip".into(),
         mesh,
-        lengths: Lengths::Squared(lengths),
+        positions: None,
+        metric: Metric::SquaredLengths(lengths),
     }
 }
 
 #[test]
 fn surface_json_round_trips_delta_complexes_exactly() {
     for case in [one_vertex_torus(), strip(9)] {
-        let v = surface_json(&case);
-        let back = parse_surface(&v, "x").unwrap();
+        let v = to_value(&case);
+        let back = from_value(&v).unwrap();
         assert_eq!(back.mesh, case.mesh);
-        assert_eq!(back.lengths, case.lengths);
+        assert_eq!(back.metric, case.metric);
     }
 }
 
@@ -68,10 +70,10 @@ fn surface_json_edge_order_is_first_appearance() {
     // Face [0,1,2] then [0,2,3]: edges 01, 12, 20, then 23, 30 (02 already seen).
     let v = serde_json::json!({
         "vertices": 4, "faces": [[0,1,2],[0,2,3]],
-        "lengths": ["1", "2", "3", "4", "5"]
+        "lengths": ["2", "3", "4", "5", "6"]
     });
-    let c = parse_surface(&v, "x").unwrap();
-    let Lengths::Exact(l) = &c.lengths else {
+    let c = from_value(&v).unwrap();
+    let Metric::Lengths(l) = &c.metric else {
         panic!()
     };
     for e in c.mesh.edges() {
@@ -79,11 +81,11 @@ fn surface_json_edge_order_is_first_appearance() {
         let mut ends = [c.mesh.tail(h).0, c.mesh.tip(h).0];
         ends.sort_unstable();
         let expected = match ends {
-            [0, 1] => 1,
-            [1, 2] => 2,
-            [0, 2] => 3,
-            [2, 3] => 4,
-            [0, 3] => 5,
+            [0, 1] => 2,
+            [1, 2] => 3,
+            [0, 2] => 4,
+            [2, 3] => 5,
+            [0, 3] => 6,
             _ => unreachable!(),
         };
         assert_eq!(l[e.idx()], expected, "edge {ends:?}");
@@ -110,7 +112,7 @@ fn failure_file_round_trips() {
     assert_eq!(back.precision, f.precision);
     assert_eq!(back.witnesses, f.witnesses);
     assert_eq!(back.surface.mesh, f.surface.mesh);
-    assert_eq!(back.surface.lengths, f.surface.lengths);
+    assert_eq!(back.surface.metric, f.surface.metric);
     // Negative control: a wrong version is refused.
     let wrong = text.replace("\"penner_failure\":1", "\"penner_failure\":2");
     assert!(Failure::parse(&wrong, "f.json").is_err());
@@ -123,7 +125,7 @@ fn sub_case_keeps_lengths_edge_by_edge() {
     let sub = sub_case(&c, &keep).unwrap();
     assert_eq!(sub.mesh.n_faces(), 3);
     // Every kept face has the same three lengths in the same side order.
-    let (Lengths::Squared(a), Lengths::Squared(b)) = (&c.lengths, &sub.lengths) else {
+    let (Metric::SquaredLengths(a), Metric::SquaredLengths(b)) = (&c.metric, &sub.metric) else {
         panic!()
     };
     for (k, f) in keep.iter().enumerate() {
@@ -141,9 +143,9 @@ fn sub_case_keeps_lengths_edge_by_edge() {
 fn shrink_finds_a_small_failing_surface() {
     let c = strip(12);
     let target = Rational::from((10, 7));
-    let fails = |x: &Case| match &x.lengths {
-        Lengths::Squared(v) => v.contains(&target),
-        Lengths::Exact(_) => false,
+    let fails = |x: &Surface| match &x.metric {
+        Metric::SquaredLengths(v) => v.contains(&target),
+        Metric::Lengths(_) => false,
     };
     assert!(fails(&c));
     let small = shrink(&c, &[], &fails, Budget::default());
@@ -155,7 +157,7 @@ fn shrink_finds_a_small_failing_surface() {
     );
     // Negative control: a property that needs every face cannot be shrunk.
     let n = c.mesh.n_faces();
-    let needs_all = |x: &Case| x.mesh.n_faces() == n;
+    let needs_all = |x: &Surface| x.mesh.n_faces() == n;
     assert_eq!(
         shrink(&c, &[], &needs_all, Budget::default())
             .mesh
@@ -168,11 +170,11 @@ fn shrink_finds_a_small_failing_surface() {
 #[test]
 fn parsers_never_panic_on_mutated_input() {
     let seeds = [
-        surface_json(&one_vertex_torus()).to_string(),
-        surface_json(&strip(5)).to_string(),
+        to_value(&one_vertex_torus()).to_string(),
+        to_value(&strip(5)).to_string(),
         serde_json::json!({
             "penner_claim": 1, "kind": "cone_angles", "epsilon": "1e-9",
-            "surface": surface_json(&strip(3)), "angles": ["1", "2/3", 0.5, "1e-3", "7", "3"]
+            "surface": to_value(&strip(3)), "angles": ["1", "2/3", 0.5, "1e-3", "7", "3"]
         })
         .to_string(),
     ];
@@ -193,7 +195,7 @@ fn parsers_never_panic_on_mutated_input() {
         let _ = claim::parse(&text, "m.json");
         let _ = Failure::parse(&text, "m.json");
         if let Ok(v) = serde_json::from_str::<serde_json::Value>(&text) {
-            let _ = parse_surface(&v, "m.json");
+            let _ = from_value(&v);
         }
     }
 }
