@@ -206,3 +206,78 @@ fn random_integer(rng: &mut ChaCha8Rng) -> Integer {
     let digits: Vec<u64> = (0..rng.gen_range(1..8)).map(|_| rng.gen()).collect();
     Integer::from_digits(&digits, rug::integer::Order::Lsf) >> rng.gen_range(0..64u32)
 }
+
+/// `scalar::parse_rational` against values built independently in malachite (decimal and
+/// scientific forms) and num-rational's own fraction parser.
+#[test]
+fn parse_rational_agrees_with_malachite_and_num_rational() {
+    use malachite::base::num::arithmetic::traits::Pow;
+    use malachite::Integer as MInteger;
+    use penner::scalar::parse_rational;
+    use std::str::FromStr;
+    let mut rng = ChaCha8Rng::seed_from_u64(10);
+    let digits = |rng: &mut ChaCha8Rng, lo: usize, hi: usize| -> String {
+        let n = rng.gen_range(lo..hi);
+        (0..n)
+            .map(|_| char::from(b'0' + rng.gen_range(0..10u8)))
+            .collect()
+    };
+    for _ in 0..cases(2000, 100_000) {
+        let neg = rng.gen_bool(0.5);
+        let int = digits(&mut rng, 1, 25);
+        let frac = digits(&mut rng, 0, 25);
+        let exp: i64 = rng.gen_range(-300..300);
+        let sign = if neg { "-" } else { "" };
+        let (text, want) = match rng.gen_range(0..3) {
+            0 | 1 => {
+                let text = if rng.gen_bool(0.5) {
+                    format!("{sign}{int}.{frac}e{exp}")
+                } else {
+                    format!("{sign}{int}.{frac}")
+                };
+                let e = if text.contains('e') { exp } else { 0 } - frac.len() as i64;
+                let m = MInteger::from_str(&format!("{int}{frac}")).expect("digits");
+                let ten = MRational::from(10u32);
+                let scale = if e >= 0 {
+                    (&ten).pow(e as u64)
+                } else {
+                    MRational::from(1u32) / (&ten).pow((-e) as u64)
+                };
+                let v = MRational::from(m) * scale;
+                (text, if neg { -v } else { v }.to_rug())
+            }
+            _ => {
+                let den = format!("{}{}", rng.gen_range(1..10u32), digits(&mut rng, 0, 20));
+                let text = format!("{sign}{int}/{den}");
+                (
+                    text.clone(),
+                    BigRational::from_str(&text)
+                        .expect("num parses p/q")
+                        .to_rug(),
+                )
+            }
+        };
+        assert_eq!(
+            parse_rational(&text).expect("valid literal"),
+            want,
+            "{text}"
+        );
+    }
+    // The shortest round-trip decimal of an f64 parses to a rational that rounds back to it.
+    for _ in 0..cases(2000, 100_000) {
+        let x = random_finite_f64(&mut rng);
+        for text in [format!("{x:e}"), format!("{x}")] {
+            let q = parse_rational(&text).expect("valid literal");
+            // x is a nearest binary64 to q: no neighbour is strictly closer.
+            let dist = |y: f64| (&q - Rational::from_f64(y).expect("finite")).abs();
+            let d = dist(x);
+            for y in [x.next_up(), x.next_down()] {
+                if y.is_finite() {
+                    assert!(d <= dist(y), "{text} is closer to {y:e} than to {x:e}");
+                }
+            }
+        }
+    }
+    // Negative control: a changed digit changes the value.
+    assert_ne!(parse_rational("1.25").ok(), parse_rational("1.26").ok());
+}

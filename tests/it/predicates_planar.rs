@@ -456,3 +456,76 @@ fn b23_b24_b25_b26_filter_constants_cover_the_error_lemma() {
         );
     }
 }
+
+/// Timing of the certified predicates (run with `cargo test --test it predicate_timing --
+/// --ignored --nocapture`): ns per call on random inputs and on adversarial inputs,
+/// construction (rational → f64 conversion) included.
+#[test]
+#[ignore = "timing, not a check"]
+fn predicate_timing() {
+    let mut rng = ChaCha8Rng::seed_from_u64(106);
+    let n = 20_000;
+    let random: Vec<[Point; 4]> = (0..n)
+        .map(|_| std::array::from_fn(|_| pt(&mut rng, 0)))
+        .collect();
+    let adv3: Vec<[Point; 3]> = (0..n).map(|_| adversarial_triple(&mut rng)).collect();
+    let adv4: Vec<[Point; 4]> = (0..n).map(|_| adversarial_quad(&mut rng)).collect();
+    let l = Ladder::default();
+    let time = |name: &str, f: &dyn Fn() -> usize| {
+        let t = std::time::Instant::now();
+        let k = f();
+        eprintln!(
+            "{name}: {:.0} ns/call ({k} positive)",
+            t.elapsed().as_nanos() as f64 / f64::from(n)
+        );
+    };
+    let pos = |c: Certified<Sign>| usize::from(c.value() == Some(Sign::Positive));
+    time("orient2d random", &|| {
+        random
+            .iter()
+            .map(|p| pos(decide(&Orient2d::new(&p[0], &p[1], &p[2]), &l)))
+            .sum()
+    });
+    time("orient2d adversarial", &|| {
+        adv3.iter()
+            .map(|p| pos(decide(&Orient2d::new(&p[0], &p[1], &p[2]), &l)))
+            .sum()
+    });
+    time("orient2d exact only", &|| {
+        random
+            .iter()
+            .map(|p| {
+                usize::from(
+                    Orient2d::new(&p[0], &p[1], &p[2])
+                        .exact_value()
+                        .cmp0()
+                        .is_gt(),
+                )
+            })
+            .sum()
+    });
+    time("incircle random", &|| {
+        random
+            .iter()
+            .map(|p| pos(decide(&InCircle::new(&p[0], &p[1], &p[2], &p[3]), &l)))
+            .sum()
+    });
+    time("incircle adversarial", &|| {
+        adv4.iter()
+            .map(|p| pos(decide(&InCircle::new(&p[0], &p[1], &p[2], &p[3]), &l)))
+            .sum()
+    });
+    time("incircle exact only", &|| {
+        random
+            .iter()
+            .map(|p| {
+                usize::from(
+                    InCircle::new(&p[0], &p[1], &p[2], &p[3])
+                        .exact_value()
+                        .cmp0()
+                        .is_gt(),
+                )
+            })
+            .sum()
+    });
+}
