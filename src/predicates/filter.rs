@@ -34,6 +34,14 @@ pub(crate) fn input(q: &Rational) -> Option<f64> {
     if q.cmp0().is_eq() {
         return Some(0.0);
     }
+    // Fast path: a dyadic rational with at most 53 significant bits is exactly an f64
+    // (truncating conversion is then exact); this covers every input that came from an f64.
+    if q.denom().is_power_of_two() && q.numer().significant_bits() <= 53 {
+        let x = q.to_f64();
+        if x.is_normal() {
+            return Some(x);
+        }
+    }
     // Round to nearest at 53 bits with MPFR's exponent range, then read it as an f64 (exact
     // whenever the result is a normal binary64).
     let x = Float::with_val(53, q).to_f64();
@@ -51,8 +59,12 @@ pub(crate) fn inputs<const N: usize>(qs: &[Rational; N]) -> Option<[f64; N]> {
 
 /// Whether `x` is 0 or `2^lo_exp ≤ |x| ≤ 2^hi_exp` (magnitude guards of the filters).
 pub(crate) fn in_range(x: f64, lo_exp: i32, hi_exp: i32) -> bool {
-    let a = x.abs();
-    a == 0.0 || (a >= f64::from(lo_exp).exp2() && a <= f64::from(hi_exp).exp2())
+    if x == 0.0 {
+        return true;
+    }
+    // The unbiased exponent of a normal f64: 2^e ≤ |x| < 2^(e+1).
+    let e = ((x.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+    x.is_normal() && e >= lo_exp && e < hi_exp
 }
 
 /// The sign of `value` when `|value| > bound`, the filter's decision; `None` otherwise
