@@ -52,6 +52,28 @@ pub fn read_text(path: &Path) -> Result<String, CliError> {
     })
 }
 
+/// Create `path` and write `contents`, refusing to overwrite an existing file.
+pub fn write_new(path: &Path, contents: &str) -> Result<(), CliError> {
+    let mut f = OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(path)
+        .map_err(|e| CliError::Write {
+            path: path.to_path_buf(),
+            reason: if e.kind() == ErrorKind::AlreadyExists {
+                "the file exists (penner never overwrites a file; choose another name)".to_string()
+            } else {
+                e.to_string()
+            },
+        })?;
+    f.write_all(contents.as_bytes())
+        .and_then(|()| f.flush())
+        .map_err(|e| CliError::Write {
+            path: path.to_path_buf(),
+            reason: e.to_string(),
+        })
+}
+
 /// Write `contents` to a fresh file `<dir>/<stem>.penner-failure-N.json`, the smallest
 /// N ≥ 1 whose file does not exist (checked atomically by `create_new`).
 pub fn write_fresh_failure(input: &Path, contents: &str) -> Result<PathBuf, CliError> {

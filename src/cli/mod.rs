@@ -3,6 +3,7 @@
 mod args;
 mod certify;
 mod check;
+mod delaunay;
 mod error;
 mod files;
 mod input;
@@ -47,9 +48,17 @@ pub fn main() -> ExitCode {
         }),
         Some(Command::Replay { file, json }) => replay::run(&file, json),
         Some(Command::Certify { claim }) => certify::run(&claim),
-        Some(Command::Delaunay { .. }) => Err(CliError::Input(
-            "`delaunay` needs the flip algorithms, which this build lacks".to_string(),
-        )),
+        Some(Command::Delaunay {
+            surface,
+            flips,
+            precision,
+            output,
+        }) => delaunay::run(&delaunay::Options {
+            path: &surface,
+            flips,
+            precision: &precision,
+            output: output.as_deref(),
+        }),
     };
     match result {
         Ok(c) => ExitCode::from(c),

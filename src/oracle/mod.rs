@@ -12,6 +12,8 @@ pub mod failure;
 pub mod precision;
 #[macro_use]
 pub mod registry;
+// After `registry`, whose `at_precision!` macro it uses.
+pub mod checks;
 pub mod report;
 pub mod shrink;
 

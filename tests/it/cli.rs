@@ -429,3 +429,105 @@ fn hostile_obj_and_off_are_refused_cleanly() {
         );
     }
 }
+
+/// The two-triangle sphere with sides 3, 4, 5: both faces are one right triangle, so the
+/// hypotenuse is a Delaunay tie (D = 0). The T22 check fails on it (a tie edge whose flip is
+/// not a tie in this Δ-complex), which exercises the failure-file path end to end.
+const RIGHT_SPHERE: &str =
+    r#"{"vertices": 3, "faces": [[0,1,2],[0,2,1]], "lengths": ["3","4","5"]}"#;
+
+#[test]
+fn failing_check_writes_fresh_failure_files_and_replay_reproduces() {
+    let d = scratch("failure-files");
+    let p = write(&d, "right.json", RIGHT_SPHERE.as_bytes());
+    let ps = p.display().to_string();
+    let out = penner(&["check", &ps, "--only", "T22", "--precision", "f64"]);
+    let s = text(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{s}\n{}", text(&out.stderr));
+    let first = d.join("right.penner-failure-1.json");
+    assert!(
+        s.contains("right.penner-failure-1.json"),
+        "output names the file: {s}"
+    );
+    assert!(first.exists());
+    // A second run never overwrites: it picks the next free name.
+    let before = std::fs::read(&first).unwrap();
+    let out2 = penner(&["check", &ps, "--only", "T22", "--precision", "f64"]);
+    assert_eq!(out2.status.code(), Some(1));
+    assert!(d.join("right.penner-failure-2.json").exists());
+    assert_eq!(std::fs::read(&first).unwrap(), before);
+    // The failure file is valid JSON with witnesses and a surface that replays.
+    let v: serde_json::Value = serde_json::from_slice(&before).unwrap();
+    assert_eq!(v["check"], "T22");
+    assert!(!v["witnesses"].as_array().unwrap().is_empty());
+    let r = penner(&["replay", &first.display().to_string()]);
+    assert_eq!(r.status.code(), Some(1), "{}", text(&r.stdout));
+    assert!(text(&r.stdout).contains("still fails"));
+    // `--no-failure-files` writes nothing.
+    let _ = penner(&[
+        "check",
+        &ps,
+        "--only",
+        "T22",
+        "--precision",
+        "f64",
+        "--no-failure-files",
+    ]);
+    assert!(!d.join("right.penner-failure-3.json").exists());
+    // A corrupted failure file is bad input.
+    let bad = write(&d, "bad.penner-failure-1.json", &before[..before.len() / 2]);
+    assert_refused(
+        &penner(&["replay", &bad.display().to_string()]),
+        3,
+        &["bad.penner-failure-1.json"],
+    );
+}
+
+#[test]
+fn delaunay_writes_a_surface_and_never_overwrites() {
+    let d = scratch("delaunay");
+    // A thin rhombus split along its long diagonal: one flip makes it Delaunay.
+    let rhombus =
+        r#"{"vertices": 4, "faces": [[0,1,2],[0,2,3]], "lengths": ["1","1","19/10","1","1"]}"#;
+    let p = write(&d, "rhombus.json", rhombus.as_bytes());
+    let o = d.join("out.json");
+    for (flips, prec) in [("euclidean", "256"), ("ptolemy", "exact")] {
+        let _ = std::fs::remove_file(&o);
+        let out = penner(&[
+            "delaunay",
+            &p.display().to_string(),
+            "--flips",
+            flips,
+            "--precision",
+            prec,
+            "-o",
+            &o.display().to_string(),
+        ]);
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "{flips}: {err}");
+        assert!(err.contains("1 ") && err.contains("certified"), "{err}");
+        // The output is a surface `penner check` reads.
+        let c = penner(&[
+            "check",
+            &o.display().to_string(),
+            "--only",
+            "T21",
+            "--precision",
+            "f64",
+        ]);
+        assert_eq!(c.status.code(), Some(0), "{}", text(&c.stderr));
+    }
+    // The output file exists now: refused, and left untouched.
+    let before = std::fs::read(&o).unwrap();
+    let out = penner(&[
+        "delaunay",
+        &p.display().to_string(),
+        "-o",
+        &o.display().to_string(),
+    ]);
+    assert_refused(&out, 4, &["out.json", "exists"]);
+    assert_eq!(std::fs::read(&o).unwrap(), before);
+    // Exact Euclidean flipping is refused as bad input.
+    let out = penner(&["delaunay", &p.display().to_string(), "--precision", "exact"]);
+    assert_refused(&out, 3, &["exact"]);
+}

@@ -1,0 +1,155 @@
+//! `penner delaunay SURFACE`: flip to the intrinsic Delaunay triangulation and write it.
+
+use super::args::FlipKind as ArgFlipKind;
+use super::error::{code, CliError};
+use super::files::{emit, write_new};
+use penner::algorithms::flip_to_delaunay::{
+    flip_to_delaunay, flip_to_delaunay_exact, ExactLengths, FlipKind, FlipOptions, FlipReport,
+};
+use penner::io::{json, Metric, Surface};
+use penner::oracle::Prec;
+use penner::scalar::{Dd, Mpfr, Real};
+use rug::Rational;
+use std::io::IsTerminal;
+use std::path::Path;
+use std::time::Duration;
+
+/// Bit size (numerator + denominator) past which exact Ptolemy flipping continues on
+/// enclosures instead.
+const EXACT_GUARD_BITS: u64 = 4096;
+
+/// Options of `penner delaunay`.
+pub struct Options<'a> {
+    /// The surface file.
+    pub path: &'a Path,
+    /// Flip kind.
+    pub flips: ArgFlipKind,
+    /// Precision as typed.
+    pub precision: &'a str,
+    /// Output file, or stdout.
+    pub output: Option<&'a Path>,
+}
+
+/// Flip real lengths of backend `T` and return the report and the exact values of the
+/// stored lengths.
+fn flip_real<T: Real>(
+    case: &mut Surface,
+    ctx: T::Ctx,
+    kind: FlipKind,
+) -> Result<(FlipReport, Vec<Rational>), CliError> {
+    let mut l: Vec<T> = case.lengths(ctx);
+    let report = flip_to_delaunay(&mut case.mesh, &mut l, kind, &FlipOptions::default())
+        .map_err(|e| CliError::Input(format!("{}: {e}", case.name)))?;
+    let exact = l
+        .iter()
+        .enumerate()
+        .map(|(i, x)| {
+            x.to_rational()
+                .ok_or_else(|| CliError::Input(format!("{}: edge {i} overflowed", case.name)))
+        })
+        .collect::<Result<_, _>>()?;
+    Ok((report, exact))
+}
+
+/// Run `penner delaunay`.
+pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
+    let precs = super::precisions(o.precision)?;
+    let [prec] = precs[..] else {
+        return Err(CliError::Input(
+            "--precision: give one precision for `delaunay` (f64, dd, exact or a bit count)"
+                .to_string(),
+        ));
+    };
+    if let Some(out) = o.output {
+        if out.exists() {
+            return Err(CliError::Write {
+                path: out.to_path_buf(),
+                reason: "the file exists (penner never overwrites a file; choose another name)"
+                    .to_string(),
+            });
+        }
+    }
+    let mut case = super::input::load_case(o.path)?;
+    let kind = match o.flips {
+        ArgFlipKind::Euclidean => FlipKind::Euclidean,
+        ArgFlipKind::Ptolemy => FlipKind::Ptolemy,
+    };
+    let bar = std::io::stderr().is_terminal().then(|| {
+        let b = indicatif::ProgressBar::new_spinner();
+        b.set_message(format!(
+            "flipping {} ({} faces) to intrinsic Delaunay",
+            o.path.display(),
+            case.mesh.n_faces()
+        ));
+        b.enable_steady_tick(Duration::from_millis(120));
+        b
+    });
+    let result = match (prec, kind, &case.metric) {
+        (Prec::Exact, FlipKind::Ptolemy, Metric::Lengths(l)) => {
+            let l = l.clone();
+            let (report, lengths) =
+                flip_to_delaunay_exact(&mut case.mesh, l, EXACT_GUARD_BITS, &FlipOptions::default())
+                    .map_err(|e| CliError::Input(format!("{}: {e}", o.path.display())))?;
+            match lengths {
+                ExactLengths::Exact(v) => Ok((report, v)),
+                ExactLengths::Enclosed(_) => Err(CliError::Input(format!(
+                    "{}: exact lengths outgrew {EXACT_GUARD_BITS} bits after {} flips; use a bit count such as --precision 1024",
+                    o.path.display(),
+                    report.fell_back_after.unwrap_or(report.flips)
+                ))),
+            }
+        }
+        (Prec::Exact, _, _) => Err(CliError::Input(
+            "--precision exact needs --flips ptolemy and exact (not squared) lengths: Euclidean flips make lengths irrational"
+                .to_string(),
+        )),
+        (Prec::F64, ..) => flip_real::<f64>(&mut case, (), kind),
+        (Prec::Dd, ..) => flip_real::<Dd>(&mut case, (), kind),
+        (Prec::Mpfr(p), ..) => {
+            flip_real::<Mpfr>(&mut case, p, kind)
+        }
+    };
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    let (report, lengths) = result?;
+    let out_case = Surface {
+        name: case.name.clone(),
+        mesh: case.mesh.clone(),
+        metric: Metric::Lengths(lengths),
+        positions: None,
+    };
+    // The output is a plain surface file (readable by `penner check`); the flip count
+    // and the certificate go to standard error.
+    let text = format!("{:#}\n", json::to_value(&out_case));
+    let summary = format!(
+        "{} {} flip(s) at {prec}; {}",
+        report.flips,
+        match kind {
+            FlipKind::Euclidean => "Euclidean",
+            FlipKind::Ptolemy => "Ptolemy",
+        },
+        if report.all_certified_delaunay() {
+            "every edge certified intrinsic Delaunay".to_string()
+        } else {
+            format!(
+                "NOT every edge certified Delaunay ({} undecided, {} refused{})",
+                report.undecided.len(),
+                report.refused.len(),
+                if report.hit_cap { ", flip cap hit" } else { "" }
+            )
+        }
+    );
+    if let Some(p) = o.output {
+        write_new(p, &text)?;
+        eprintln!("{summary}; written to {}", p.display());
+    } else {
+        emit(&text);
+        eprintln!("{summary}");
+    }
+    Ok(if report.all_certified_delaunay() {
+        code::HOLDS
+    } else {
+        code::UNDECIDED
+    })
+}
