@@ -5,8 +5,9 @@ use crate::geometry::cone_angles::cone_angles;
 use crate::io::json::edge_order;
 use crate::io::Surface;
 use crate::mesh::{Edge, Mesh};
+use crate::predicates::delaunay::{delaunay_sign_squared, QuadEdges};
 use crate::predicates::within::{within_all, Batch, Within};
-use crate::scalar::{Certified, Interval, Mpfr, Precision, Real};
+use crate::scalar::{Certified, Interval, Mpfr, Precision, Real, Sign};
 use crate::theorems::Witness;
 use rug::Rational;
 use serde_json::{json, Value};
@@ -150,6 +151,48 @@ fn interval_lengths(case: &Surface, p: Precision) -> Vec<Interval<Mpfr>> {
     case.lengths::<Interval<Mpfr>>(p)
 }
 
+/// `intrinsic_delaunay`: the sign of every interior edge's Delaunay polynomial, decided
+/// exactly from the rational squared lengths (`delaunay_sign_squared`, proof: B63).
+/// Boundary edges and edges with one face on both sides are Delaunay by definition.
+fn intrinsic_delaunay(claim: &Claim) -> Answer {
+    let mesh = &claim.surface.mesh;
+    let sq = claim.surface.metric.squared();
+    let order = edge_order(mesh);
+    let mut witnesses = Vec::new();
+    for (k, &e) in order.iter().enumerate() {
+        let e = Edge(e as u32);
+        if mesh.is_boundary_edge(e) {
+            continue;
+        }
+        let Some(q) = QuadEdges::of(mesh, e) else {
+            continue;
+        };
+        if delaunay_sign_squared(q.lengths(&sq)) == Sign::Negative {
+            let h = e.halfedge();
+            witnesses.push(Witness {
+                element: format!("edge {k} (v{}–v{})", mesh.tail(h).0, mesh.tip(h).0),
+                detail: "not Delaunay: the opposite angles sum to more than π".to_string(),
+                value: -1.0,
+            });
+        }
+    }
+    let verdict = if witnesses.is_empty() {
+        ClaimVerdict::Holds
+    } else {
+        ClaimVerdict::Refuted
+    };
+    Answer {
+        id: claim.id.clone(),
+        kind: claim.assertion.kind(),
+        verdict,
+        certified: true,
+        precision_bits: 0,
+        max_discrepancy: None,
+        counterexample: witnesses.first().cloned(),
+        witnesses,
+    }
+}
+
 /// Answer `claim`.
 pub fn certify(claim: &Claim) -> Result<Answer, Unsupported> {
     let mesh = &claim.surface.mesh;
@@ -187,6 +230,7 @@ pub fn certify(claim: &Claim) -> Result<Answer, Unsupported> {
             };
             Ok(summarize(claim, &b, &name, "log-length residual"))
         }
+        Assertion::IntrinsicDelaunay => Ok(intrinsic_delaunay(claim)),
         other => Err(Unsupported(other.kind())),
     }
 }

@@ -531,3 +531,35 @@ fn delaunay_writes_a_surface_and_never_overwrites() {
     let out = penner(&["delaunay", &p.display().to_string(), "--precision", "exact"]);
     assert_refused(&out, 3, &["exact"]);
 }
+
+#[test]
+fn certify_intrinsic_delaunay_exactly() {
+    let d = scratch("certify-delaunay");
+    let claim = |l: [&str; 5]| {
+        serde_json::json!({"penner_claim": 1, "kind": "intrinsic_delaunay",
+            "surface": {"vertices": 4, "faces": [[0,1,2],[0,2,3]], "lengths": l}})
+    };
+    // Unit rhombus with diagonal 1.9 (obtuse opposite angles): refuted at the diagonal.
+    let (code, a, _) = certify(&d, "thin.json", &claim(["1", "1", "19/10", "1", "1"]));
+    assert_eq!(
+        (code, a["verdict"].as_str()),
+        (Some(1), Some("refuted")),
+        "{a}"
+    );
+    assert!(
+        a["counterexample"]["element"]
+            .as_str()
+            .unwrap()
+            .starts_with("edge 2"),
+        "{a}"
+    );
+    // The unit square with diagonal √2 given as squared lengths: an exact tie, Delaunay.
+    let square = serde_json::json!({"penner_claim": 1, "kind": "intrinsic_delaunay",
+        "surface": {"vertices": 4, "faces": [[0,1,2],[0,2,3]], "squared_lengths": ["1","1","2","1","1"]}});
+    let (code, a, _) = certify(&d, "square.json", &square);
+    assert_eq!(
+        (code, a["verdict"].as_str(), a["certified"].as_bool()),
+        (Some(0), Some("holds"), Some(true)),
+        "{a}"
+    );
+}
