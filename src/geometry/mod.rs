@@ -1,4 +1,11 @@
 //! Numbers on a mesh: lengths, angles, cotan weights, cross ratios. Never branches on values.
 
 pub mod cone_angles;
+pub mod corners;
+pub mod cotan;
+pub mod cross_ratio;
+pub mod curvature;
+pub mod energy;
+pub mod laplacian;
+pub mod scaling;
 pub mod triangle;

@@ -1,0 +1,136 @@
+//! The cotan Laplacian as a small compressed-sparse-row matrix (notes §1.3.3–1.3.5;
+//! MATH.md §3).
+
+use super::cotan::halfedge_cotans;
+use crate::mesh::Mesh;
+use crate::scalar::Real;
+
+/// A square sparse matrix in compressed-sparse-row form. Entries of a row are sorted by
+/// column; duplicates given to [`SparseMatrix::from_triplets`] are summed in input order.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SparseMatrix<T> {
+    n: usize,
+    row_ptr: Vec<usize>,
+    col: Vec<usize>,
+    val: Vec<T>,
+}
+
+impl<T: Real> SparseMatrix<T> {
+    /// Assemble an `n × n` matrix from `(row, column, value)` triplets; entries at the same
+    /// position are summed in the order given. Triplets outside `n × n` are a programming
+    /// error and panic.
+    pub fn from_triplets(n: usize, triplets: Vec<(usize, usize, T)>) -> SparseMatrix<T> {
+        let mut order: Vec<usize> = (0..triplets.len()).collect();
+        order.sort_by_key(|&t| (triplets[t].0, triplets[t].1, t));
+        let mut row_ptr = vec![0; n + 1];
+        let mut col: Vec<usize> = Vec::new();
+        let mut val: Vec<T> = Vec::new();
+        let mut rows: Vec<usize> = Vec::new();
+        for t in order {
+            let (r, c, ref v) = triplets[t];
+            assert!(r < n && c < n, "triplet ({r}, {c}) outside a {n}×{n} matrix");
+            match (rows.last(), col.last(), val.last_mut()) {
+                (Some(&lr), Some(&lc), Some(last)) if lr == r && lc == c => *last += v,
+                _ => {
+                    rows.push(r);
+                    col.push(c);
+                    val.push(v.clone());
+                }
+            }
+        }
+        for &r in &rows {
+            row_ptr[r + 1] += 1;
+        }
+        for i in 0..n {
+            row_ptr[i + 1] += row_ptr[i];
+        }
+        SparseMatrix {
+            n,
+            row_ptr,
+            col,
+            val,
+        }
+    }
+
+    /// The dimension `n`.
+    pub fn dim(&self) -> usize {
+        self.n
+    }
+
+    /// The stored entries of row `i` as `(column, value)`, sorted by column.
+    pub fn row(&self, i: usize) -> impl Iterator<Item = (usize, &T)> {
+        let (a, b) = (self.row_ptr[i], self.row_ptr[i + 1]);
+        self.col[a..b].iter().copied().zip(&self.val[a..b])
+    }
+
+    /// The entry at `(i, j)`, or `None` when it is not stored (structurally zero).
+    pub fn get(&self, i: usize, j: usize) -> Option<&T> {
+        self.row(i).find(|&(c, _)| c == j).map(|(_, v)| v)
+    }
+
+    /// Mutable access to a stored entry (for building perturbed matrices in tests).
+    pub fn get_mut(&mut self, i: usize, j: usize) -> Option<&mut T> {
+        let (a, b) = (self.row_ptr[i], self.row_ptr[i + 1]);
+        let k = (a..b).find(|&k| self.col[k] == j)?;
+        Some(&mut self.val[k])
+    }
+
+    /// The product `M x`; `None` when `x` has the wrong length or is empty.
+    pub fn mul_vec(&self, x: &[T]) -> Option<Vec<T>> {
+        if x.len() != self.n {
+            return None;
+        }
+        let zero = x.first()?.zero_like();
+        Some(
+            (0..self.n)
+                .map(|i| {
+                    let mut s = zero.clone();
+                    for (j, v) in self.row(i) {
+                        s += &(v.clone() * &x[j]);
+                    }
+                    s
+                })
+                .collect(),
+        )
+    }
+
+    /// All stored entries as `(row, column, value)`.
+    pub fn entries(&self) -> impl Iterator<Item = (usize, usize, &T)> {
+        (0..self.n).flat_map(move |i| self.row(i).map(move |(j, v)| (i, j, v)))
+    }
+}
+
+/// The cotan Laplacian `(L f)_i = Σ_j w_ij (f_j − f_i)` (MATH.md §3, notes Eq. 6): off the
+/// diagonal `L_ij = w_ij` summed over the edges between `i` and `j` (multi-edges add), on
+/// the diagonal `L_ii = −Σ_j w_ij`. Each half-edge `h = i→j` of a face adds
+/// `½ cot α(h)` to `L_ij`, `L_ji` and subtracts it from `L_ii`, `L_jj`; loops (`i = j`)
+/// contribute nothing. `L` is negative semidefinite: `fᵀ L f = −2 E_D(f)`.
+///
+/// ```
+/// use penner::geometry::laplacian::cotan_laplacian;
+/// use penner::mesh::Mesh;
+/// let tri = Mesh::from_faces(3, &[[0, 1, 2]]).unwrap();
+/// let l = cotan_laplacian(&tri, &[1.0_f64, 1.0, 1.0]);
+/// let w = 0.5 / 3.0_f64.sqrt(); // ½ cot(π/3)
+/// assert!((l.get(0, 1).unwrap() - w).abs() < 1e-15);
+/// assert!((l.get(0, 0).unwrap() + 2.0 * w).abs() < 1e-15);
+/// ```
+pub fn cotan_laplacian<T: Real>(mesh: &Mesh, lengths: &[T]) -> SparseMatrix<T> {
+    let cots = halfedge_cotans(mesh, lengths);
+    let mut trip = Vec::with_capacity(2 * mesh.n_halfedges());
+    for h in mesh.halfedges() {
+        if mesh.is_boundary_halfedge(h) {
+            continue;
+        }
+        let (i, j) = (mesh.tail(h).idx(), mesh.tip(h).idx());
+        if i == j {
+            continue;
+        }
+        let c = cots[h.idx()].clone() * &cots[h.idx()].lit(0.5);
+        trip.push((i, j, c.clone()));
+        trip.push((j, i, c.clone()));
+        trip.push((i, i, -c.clone()));
+        trip.push((j, j, -c));
+    }
+    SparseMatrix::from_triplets(mesh.n_vertices(), trip)
+}
