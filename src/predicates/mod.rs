@@ -6,3 +6,5 @@ pub mod ladder;
 pub mod planar;
 pub mod triangle;
 pub mod within;
+pub mod cotan;
+pub mod tolerance;

@@ -1,9 +1,22 @@
 //! Read-only checks, one per catalogue ID (MATH.md). Checks never mutate and never panic;
 //! a failing check lists *all* failing elements.
 
+pub mod bounds;
+pub mod report;
 pub mod verdict;
 
 pub use verdict::{Settings, Verdict, Witness};
+pub mod t01_gauss_bonnet;
+pub mod t03_angle_rigidity;
+pub mod t04_angle_integrability;
+pub mod t05_cotan_laplacian;
+pub mod t07_conformal_energy;
+pub mod t15_lemma1;
+pub mod t16_scaling_cross_ratios;
+pub mod t17_cross_ratio_equivalence;
+pub mod t18_two_triangle_sphere;
+pub mod t19_one_vertex_torus;
+pub mod t20_mobius_cross_ratios;
 pub mod t21_delaunay_flipping;
 pub mod t22_delaunay_uniqueness;
 pub mod t23_euclidean_flip_cone_metric;

@@ -1,0 +1,97 @@
+//! Certified sign of a cotan weight `w_ij = ½(cot α_k + cot α_l)` from squared lengths.
+
+use super::ladder::{decide, Ladder, SignPredicate};
+use crate::mesh::{Edge, Mesh};
+use crate::scalar::{Certified, Precision, Sign};
+use rug::Rational;
+
+/// `16·Area²` of a triangle from its squared sides:
+/// `P = 2(a²b² + b²c² + c²a²) − a⁴ − b⁴ − c⁴` (Heron, MATH.md §1).
+fn heron16(a2: &Rational, b2: &Rational, c2: &Rational) -> Rational {
+    let ab = Rational::from(a2 * b2);
+    let bc = Rational::from(b2 * c2);
+    let ca = Rational::from(c2 * a2);
+    let s = Rational::from(&ab + &bc) + &ca;
+    let sq = Rational::from(a2 * a2) + Rational::from(b2 * b2) + Rational::from(c2 * c2);
+    s * Rational::from(2) - sq
+}
+
+/// The sign of `cot α_k + cot α_l` for interior edge `ij` between triangles with squared
+/// sides `(ℓ_ij², ℓ_jk², ℓ_ki²)` and `(ℓ_ij², ℓ_il², ℓ_lj²)`.
+///
+/// With `N = b² + c² − a²` and `P = 16·Area²` (so `cot = N / √P`), the sign of
+/// `N_1/√P_1 + N_2/√P_2` is that of `N_1 √P_2 + N_2 √P_1`: the common sign of `N_1, N_2` when
+/// they agree, else the sign of `N_1² P_2 − N_2² P_1` times the sign of the larger term's `N`
+/// (proofs/B48). Everything is a polynomial in the squared lengths, so the exact rung
+/// decides in ℚ.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CotanWeightSign {
+    /// Squared sides `[ij, jk, ki]` of the first triangle.
+    pub first: [Rational; 3],
+    /// Squared sides `[ij, il, lj]` of the second triangle (same `ij`).
+    pub second: [Rational; 3],
+}
+
+impl CotanWeightSign {
+    /// `N = b² + c² − a²` and `P = 16·Area²` of a triangle `[a², b², c²]`.
+    fn np(t: &[Rational; 3]) -> (Rational, Rational) {
+        let n = Rational::from(&t[1] + &t[2]) - &t[0];
+        (n, heron16(&t[0], &t[1], &t[2]))
+    }
+
+    /// The exact sign, or `None` when a triangle is degenerate or violates the triangle
+    /// inequality (`P ≤ 0`), where the cotangent is undefined.
+    pub fn sign_exact(&self) -> Option<Sign> {
+        let (n1, p1) = Self::np(&self.first);
+        let (n2, p2) = Self::np(&self.second);
+        if p1.cmp0().is_le() || p2.cmp0().is_le() {
+            return None;
+        }
+        let s1 = Sign::of_ordering(n1.cmp0());
+        let s2 = Sign::of_ordering(n2.cmp0());
+        if s1 == s2 || s2 == Sign::Zero {
+            return Some(s1);
+        }
+        if s1 == Sign::Zero {
+            return Some(s2);
+        }
+        // Opposite signs: compare magnitudes |N_1|√P_2 vs |N_2|√P_1 by their squares.
+        let t1 = Rational::from(&n1 * &n1) * &p2;
+        let t2 = Rational::from(&n2 * &n2) * &p1;
+        Some(match t1.cmp(&t2) {
+            std::cmp::Ordering::Greater => s1,
+            std::cmp::Ordering::Less => s2,
+            std::cmp::Ordering::Equal => Sign::Zero,
+        })
+    }
+}
+
+impl SignPredicate for CotanWeightSign {
+    fn enclosure_sign(&self, _prec: Precision) -> Option<Sign> {
+        None
+    }
+    fn exact_sign(&self) -> Option<Sign> {
+        self.sign_exact()
+    }
+}
+
+/// The certified sign of the cotan weight `w_e` of every interior edge from rational
+/// squared lengths `sq[e] = ℓ_e²` (MATH.md §3), decided on the ladder; `None` on boundary
+/// edges. A weight whose triangles are degenerate is `Undecided`.
+pub fn cotan_weight_signs(mesh: &Mesh, sq: &[Rational], ladder: &Ladder) -> Vec<Option<Certified<Sign>>> {
+    mesh.edges()
+        .map(|e: Edge| {
+            if mesh.is_boundary_edge(e) {
+                return None;
+            }
+            let h = e.side(0);
+            let t = h.twin();
+            let l = |g: crate::mesh::HalfEdge| sq[g.edge().idx()].clone();
+            let p = CotanWeightSign {
+                first: [l(h), l(mesh.next(h)), l(mesh.prev(h))],
+                second: [l(t), l(mesh.next(t)), l(mesh.prev(t))],
+            };
+            Some(decide(&p, ladder))
+        })
+        .collect()
+}

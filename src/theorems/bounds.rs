@@ -1,0 +1,91 @@
+//! Forward error bounds for the numerical checks (proofs/B40–B47), evaluated in `f64` from
+//! the `f64` approximations of the data.
+//!
+//! Hypothesis shared by all of them (proofs/B40): every primitive operation of the backend
+//! (`±`, `×`, `÷`, `√`, `exp`, `ln`, `sin`, `cos`, `atan`, and the constant π) returns the
+//! exact result of its rounded arguments times `(1 + δ)` with `|δ| ≤ ε := 16u`, `u` the
+//! backend's unit roundoff. Each bound is a first-order bound multiplied by [`SAFETY`] = 2,
+//! which covers the second-order terms and the evaluation of the bound in `f64` as long as
+//! the first-order relative error stays below 1/8; beyond that the bound is `+∞` (the
+//! check then reports the element as undecided rather than guess).
+
+use crate::scalar::Real;
+
+/// Multiplier covering second-order terms (proofs/B40).
+pub const SAFETY: f64 = 2.0;
+
+/// `ε = 16u` for the backend of `ctx` (proofs/B40).
+pub fn eps<T: Real>(ctx: T::Ctx) -> f64 {
+    16.0 * T::unit_roundoff(ctx)
+}
+
+/// Apply [`SAFETY`], or `+∞` when the first-order relative error `rel` exceeds 1/8.
+fn finish(abs_first_order: f64, rel: f64) -> f64 {
+    if rel.is_finite() && rel <= 0.125 && abs_first_order.is_finite() {
+        SAFETY * abs_first_order
+    } else {
+        f64::INFINITY
+    }
+}
+
+/// Relative error of `fl(fl(p ± q) ± r)` to first order: `ε(|p ± q| + |x|)/|x|` with
+/// `x = p ± q ± r` (proofs/B40).
+fn two_step(partial: f64, x: f64, eps: f64) -> f64 {
+    eps * (partial.abs() + x.abs()) / x.abs()
+}
+
+/// B40: bound on `|fl(α) − α|` for [`crate::geometry::triangle::corner_angle`] with sides
+/// `a, b, c` (angle opposite `a`): `sin α (Σρ_i + 5ε) + 2εα`, times [`SAFETY`].
+pub fn corner_angle_error(a: f64, b: f64, c: f64, eps: f64) -> f64 {
+    let x = [a - b + c, a + b - c, a + b + c, b + c - a];
+    let p = [a - b, a + b, a + b, b + c];
+    let rho: f64 = (0..4).map(|i| two_step(p[i], x[i], eps)).sum();
+    let t2 = (x[0] * x[1]) / (x[2] * x[3]);
+    let alpha = 2.0 * t2.sqrt().atan();
+    let first = alpha.sin() * (rho + 5.0 * eps) + 2.0 * eps * alpha;
+    finish(first, rho + 5.0 * eps)
+}
+
+/// B41: bound on the rounding error of a recursive sum of `terms` (any summation order):
+/// `(n − 1) ε Σ|x_i|`, times [`SAFETY`] (Higham, *Accuracy and Stability*, §4.2).
+pub fn sum_error(terms: impl IntoIterator<Item = f64>, eps: f64) -> f64 {
+    let (n, s) = terms
+        .into_iter()
+        .fold((0usize, 0.0), |(n, s), x| (n + 1, s + x.abs()));
+    let first = n.saturating_sub(1) as f64 * eps * s;
+    finish(first, n as f64 * eps)
+}
+
+/// B44: bound on `|fl(cot α) − cot α|` for [`crate::geometry::triangle::cot_opposite`]
+/// with sides `a, b, c` (angle opposite `a`): `(3ε(a²+b²+c²) + |N| ρ_A)/(4A) + ε|cot|`
+/// with `ρ_A = ½(Σρ_i + 3ε) + ε` the relative error of Kahan's area.
+pub fn cot_error(a: f64, b: f64, c: f64, eps: f64) -> f64 {
+    let mut s = [a, b, c];
+    s.sort_by(|x, y| y.total_cmp(x));
+    let [x, y, z] = s;
+    let f = [x + (y + z), z - (x - y), z + (x - y), x + (y - z)];
+    let p = [y + z, x - y, x - y, y - z];
+    let rho: f64 = (0..4).map(|i| two_step(p[i], f[i], eps)).sum();
+    let rho_area = 0.5 * (rho + 3.0 * eps) + 2.0 * eps;
+    let area = 0.25 * (f[0] * f[1] * f[2] * f[3]).sqrt();
+    let n = b * b + c * c - a * a;
+    let cot = n / (4.0 * area);
+    let first =
+        (3.0 * eps * (a * a + b * b + c * c) + n.abs() * rho_area) / (4.0 * area) + 2.0 * eps * cot.abs();
+    finish(first, rho_area)
+}
+
+/// B45: relative error bound of a product/quotient of `k` factors, each carrying relative
+/// error at most `rel_each`, formed with `k − 1` roundings: `k·rel_each + (k − 1)ε`, times
+/// [`SAFETY`].
+pub fn product_rel_error(k: usize, rel_each: f64, eps: f64) -> f64 {
+    let first = k as f64 * rel_each + k.saturating_sub(1) as f64 * eps;
+    finish(first, first)
+}
+
+/// B45: relative error of `fl(exp((u_i + u_j)/2))` for exactly stored `u_i, u_j`:
+/// `ε(|u_i + u_j|/2 + 3)` (sum, halving exact, exp with a perturbed argument).
+pub fn scale_factor_rel_error(ui: f64, uj: f64, eps: f64) -> f64 {
+    let first = eps * (0.5 * (ui + uj).abs() + 3.0);
+    finish(first, first)
+}

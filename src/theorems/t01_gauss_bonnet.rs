@@ -1,0 +1,106 @@
+//! T01 — discrete Gauss–Bonnet with boundary (notes §1.2, Eq. 1; MATH.md §2):
+//! `Σ_{i interior} K_i + Σ_{i ∈ ∂M} k_i = 2πχ(M)`.
+//!
+//! API:
+//! - `pub fn check_gauss_bonnet<T: Real>(mesh: &Mesh, lengths: &[T], settings: &Settings) -> Verdict`
+//!   (numerical, tolerance proofs/B42);
+//! - `pub fn verify_gauss_bonnet<T: Real>(mesh: &Mesh, lengths: &[T], curvature: &[T], settings: &Settings) -> Verdict`
+//!   (the comparison, for claimed curvatures).
+
+use super::bounds::{corner_angle_error, eps, sum_error};
+use super::report::{check_lengths, Tally};
+use super::verdict::{Settings, Verdict};
+use crate::geometry::curvature::{curvature, gauss_bonnet_target};
+use crate::mesh::Mesh;
+use crate::scalar::Real;
+
+/// B42: bound on `|fl(Σ K + Σ k) − (Σ K + Σ k)|` plus the rounding of `2πχ`, for the
+/// computation of [`curvature`] and a recursive sum, from the `f64` approximations of the
+/// lengths: corner errors (B40) + per-vertex angle sums (B41) + `2π` and `K_i = 2π − θ_i`
+/// roundings + the sum over vertices (B41) + `2πχ`.
+pub fn gauss_bonnet_error_bound<T: Real>(mesh: &Mesh, lengths: &[T]) -> f64 {
+    let Some(l0) = lengths.first() else {
+        return 0.0;
+    };
+    let e = eps::<T>(l0.ctx());
+    let l: Vec<f64> = lengths.iter().map(Real::approx_f64).collect();
+    let mut corners: Vec<Vec<f64>> = vec![Vec::new(); mesh.n_vertices()];
+    let mut corner_err = 0.0;
+    for f in mesh.faces() {
+        let hs = mesh.face_halfedges(f);
+        for i in 0..3 {
+            let (a, b, c) = (
+                l[hs[i].edge().idx()],
+                l[hs[(i + 1) % 3].edge().idx()],
+                l[hs[(i + 2) % 3].edge().idx()],
+            );
+            corner_err += corner_angle_error(a, b, c, e);
+            let alpha = crate::geometry::triangle::corner_angle(&a, &b, &c);
+            corners[mesh.tail(hs[(i + 2) % 3]).idx()].push(alpha);
+        }
+    }
+    let boundary = mesh.boundary_vertices();
+    let pi = std::f64::consts::PI;
+    let mut k_abs = Vec::with_capacity(mesh.n_vertices());
+    let mut vertex_err = 0.0;
+    for (v, cs) in corners.iter().enumerate() {
+        let theta: f64 = cs.iter().sum();
+        let base = if boundary[v] { pi } else { 2.0 * pi };
+        let k = base - theta;
+        vertex_err += sum_error(cs.iter().copied(), e) + 2.0 * e * base + 2.0 * e * k.abs();
+        k_abs.push(k.abs());
+    }
+    let chi = mesh.euler_characteristic() as f64;
+    let target_err = 2.0 * e * 2.0 * pi * chi.abs();
+    corner_err + vertex_err + sum_error(k_abs, e) + target_err
+}
+
+/// T01, numerical: computes `K`/`k` by [`curvature`] and compares `Σ K + Σ k` with `2πχ`
+/// within `settings.slack ×` [`gauss_bonnet_error_bound`] (proofs/B42).
+///
+/// ```
+/// use penner::mesh::Mesh;
+/// use penner::theorems::{t01_gauss_bonnet::check_gauss_bonnet, Settings};
+/// let tet = Mesh::from_faces(4, &[[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]]).unwrap();
+/// assert!(check_gauss_bonnet(&tet, &[1.0_f64; 6], &Settings::default()).holds());
+/// ```
+pub fn check_gauss_bonnet<T: Real>(mesh: &Mesh, lengths: &[T], settings: &Settings) -> Verdict {
+    if let Some(v) = check_lengths(mesh, lengths) {
+        return v;
+    }
+    let k = curvature(mesh, lengths);
+    verify_gauss_bonnet(mesh, lengths, &k, settings)
+}
+
+/// The comparison of T01 for claimed per-vertex curvatures `curvature` (interior `K_i`,
+/// boundary `k_i`): `|Σ curvature − 2πχ| ≤ slack × B42(lengths)`. A perturbed curvature is
+/// rejected with the witness `surface`.
+pub fn verify_gauss_bonnet<T: Real>(
+    mesh: &Mesh,
+    lengths: &[T],
+    curvature: &[T],
+    settings: &Settings,
+) -> Verdict {
+    if let Some(v) = check_lengths(mesh, lengths) {
+        return v;
+    }
+    if curvature.len() != mesh.n_vertices() {
+        return Verdict::NotApplicable {
+            reason: format!(
+                "{} curvatures given for {} vertices",
+                curvature.len(),
+                mesh.n_vertices()
+            ),
+        };
+    }
+    let ctx = lengths[0].ctx();
+    let mut total = lengths[0].zero_like();
+    for k in curvature {
+        total += k;
+    }
+    let err = total - &gauss_bonnet_target::<T>(mesh, ctx);
+    let tol = settings.slack * gauss_bonnet_error_bound(mesh, lengths);
+    let mut tally = Tally::new(false, T::precision_bits(ctx));
+    tally.within("surface", "Σ K + Σ k − 2πχ", &err, tol);
+    tally.verdict()
+}
