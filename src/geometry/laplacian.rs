@@ -28,7 +28,10 @@ impl<T: Real> SparseMatrix<T> {
         let mut rows: Vec<usize> = Vec::new();
         for t in order {
             let (r, c, ref v) = triplets[t];
-            assert!(r < n && c < n, "triplet ({r}, {c}) outside a {n}×{n} matrix");
+            assert!(
+                r < n && c < n,
+                "triplet ({r}, {c}) outside a {n}×{n} matrix"
+            );
             match (rows.last(), col.last(), val.last_mut()) {
                 (Some(&lr), Some(&lc), Some(last)) if lr == r && lc == c => *last += v,
                 _ => {

@@ -107,7 +107,10 @@ impl<T: Clone> Reconstruction<T> {
 impl<T: Real> Reconstruction<T> {
     /// `u_v = ln e^{u_v}` per vertex (`None` without corners).
     pub fn u(&self) -> Vec<Option<T>> {
-        self.exp_u().into_iter().map(|x| x.map(|x| x.ln())).collect()
+        self.exp_u()
+            .into_iter()
+            .map(|x| x.map(|x| x.ln()))
+            .collect()
     }
 }
 
@@ -136,9 +139,8 @@ pub fn reconstruct_scale_factors_exact(
     let corner_exp_u = mesh
         .halfedges()
         .map(|h| {
-            (!mesh.is_boundary_halfedge(h)).then(|| {
-                lemma1_exp_u_exact(&face_lengths(mesh, l, h), &face_lengths(mesh, lt, h))
-            })
+            (!mesh.is_boundary_halfedge(h))
+                .then(|| lemma1_exp_u_exact(&face_lengths(mesh, l, h), &face_lengths(mesh, lt, h)))
         })
         .collect();
     Reconstruction {

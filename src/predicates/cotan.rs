@@ -78,7 +78,11 @@ impl SignPredicate for CotanWeightSign {
 /// The certified sign of the cotan weight `w_e` of every interior edge from rational
 /// squared lengths `sq[e] = ℓ_e²` (MATH.md §3), decided on the ladder; `None` on boundary
 /// edges. A weight whose triangles are degenerate is `Undecided`.
-pub fn cotan_weight_signs(mesh: &Mesh, sq: &[Rational], ladder: &Ladder) -> Vec<Option<Certified<Sign>>> {
+pub fn cotan_weight_signs(
+    mesh: &Mesh,
+    sq: &[Rational],
+    ladder: &Ladder,
+) -> Vec<Option<Certified<Sign>>> {
     mesh.edges()
         .map(|e: Edge| {
             if mesh.is_boundary_edge(e) {

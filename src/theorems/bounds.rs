@@ -70,8 +70,8 @@ pub fn cot_error(a: f64, b: f64, c: f64, eps: f64) -> f64 {
     let area = 0.25 * (f[0] * f[1] * f[2] * f[3]).sqrt();
     let n = b * b + c * c - a * a;
     let cot = n / (4.0 * area);
-    let first =
-        (3.0 * eps * (a * a + b * b + c * c) + n.abs() * rho_area) / (4.0 * area) + 2.0 * eps * cot.abs();
+    let first = (3.0 * eps * (a * a + b * b + c * c) + n.abs() * rho_area) / (4.0 * area)
+        + 2.0 * eps * cot.abs();
     finish(first, rho_area)
 }
 

@@ -33,7 +33,11 @@ impl Tally {
     pub fn within<T: Real>(&mut self, element: impl Into<String>, what: &str, err: &T, tol: f64) {
         let e = err.approx_f64();
         if !tol.is_finite() {
-            self.undecided(element, format!("{what}: no error bound (ill-conditioned)"), e);
+            self.undecided(
+                element,
+                format!("{what}: no error bound (ill-conditioned)"),
+                e,
+            );
             return;
         }
         match abs_at_most(err, tol) {
@@ -110,7 +114,10 @@ pub fn check_lengths<T>(mesh: &crate::mesh::Mesh, lengths: &[T]) -> Option<Verdi
 
 /// [`check_lengths`] for exact data, plus positivity: a zero or negative rational length is
 /// named (`e…`) instead of dividing by it.
-pub fn check_rational_lengths(mesh: &crate::mesh::Mesh, lengths: &[rug::Rational]) -> Option<Verdict> {
+pub fn check_rational_lengths(
+    mesh: &crate::mesh::Mesh,
+    lengths: &[rug::Rational],
+) -> Option<Verdict> {
     if let Some(v) = check_lengths(mesh, lengths) {
         return Some(v);
     }

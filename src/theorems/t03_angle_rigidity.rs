@@ -67,7 +67,12 @@ pub fn check_equal_angles_imply_scale<T: Real>(
         let d = ratio[edge.idx()].clone() - &ratio[0];
         let re = ratio[edge.idx()].approx_f64().abs();
         let tol = settings.slack * SAFETY * e * (re + r0 + d.approx_f64().abs());
-        tally.within(format!("{edge}"), "scale ℓ̃/ℓ differs from that of e0", &d, tol);
+        tally.within(
+            format!("{edge}"),
+            "scale ℓ̃/ℓ differs from that of e0",
+            &d,
+            tol,
+        );
     }
     if abs_at_most(&ratio[0], 0.0) == Some(true) {
         tally.fail("e0", "scale ℓ̃/ℓ is zero", 0.0);

@@ -82,7 +82,10 @@ pub fn check_angle_integrability<T: Real>(
             terms.push(at_i.approx_f64());
             let (ak, aj) = (&angles[h.idx()], &angles[mesh.prev(h).idx()]);
             p *= &(ak.sin() / &aj.sin());
-            for (x, dx) in [(ak, angle_errors[h.idx()]), (aj, angle_errors[mesh.prev(h).idx()])] {
+            for (x, dx) in [
+                (ak, angle_errors[h.idx()]),
+                (aj, angle_errors[mesh.prev(h).idx()]),
+            ] {
                 let xf = x.approx_f64();
                 sine_rel += e + (xf.cos() / xf.sin()).abs() * dx;
             }

@@ -38,7 +38,11 @@ pub fn check_cotan_laplacian<T: Real>(mesh: &Mesh, lengths: &[T], settings: &Set
 ///   connected component, has pivots `d_k > τ_k` with `τ_k = (n+1) ε (|L̂||D||L̂ᵀ|)_kk`
 ///   times [`SAFETY`] (Higham, *Accuracy and Stability*, Thm 10.3; proofs/B46). A pivot
 ///   `< −τ_k` is a failure (witness `pivot v…`), `|d_k| ≤ τ_k` undecided.
-pub fn verify_laplacian<T: Real>(mesh: &Mesh, lap: &SparseMatrix<T>, settings: &Settings) -> Verdict {
+pub fn verify_laplacian<T: Real>(
+    mesh: &Mesh,
+    lap: &SparseMatrix<T>,
+    settings: &Settings,
+) -> Verdict {
     let n = lap.dim();
     if n != mesh.n_vertices() {
         return Verdict::NotApplicable {
@@ -46,8 +50,10 @@ pub fn verify_laplacian<T: Real>(mesh: &Mesh, lap: &SparseMatrix<T>, settings: &
         };
     }
     let Some((_, _, v0)) = lap.entries().next() else {
-        return Verdict::NotApplicable {
-            reason: "empty matrix".to_string(),
+        // The zero matrix (e.g. only loops, as on the one-vertex torus) has every property.
+        return Verdict::Holds {
+            certified: true,
+            max_error: 0.0,
         };
     };
     let ctx = v0.ctx();
@@ -84,7 +90,10 @@ fn grounded(mesh: &Mesh) -> Vec<bool> {
     }
     for e in mesh.edges() {
         let h = e.halfedge();
-        let (a, b) = (find(&mut parent, mesh.tail(h).idx()), find(&mut parent, mesh.tip(h).idx()));
+        let (a, b) = (
+            find(&mut parent, mesh.tail(h).idx()),
+            find(&mut parent, mesh.tip(h).idx()),
+        );
         if a != b {
             parent[a.max(b)] = a.min(b);
         }
@@ -93,7 +102,13 @@ fn grounded(mesh: &Mesh) -> Vec<bool> {
 }
 
 /// Dense LDLᵀ of `−L` without the grounded vertices; records every non-positive pivot.
-fn semidefinite<T: Real>(mesh: &Mesh, lap: &SparseMatrix<T>, e: f64, settings: &Settings, tally: &mut Tally) {
+fn semidefinite<T: Real>(
+    mesh: &Mesh,
+    lap: &SparseMatrix<T>,
+    e: f64,
+    settings: &Settings,
+    tally: &mut Tally,
+) {
     let ground = grounded(mesh);
     let keep: Vec<usize> = (0..lap.dim()).filter(|&v| !ground[v]).collect();
     let m = keep.len();
@@ -127,11 +142,19 @@ fn semidefinite<T: Real>(mesh: &Mesh, lap: &SparseMatrix<T>, e: f64, settings: &
             return;
         }
         if df < -tau {
-            tally.fail(format!("pivot v{v}"), format!("negative pivot (τ = {tau:.3e}): −L is indefinite"), df);
+            tally.fail(
+                format!("pivot v{v}"),
+                format!("negative pivot (τ = {tau:.3e}): −L is indefinite"),
+                df,
+            );
             return;
         }
         if df <= tau {
-            tally.undecided(format!("pivot v{v}"), format!("pivot within its error bound τ = {tau:.3e}"), df);
+            tally.undecided(
+                format!("pivot v{v}"),
+                format!("pivot within its error bound τ = {tau:.3e}"),
+                df,
+            );
             return;
         }
         for i in k + 1..m {
@@ -163,7 +186,11 @@ pub fn check_linear_precision<T: Real>(
     }
     if positions.len() != mesh.n_vertices() {
         return Verdict::NotApplicable {
-            reason: format!("{} positions for {} vertices", positions.len(), mesh.n_vertices()),
+            reason: format!(
+                "{} positions for {} vertices",
+                positions.len(),
+                mesh.n_vertices()
+            ),
         };
     }
     let ctx = lengths[0].ctx();
@@ -201,7 +228,8 @@ pub fn check_linear_precision<T: Real>(
             continue;
         }
         for (k, name) in ["x", "y"].iter().enumerate() {
-            let tol = settings.slack * (SAFETY * input[v][k] + sum_error(terms[v][k].iter().copied(), e));
+            let tol =
+                settings.slack * (SAFETY * input[v][k] + sum_error(terms[v][k].iter().copied(), e));
             tally.within(format!("v{v}"), &format!("(L {name})_i"), &res[v][k], tol);
         }
     }

@@ -73,7 +73,12 @@ pub fn check_conformal_energy<T: Real>(
 pub fn verify_conformal_energy<T: Real>(terms: &EnergyTerms<T>, settings: &Settings) -> Verdict {
     let d = terms.dirichlet.clone() - &terms.area - &terms.cauchy_riemann;
     let mut tally = Tally::new(false, T::precision_bits(d.ctx()));
-    tally.within("surface", "E_D − A − E_CR", &d, settings.slack * terms.error_bound);
+    tally.within(
+        "surface",
+        "E_D − A − E_CR",
+        &d,
+        settings.slack * terms.error_bound,
+    );
     tally.verdict()
 }
 
@@ -82,7 +87,10 @@ pub fn verify_conformal_energy<T: Real>(terms: &EnergyTerms<T>, settings: &Setti
 pub fn energy_error_bound<T: Real>(mesh: &Mesh, lengths: &[T], f: &[[T; 2]]) -> f64 {
     let e = eps::<T>(lengths[0].ctx());
     let l: Vec<f64> = lengths.iter().map(Real::approx_f64).collect();
-    let fv: Vec<[f64; 2]> = f.iter().map(|z| [z[0].approx_f64(), z[1].approx_f64()]).collect();
+    let fv: Vec<[f64; 2]> = f
+        .iter()
+        .map(|z| [z[0].approx_f64(), z[1].approx_f64()])
+        .collect();
     let lh = |h: crate::mesh::HalfEdge| l[h.edge().idx()];
     // E_D: per edge Δw|d|² + 6ε|w||d|², then the sum.
     let mut ed_terms = Vec::new();
@@ -120,9 +128,17 @@ pub fn energy_error_bound<T: Real>(mesh: &Mesh, lengths: &[T], f: &[[T; 2]]) -> 
         let (lij, ljk, lki) = (lh(hij), lh(hjk), lh(hki));
         let alpha = crate::geometry::triangle::corner_angle(&ljk, &lki, &lij);
         let delta = lki * (corner_angle_error(ljk, lki, lij, e) + 3.0 * e);
-        let p = [[0.0, 0.0], [lij, 0.0], [lki * alpha.cos(), lki * alpha.sin()]];
+        let p = [
+            [0.0, 0.0],
+            [lij, 0.0],
+            [lki * alpha.cos(), lki * alpha.sin()],
+        ];
         let area2 = lij * p[2][1];
-        let idx = [mesh.tail(hij).idx(), mesh.tail(hjk).idx(), mesh.tail(hki).idx()];
+        let idx = [
+            mesh.tail(hij).idx(),
+            mesh.tail(hjk).idx(),
+            mesh.tail(hki).idx(),
+        ];
         let (mut re, mut im, mut dre) = (0.0, 0.0, 0.0);
         for m in 0..3 {
             let (a, b) = (p[(m + 1) % 3], p[(m + 2) % 3]);

@@ -9,7 +9,9 @@
 use super::bounds::{eps, scale_factor_rel_error, SAFETY};
 use super::report::{check_lengths, check_rational_lengths, Tally};
 use super::verdict::{Settings, Verdict};
-use crate::geometry::cross_ratio::{cross_ratio_halfedges, length_cross_ratios, length_cross_ratios_exact};
+use crate::geometry::cross_ratio::{
+    cross_ratio_halfedges, length_cross_ratios, length_cross_ratios_exact,
+};
 use crate::geometry::scaling::{conformal_scaling, conformal_scaling_exact};
 use crate::mesh::Mesh;
 use crate::scalar::Real;
@@ -36,7 +38,11 @@ pub fn check_scaling_preserves_cross_ratios<T: Real>(
     }
     if u.len() != mesh.n_vertices() {
         return Verdict::NotApplicable {
-            reason: format!("{} scale factors for {} vertices", u.len(), mesh.n_vertices()),
+            reason: format!(
+                "{} scale factors for {} vertices",
+                u.len(),
+                mesh.n_vertices()
+            ),
         };
     }
     let e = eps::<T>(l[0].ctx());
@@ -98,13 +104,21 @@ pub fn verify_equal_cross_ratios<T: Real>(
 
 /// T16, exact in ℚ: `ℓ̃ = s_i s_j ℓ` with rational `s` ([`conformal_scaling_exact`]), then
 /// [`verify_equal_cross_ratios_exact`] (certified).
-pub fn check_scaling_preserves_cross_ratios_exact(mesh: &Mesh, l: &[Rational], s: &[Rational]) -> Verdict {
+pub fn check_scaling_preserves_cross_ratios_exact(
+    mesh: &Mesh,
+    l: &[Rational],
+    s: &[Rational],
+) -> Verdict {
     if let Some(v) = check_rational_lengths(mesh, l) {
         return v;
     }
     if s.len() != mesh.n_vertices() {
         return Verdict::NotApplicable {
-            reason: format!("{} scale factors for {} vertices", s.len(), mesh.n_vertices()),
+            reason: format!(
+                "{} scale factors for {} vertices",
+                s.len(),
+                mesh.n_vertices()
+            ),
         };
     }
     let lt = conformal_scaling_exact(mesh, l, s);

@@ -11,7 +11,9 @@ use super::bounds::{eps, SAFETY};
 use super::report::{check_lengths, check_rational_lengths, Tally};
 use super::t15_lemma1::{verify_lemma1, verify_lemma1_exact};
 use super::verdict::{Settings, Verdict};
-use crate::geometry::scaling::{reconstruct_scale_factors, reconstruct_scale_factors_exact, Reconstruction};
+use crate::geometry::scaling::{
+    reconstruct_scale_factors, reconstruct_scale_factors_exact, Reconstruction,
+};
 use crate::mesh::Mesh;
 use crate::scalar::Real;
 use rug::Rational;
@@ -54,7 +56,12 @@ fn corner_name(mesh: &Mesh, h: crate::mesh::HalfEdge) -> String {
 /// lt[0] = 2.5; // no longer a conformal scaling
 /// assert!(check_conformal_equivalence(&tet, &l, &lt, &Settings::default()).fails());
 /// ```
-pub fn check_conformal_equivalence<T: Real>(mesh: &Mesh, l: &[T], lt: &[T], settings: &Settings) -> Verdict {
+pub fn check_conformal_equivalence<T: Real>(
+    mesh: &Mesh,
+    l: &[T],
+    lt: &[T],
+    settings: &Settings,
+) -> Verdict {
     if let Some(v) = check_lengths(mesh, l).or_else(|| check_lengths(mesh, lt)) {
         return v;
     }
@@ -63,7 +70,10 @@ pub fn check_conformal_equivalence<T: Real>(mesh: &Mesh, l: &[T], lt: &[T], sett
     let r = reconstruct_scale_factors(mesh, l, lt);
     let mut tally = Tally::new(false, T::precision_bits(ctx));
     for h in mesh.halfedges() {
-        let (Some(x), Some(rep)) = (&r.corner_exp_u[h.idx()], r.representative[mesh.tail(h).idx()]) else {
+        let (Some(x), Some(rep)) = (
+            &r.corner_exp_u[h.idx()],
+            r.representative[mesh.tail(h).idx()],
+        ) else {
             continue;
         };
         if rep == h {
@@ -79,7 +89,10 @@ pub fn check_conformal_equivalence<T: Real>(mesh: &Mesh, l: &[T], lt: &[T], sett
             * (5.0 * x.approx_f64().abs() + 5.0 * xr.approx_f64().abs() + d.approx_f64().abs());
         tally.within(
             corner_name(mesh, h),
-            &format!("Lemma 1 factor differs from the corner {}", corner_name(mesh, rep)),
+            &format!(
+                "Lemma 1 factor differs from the corner {}",
+                corner_name(mesh, rep)
+            ),
             &d,
             tol,
         );
@@ -96,7 +109,10 @@ pub fn check_conformal_equivalence_exact(mesh: &Mesh, l: &[Rational], lt: &[Rati
     let r = reconstruct_scale_factors_exact(mesh, l, lt);
     let mut tally = Tally::new(true, 0);
     for h in mesh.halfedges() {
-        let (Some(x), Some(rep)) = (&r.corner_exp_u[h.idx()], r.representative[mesh.tail(h).idx()]) else {
+        let (Some(x), Some(rep)) = (
+            &r.corner_exp_u[h.idx()],
+            r.representative[mesh.tail(h).idx()],
+        ) else {
             continue;
         };
         if let Some(xr) = &r.corner_exp_u[rep.idx()] {
@@ -104,7 +120,10 @@ pub fn check_conformal_equivalence_exact(mesh: &Mesh, l: &[Rational], lt: &[Rati
                 let d = Rational::from(x - xr).to_f64();
                 tally.fail(
                     corner_name(mesh, h),
-                    format!("Lemma 1 factor differs from the corner {}", corner_name(mesh, rep)),
+                    format!(
+                        "Lemma 1 factor differs from the corner {}",
+                        corner_name(mesh, rep)
+                    ),
                     d,
                 );
             }

@@ -9,7 +9,9 @@
 //! two-triangle sphere it holds for every pair; on other surfaces (the negative control, e.g.
 //! a tetrahedron) an arbitrary pair is refused.
 
-use super::t17_cross_ratio_equivalence::{check_conformal_equivalence, check_conformal_equivalence_exact};
+use super::t17_cross_ratio_equivalence::{
+    check_conformal_equivalence, check_conformal_equivalence_exact,
+};
 use super::verdict::{Settings, Verdict};
 use crate::mesh::Mesh;
 use crate::scalar::Real;
@@ -30,7 +32,12 @@ pub fn is_two_triangle_sphere(mesh: &Mesh) -> bool {
 /// let v = check_all_metrics_equivalent(&s, &[3.0_f64, 4.0, 5.0], &[1.0, 1.0, 1.5], &Settings::default());
 /// assert!(v.holds());
 /// ```
-pub fn check_all_metrics_equivalent<T: Real>(mesh: &Mesh, l: &[T], lt: &[T], settings: &Settings) -> Verdict {
+pub fn check_all_metrics_equivalent<T: Real>(
+    mesh: &Mesh,
+    l: &[T],
+    lt: &[T],
+    settings: &Settings,
+) -> Verdict {
     check_conformal_equivalence(mesh, l, lt, settings)
 }
 

@@ -12,7 +12,9 @@
 
 use super::bounds::{eps, SAFETY};
 use super::report::{check_lengths, check_rational_lengths, Tally};
-use super::t17_cross_ratio_equivalence::{check_conformal_equivalence, check_conformal_equivalence_exact};
+use super::t17_cross_ratio_equivalence::{
+    check_conformal_equivalence, check_conformal_equivalence_exact,
+};
 use super::verdict::{Settings, Verdict};
 use crate::mesh::Mesh;
 use crate::scalar::Real;
@@ -61,7 +63,12 @@ fn conclude(equivalent: &Verdict, uniform: &Verdict, certified: bool) -> Verdict
 /// assert!(check_equivalent_iff_uniform_scale(&t, &[3.0_f64, 4.0, 5.0], &[6.0, 8.0, 10.0], &s).holds());
 /// assert!(check_equivalent_iff_uniform_scale(&t, &[3.0_f64, 4.0, 5.0], &[3.0, 4.0, 6.0], &s).holds());
 /// ```
-pub fn check_equivalent_iff_uniform_scale<T: Real>(mesh: &Mesh, l: &[T], lt: &[T], settings: &Settings) -> Verdict {
+pub fn check_equivalent_iff_uniform_scale<T: Real>(
+    mesh: &Mesh,
+    l: &[T],
+    lt: &[T],
+    settings: &Settings,
+) -> Verdict {
     if let Some(v) = check_lengths(mesh, l).or_else(|| check_lengths(mesh, lt)) {
         return v;
     }
@@ -85,11 +92,19 @@ pub fn check_equivalent_iff_uniform_scale<T: Real>(mesh: &Mesh, l: &[T], lt: &[T
 }
 
 /// T19, exact in ℚ (certified).
-pub fn check_equivalent_iff_uniform_scale_exact(mesh: &Mesh, l: &[Rational], lt: &[Rational]) -> Verdict {
+pub fn check_equivalent_iff_uniform_scale_exact(
+    mesh: &Mesh,
+    l: &[Rational],
+    lt: &[Rational],
+) -> Verdict {
     if let Some(v) = check_rational_lengths(mesh, l).or_else(|| check_rational_lengths(mesh, lt)) {
         return v;
     }
-    let r: Vec<Rational> = l.iter().zip(lt).map(|(a, b)| Rational::from(b / a)).collect();
+    let r: Vec<Rational> = l
+        .iter()
+        .zip(lt)
+        .map(|(a, b)| Rational::from(b / a))
+        .collect();
     let mut tally = Tally::new(true, 0);
     for (k, rk) in r.iter().enumerate() {
         if *rk != r[0] {

@@ -42,12 +42,16 @@ pub fn invert_in_sphere_exact(
         .iter()
         .map(|p| {
             let d: [Rational; 3] = std::array::from_fn(|k| Rational::from(&p[k] - &center[k]));
-            let n2 = d.iter().fold(Rational::new(), |acc, x| acc + Rational::from(x * x));
+            let n2 = d
+                .iter()
+                .fold(Rational::new(), |acc, x| acc + Rational::from(x * x));
             if n2.cmp0().is_eq() {
                 return None;
             }
             let s = Rational::from(radius_sq / &n2);
-            Some(std::array::from_fn(|k| Rational::from(&d[k] * &s) + &center[k]))
+            Some(std::array::from_fn(|k| {
+                Rational::from(&d[k] * &s) + &center[k]
+            }))
         })
         .collect()
 }

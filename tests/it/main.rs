@@ -17,4 +17,5 @@ mod scalar_dd;
 mod strategies;
 #[allow(dead_code)] // helpers used by some areas only
 mod support;
+mod theorems_fixed;
 mod tidy;
