@@ -19,7 +19,7 @@ impl<T: Real> SparseMatrix<T> {
     /// Assemble an `n × n` matrix from `(row, column, value)` triplets; entries at the same
     /// position are summed in the order given. Triplets outside `n × n` are a programming
     /// error and panic.
-    pub fn from_triplets(n: usize, triplets: Vec<(usize, usize, T)>) -> SparseMatrix<T> {
+    pub fn from_triplets(n: usize, triplets: &[(usize, usize, T)]) -> SparseMatrix<T> {
         let mut order: Vec<usize> = (0..triplets.len()).collect();
         order.sort_by_key(|&t| (triplets[t].0, triplets[t].1, t));
         let mut row_ptr = vec![0; n + 1];
@@ -135,5 +135,5 @@ pub fn cotan_laplacian<T: Real>(mesh: &Mesh, lengths: &[T]) -> SparseMatrix<T> {
         trip.push((i, i, -c.clone()));
         trip.push((j, j, -c));
     }
-    SparseMatrix::from_triplets(mesh.n_vertices(), trip)
+    SparseMatrix::from_triplets(mesh.n_vertices(), &trip)
 }

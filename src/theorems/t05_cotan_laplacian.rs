@@ -79,8 +79,6 @@ pub fn verify_laplacian<T: Real>(
 
 /// First vertex of each connected component (by edges), to ground the Laplacian.
 fn grounded(mesh: &Mesh) -> Vec<bool> {
-    let n = mesh.n_vertices();
-    let mut parent: Vec<usize> = (0..n).collect();
     fn find(p: &mut [usize], mut x: usize) -> usize {
         while p[x] != x {
             p[x] = p[p[x]];
@@ -88,6 +86,8 @@ fn grounded(mesh: &Mesh) -> Vec<bool> {
         }
         x
     }
+    let n = mesh.n_vertices();
+    let mut parent: Vec<usize> = (0..n).collect();
     for e in mesh.edges() {
         let h = e.halfedge();
         let (a, b) = (
@@ -102,6 +102,7 @@ fn grounded(mesh: &Mesh) -> Vec<bool> {
 }
 
 /// Dense LDLᵀ of `−L` without the grounded vertices; records every non-positive pivot.
+#[allow(clippy::needless_range_loop)]
 fn semidefinite<T: Real>(
     mesh: &Mesh,
     lap: &SparseMatrix<T>,
@@ -127,7 +128,7 @@ fn semidefinite<T: Real>(
             a[pos[i]][pos[j]] = -v.clone();
         }
     }
-    // Right-looking LDLᵀ: after step k, a[k][k] = d_k and a[i][k] = l_ik·d_k (i > k).
+    // Right-looking LDLᵀ (index loops mirror the textbook algorithm).: after step k, a[k][k] = d_k and a[i][k] = l_ik·d_k (i > k).
     let mut l = vec![vec![0.0_f64; m]; m]; // |l_ik| approximations for the bound
     let mut d_abs = vec![0.0_f64; m];
     for k in 0..m {

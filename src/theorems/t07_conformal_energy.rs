@@ -161,9 +161,9 @@ pub fn energy_error_bound<T: Real>(mesh: &Mesh, lengths: &[T], f: &[[T; 2]]) -> 
         + a_err
         + cr_err
         + sum_error(cr_terms.iter().copied(), e);
-    let mags = ed_terms.iter().map(|x| x.abs()).sum::<f64>()
+    let mags = ed_terms.iter().map(|x: &f64| x.abs()).sum::<f64>()
         + a_terms.iter().sum::<f64>()
-        + cr_terms.iter().map(|x| x.abs()).sum::<f64>();
+        + cr_terms.iter().map(|x: &f64| x.abs()).sum::<f64>();
     SAFETY * (total + 2.0 * e * mags)
 }
 

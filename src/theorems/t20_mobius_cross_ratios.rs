@@ -77,8 +77,8 @@ fn lengths<T: Real>(mesh: &Mesh, p: &[[T; 3]]) -> Vec<T> {
             let h = e.halfedge();
             let (i, j) = (mesh.tail(h).idx(), mesh.tip(h).idx());
             let mut s = p[i][0].zero_like();
-            for k in 0..3 {
-                let d = p[j][k].clone() - &p[i][k];
+            for (a, b) in p[i].iter().zip(&p[j]) {
+                let d = b.clone() - a;
                 s += &(d.clone() * &d);
             }
             s.sqrt()

@@ -784,10 +784,7 @@ fn t19_one_vertex_torus_equivalent_iff_uniform() {
     at_all_precisions!(t19_body);
     let t = one_vertex_torus();
     let l = [q(3), q(4), Rational::from((11, 2))];
-    let uniform: Vec<Rational> = l
-        .iter()
-        .map(|x| Rational::from(x * Rational::from((7, 4))))
-        .collect();
+    let uniform: Vec<Rational> = l.iter().map(|x| x * Rational::from((7, 4))).collect();
     assert!(check_equivalent_iff_uniform_scale_exact(&t, &l, &uniform).holds());
     assert!(check_equivalent_iff_uniform_scale_exact(&t, &l, &[q(3), q(5), q(6)]).holds());
     assert!(check_equivalent_iff_uniform_scale_exact(
