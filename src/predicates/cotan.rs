@@ -22,7 +22,7 @@ fn heron16(a2: &Rational, b2: &Rational, c2: &Rational) -> Rational {
 /// With `N = b² + c² − a²` and `P = 16·Area²` (so `cot = N / √P`), the sign of
 /// `N_1/√P_1 + N_2/√P_2` is that of `N_1 √P_2 + N_2 √P_1`: the common sign of `N_1, N_2` when
 /// they agree, else the sign of `N_1² P_2 − N_2² P_1` times the sign of the larger term's `N`
-/// (proofs/B48). Everything is a polynomial in the squared lengths, so the exact rung
+/// (proofs/B49). Everything is a polynomial in the squared lengths, so the exact rung
 /// decides in ℚ.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CotanWeightSign {

@@ -8,7 +8,7 @@ use rug::Rational;
 /// every finite `x`.
 ///
 /// This decides a *numerical* check: the tolerance comes from a stated error bound
-/// (proofs/B40–B47), so the answer is only as rigorous as that bound's hypotheses.
+/// (proofs/B40–B48), so the answer is only as rigorous as that bound's hypotheses.
 ///
 /// ```
 /// use penner::predicates::tolerance::abs_at_most;

@@ -5,14 +5,18 @@
 //! - `pub fn check_gauss_bonnet<T: Real>(mesh: &Mesh, lengths: &[T], settings: &Settings) -> Verdict`
 //!   (numerical, tolerance proofs/B42);
 //! - `pub fn verify_gauss_bonnet<T: Real>(mesh: &Mesh, lengths: &[T], curvature: &[T], settings: &Settings) -> Verdict`
-//!   (the comparison, for claimed curvatures).
+//!   (the comparison, for claimed curvatures);
+//! - `pub fn check_gauss_bonnet_certified<B: IntervalBound>(mesh: &Mesh, squared_lengths: &[Rational], ctx: B::Ctx) -> Verdict`
+//!   (certified: the same generic code on `Interval<B>`, e.g. `B = Mpfr`, proofs/B50);
+//! - `pub fn verify_gauss_bonnet_certified<B: IntervalBound>(mesh: &Mesh, curvature: &[Interval<B>]) -> Verdict`.
 
 use super::bounds::{corner_angle_error, eps, sum_error};
 use super::report::{check_lengths, Tally};
 use super::verdict::{Settings, Verdict};
 use crate::geometry::curvature::{curvature, gauss_bonnet_target};
 use crate::mesh::Mesh;
-use crate::scalar::Real;
+use crate::scalar::{Interval, IntervalBound, Real};
+use rug::Rational;
 
 /// B42: bound on `|fl(Σ K + Σ k) − (Σ K + Σ k)|` plus the rounding of `2πχ`, for the
 /// computation of [`curvature`] and a recursive sum, from the `f64` approximations of the
@@ -103,4 +107,116 @@ pub fn verify_gauss_bonnet<T: Real>(
     let mut tally = Tally::new(false, T::precision_bits(ctx));
     tally.within("surface", "Σ K + Σ k − 2πχ", &err, tol);
     tally.verdict()
+}
+
+
+/// The slack exponent `c` of the certified width bound `2^(−p+c)` (proofs/B50):
+/// `c = 10 + ⌈log₂(3F + 2V + 2)⌉` — at most `3F + 2V + 2` rounded terms (corners, `2π` and
+/// `K_i` per vertex, the target), each enclosed within `2^8` ulps of a magnitude `< 4`.
+pub fn certified_width_exponent(mesh: &Mesh) -> i32 {
+    let terms = 3 * mesh.n_faces() + 2 * mesh.n_vertices() + 2;
+    10 + (terms as f64).log2().ceil() as i32
+}
+
+/// T01, certified: encloses the lengths `√(ℓ²)` from exact rational squared lengths at
+/// `ctx`, runs the generic [`curvature`] on `Interval<B>` and decides with
+/// [`verify_gauss_bonnet_certified`]. Rational lengths `ℓ` are passed as `ℓ²`.
+///
+/// ```
+/// use penner::mesh::Mesh;
+/// use penner::scalar::{Mpfr, Precision};
+/// use penner::theorems::t01_gauss_bonnet::check_gauss_bonnet_certified;
+/// use penner::theorems::Verdict;
+/// use rug::Rational;
+/// let tet = Mesh::from_faces(4, &[[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]]).unwrap();
+/// let sq: Vec<Rational> = (1..=6).map(|k| Rational::from((10 + k, 10))).collect();
+/// let v = check_gauss_bonnet_certified::<Mpfr>(&tet, &sq, Precision::new(256).unwrap());
+/// assert!(matches!(v, Verdict::Holds { certified: true, .. }));
+/// ```
+pub fn check_gauss_bonnet_certified<B: IntervalBound>(
+    mesh: &Mesh,
+    squared_lengths: &[Rational],
+    ctx: B::Ctx,
+) -> Verdict {
+    if let Some(v) = super::report::check_rational_lengths(mesh, squared_lengths) {
+        return v;
+    }
+    let l: Vec<Interval<B>> = squared_lengths
+        .iter()
+        .map(|q| Interval::<B>::from_rational(q, ctx).sqrt())
+        .collect();
+    verify_gauss_bonnet_certified(mesh, &curvature(mesh, &l))
+}
+
+/// The certified comparison of T01 on enclosures of the per-vertex curvatures: with `d` the
+/// enclosure of `Σ curvature − 2πχ`,
+/// - `Holds { certified: true, max_error: width }` when `0 ∈ d` (the enclosure of
+///   `Σ K + Σ k` meets that of `2πχ`) and `width(d) ≤ 2^(−p+c)`,
+///   `c` = [`certified_width_exponent`];
+/// - `Fails { certified: true }` when `0 ∉ d` (a rigorous refutation);
+/// - `Undecided` when `d` is invalid (a face violates the triangle inequality, so an angle
+///   is undefined) or wider than `2^(−p+c)`.
+pub fn verify_gauss_bonnet_certified<B: IntervalBound>(
+    mesh: &Mesh,
+    curvature: &[Interval<B>],
+) -> Verdict {
+    let Some(k0) = curvature.first() else {
+        return Verdict::NotApplicable {
+            reason: "no vertices".to_string(),
+        };
+    };
+    if curvature.len() != mesh.n_vertices() {
+        return Verdict::NotApplicable {
+            reason: format!(
+                "{} curvatures given for {} vertices",
+                curvature.len(),
+                mesh.n_vertices()
+            ),
+        };
+    }
+    let ctx = k0.ctx();
+    let mut total = k0.zero_like();
+    for x in curvature {
+        total += x;
+    }
+    let d = total - &gauss_bonnet_target::<Interval<B>>(mesh, ctx);
+    let bits = <Interval<B> as Real>::precision_bits(ctx);
+    let width = d.width_f64();
+    let c = certified_width_exponent(mesh);
+    let limit = f64::from(c - bits as i32).exp2();
+    let witness = |detail: String| super::verdict::Witness {
+        element: "surface".to_string(),
+        detail,
+        value: width,
+    };
+    if !d.is_valid() {
+        return Verdict::Undecided {
+            bits_tried: bits,
+            witnesses: vec![witness(
+                "enclosure invalid (a face violates the triangle inequality?)".to_string(),
+            )],
+        };
+    }
+    if !d.contains_zero() {
+        return Verdict::Fails {
+            certified: true,
+            witnesses: vec![witness(format!(
+                "enclosure of Σ K + Σ k − 2πχ excludes 0 (lower end {:e})",
+                d.lo().approx_f64()
+            ))],
+        };
+    }
+    if width <= limit {
+        Verdict::Holds {
+            certified: true,
+            max_error: width,
+        }
+    } else {
+        Verdict::Undecided {
+            bits_tried: bits,
+            witnesses: vec![witness(format!(
+                "enclosure contains 0 but is wider than 2^(−{bits}+{c})"
+            ))],
+        }
+    }
 }

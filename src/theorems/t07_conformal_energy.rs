@@ -14,7 +14,7 @@ use crate::geometry::energy::{cauchy_riemann_energy, dirichlet_energy, signed_ar
 use crate::mesh::Mesh;
 use crate::scalar::Real;
 
-/// The two sides of T07 with the error bound of their difference (proofs/B47).
+/// The two sides of T07 with the error bound of their difference (proofs/B48).
 #[derive(Clone, Debug, PartialEq)]
 pub struct EnergyTerms<T> {
     /// `E_D(f)` from cotan weights.
@@ -82,8 +82,8 @@ pub fn verify_conformal_energy<T: Real>(terms: &EnergyTerms<T>, settings: &Setti
     tally.verdict()
 }
 
-/// B47: bound on the rounding error of `E_D − A − E_CR` as computed by
-/// [`check_conformal_energy`] (derivation in proofs/B47).
+/// B48: bound on the rounding error of `E_D − A − E_CR` as computed by
+/// [`check_conformal_energy`] (derivation in proofs/B48).
 pub fn energy_error_bound<T: Real>(mesh: &Mesh, lengths: &[T], f: &[[T; 2]]) -> f64 {
     let e = eps::<T>(lengths[0].ctx());
     let l: Vec<f64> = lengths.iter().map(Real::approx_f64).collect();

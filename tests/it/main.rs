@@ -17,5 +17,6 @@ mod scalar_dd;
 mod strategies;
 #[allow(dead_code)] // helpers used by some areas only
 mod support;
+mod theorems_certified;
 mod theorems_fixed;
 mod tidy;
