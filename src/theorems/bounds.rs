@@ -15,6 +15,7 @@ use crate::scalar::Real;
 pub const SAFETY: f64 = 2.0;
 
 /// `ε = 16u` for the backend of `ctx` (proofs/B40).
+// proof: B40
 pub fn eps<T: Real>(ctx: T::Ctx) -> f64 {
     16.0 * T::unit_roundoff(ctx)
 }
@@ -36,6 +37,7 @@ fn two_step(partial: f64, x: f64, eps: f64) -> f64 {
 
 /// B40: bound on `|fl(α) − α|` for [`crate::geometry::triangle::corner_angle`] with sides
 /// `a, b, c` (angle opposite `a`): `sin α (Σρ_i + 5ε) + 2εα`, times [`SAFETY`].
+// proof: B40
 pub fn corner_angle_error(a: f64, b: f64, c: f64, eps: f64) -> f64 {
     let x = [a - b + c, a + b - c, a + b + c, b + c - a];
     let p = [a - b, a + b, a + b, b + c];
@@ -48,6 +50,7 @@ pub fn corner_angle_error(a: f64, b: f64, c: f64, eps: f64) -> f64 {
 
 /// B41: bound on the rounding error of a recursive sum of `terms` (any summation order):
 /// `(n − 1) ε Σ|x_i|`, times [`SAFETY`] (Higham, *Accuracy and Stability*, §4.2).
+// proof: B41
 pub fn sum_error(terms: impl IntoIterator<Item = f64>, eps: f64) -> f64 {
     let (n, s) = terms
         .into_iter()
@@ -59,6 +62,7 @@ pub fn sum_error(terms: impl IntoIterator<Item = f64>, eps: f64) -> f64 {
 /// B44: bound on `|fl(cot α) − cot α|` for [`crate::geometry::triangle::cot_opposite`]
 /// with sides `a, b, c` (angle opposite `a`): `(3ε(a²+b²+c²) + |N| ρ_A)/(4A) + ε|cot|`
 /// with `ρ_A = ½(Σρ_i + 3ε) + ε` the relative error of Kahan's area.
+// proof: B44
 pub fn cot_error(a: f64, b: f64, c: f64, eps: f64) -> f64 {
     let mut s = [a, b, c];
     s.sort_by(|x, y| y.total_cmp(x));
@@ -78,6 +82,7 @@ pub fn cot_error(a: f64, b: f64, c: f64, eps: f64) -> f64 {
 /// B45: relative error bound of a product/quotient of `k` factors, each carrying relative
 /// error at most `rel_each`, formed with `k − 1` roundings: `k·rel_each + (k − 1)ε`, times
 /// [`SAFETY`].
+// proof: B45
 pub fn product_rel_error(k: usize, rel_each: f64, eps: f64) -> f64 {
     let first = k as f64 * rel_each + k.saturating_sub(1) as f64 * eps;
     finish(first, first)
@@ -85,6 +90,7 @@ pub fn product_rel_error(k: usize, rel_each: f64, eps: f64) -> f64 {
 
 /// B45: relative error of `fl(exp((u_i + u_j)/2))` for exactly stored `u_i, u_j`:
 /// `ε(|u_i + u_j|/2 + 3)` (sum, halving exact, exp with a perturbed argument).
+// proof: B45
 pub fn scale_factor_rel_error(ui: f64, uj: f64, eps: f64) -> f64 {
     let first = eps * (0.5 * (ui + uj).abs() + 3.0);
     finish(first, first)

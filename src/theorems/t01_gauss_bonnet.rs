@@ -109,7 +109,6 @@ pub fn verify_gauss_bonnet<T: Real>(
     tally.verdict()
 }
 
-
 /// The slack exponent `c` of the certified width bound `2^(−p+c)` (proofs/B50):
 /// `c = 10 + ⌈log₂(3F + 2V + 2)⌉` — at most `3F + 2V + 2` rounded terms (corners, `2π` and
 /// `K_i` per vertex, the target), each enclosed within `2^8` ulps of a magnitude `< 4`.

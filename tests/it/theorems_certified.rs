@@ -8,7 +8,9 @@ use penner::mesh::Mesh;
 use penner::predicates::cotan::CotanWeightSign;
 use penner::scalar::{Interval, Mpfr, Precision, Real, Sign};
 use penner::theorems::bounds::{corner_angle_error, cot_error, eps};
-use penner::theorems::t01_gauss_bonnet::{check_gauss_bonnet_certified, verify_gauss_bonnet_certified};
+use penner::theorems::t01_gauss_bonnet::{
+    check_gauss_bonnet_certified, verify_gauss_bonnet_certified,
+};
 use penner::theorems::Verdict;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -48,8 +50,16 @@ fn surfaces() -> Vec<(&'static str, Mesh, Vec<Rational>)> {
     let t = builders::flat_torus(3, 4).unwrap();
     out.push(("flat torus", t.mesh, t.squared_lengths));
     let q = |a: i64, b: i64| Rational::from((a, b));
-    out.push(("one-vertex torus", builders::one_vertex_torus(), vec![q(9, 1), q(16, 1), q(121, 4)]));
-    out.push(("two-triangle sphere", builders::two_triangle_sphere(), vec![q(4, 1), q(9, 1), q(16, 1)]));
+    out.push((
+        "one-vertex torus",
+        builders::one_vertex_torus(),
+        vec![q(9, 1), q(16, 1), q(121, 4)],
+    ));
+    out.push((
+        "two-triangle sphere",
+        builders::two_triangle_sphere(),
+        vec![q(4, 1), q(9, 1), q(16, 1)],
+    ));
     out
 }
 
@@ -59,8 +69,14 @@ fn t01_certified_enclosure_contains_two_pi_chi_with_width_bound() {
         for (name, m, sq) in surfaces() {
             let v = check_gauss_bonnet_certified::<Mpfr>(&m, &sq, prec(bits));
             match v {
-                Verdict::Holds { certified: true, max_error } => {
-                    eprintln!("t01 certified {name} at {bits} bits: width {max_error:.3e} = 2^{:.1}", max_error.log2());
+                Verdict::Holds {
+                    certified: true,
+                    max_error,
+                } => {
+                    eprintln!(
+                        "t01 certified {name} at {bits} bits: width {max_error:.3e} = 2^{:.1}",
+                        max_error.log2()
+                    );
                 }
                 other => panic!("{name} at {bits} bits: {other:?}"),
             }
@@ -73,11 +89,23 @@ fn t01_certified_rejects_shifted_curvature_enclosure() {
     for (bits, shift) in [(128_u64, 1e-30), (256, 1e-60), (256, 1e-12)] {
         for (name, m, sq) in surfaces() {
             let p = prec(bits);
-            let l: Vec<Interval<Mpfr>> = sq.iter().map(|q| Interval::<Mpfr>::from_rational(q, p).sqrt()).collect();
+            let l: Vec<Interval<Mpfr>> = sq
+                .iter()
+                .map(|q| Interval::<Mpfr>::from_rational(q, p).sqrt())
+                .collect();
             let mut k = curvature(&m, &l);
             k[0] += &Interval::<Mpfr>::from_f64(shift, p);
             let v = verify_gauss_bonnet_certified(&m, &k);
-            assert!(matches!(v, Verdict::Fails { certified: true, .. }), "{name} at {bits} bits, shift {shift:e}: {v:?}");
+            assert!(
+                matches!(
+                    v,
+                    Verdict::Fails {
+                        certified: true,
+                        ..
+                    }
+                ),
+                "{name} at {bits} bits, shift {shift:e}: {v:?}"
+            );
         }
     }
 }
@@ -124,19 +152,36 @@ fn reference_angle(t: [f64; 3]) -> Mpfr {
 #[test]
 fn b40_corner_angle_error_bound_holds_against_mpfr_1024() {
     for t in triangles(71, crate::support::cases(300, 100_000)) {
-        for (k, s) in [[t[0], t[1], t[2]], [t[1], t[2], t[0]], [t[2], t[0], t[1]]].into_iter().enumerate() {
+        for (k, s) in [[t[0], t[1], t[2]], [t[1], t[2], t[0]], [t[2], t[0], t[1]]]
+            .into_iter()
+            .enumerate()
+        {
             let exact = reference_angle(s);
             // f64
             let got = corner_angle(&s[0], &s[1], &s[2]);
             let bound = corner_angle_error(s[0], s[1], s[2], eps::<f64>(()));
-            let err = (Mpfr::from_f64(got, prec(1024)) - &exact).abs().approx_f64();
-            assert!(err <= bound, "f64 {s:?} corner {k}: error {err:e} > bound {bound:e}");
+            let err = (Mpfr::from_f64(got, prec(1024)) - &exact)
+                .abs()
+                .approx_f64();
+            assert!(
+                err <= bound,
+                "f64 {s:?} corner {k}: error {err:e} > bound {bound:e}"
+            );
             // MPFR-128
             let p = prec(128);
-            let got = corner_angle(&Mpfr::from_f64(s[0], p), &Mpfr::from_f64(s[1], p), &Mpfr::from_f64(s[2], p));
+            let got = corner_angle(
+                &Mpfr::from_f64(s[0], p),
+                &Mpfr::from_f64(s[1], p),
+                &Mpfr::from_f64(s[2], p),
+            );
             let bound = corner_angle_error(s[0], s[1], s[2], eps::<Mpfr>(p));
-            let err = (Mpfr(rug::Float::with_val(1024, got.as_float())) - &exact).abs().approx_f64();
-            assert!(err <= bound, "mpfr-128 {s:?} corner {k}: error {err:e} > bound {bound:e}");
+            let err = (Mpfr(rug::Float::with_val(1024, got.as_float())) - &exact)
+                .abs()
+                .approx_f64();
+            assert!(
+                err <= bound,
+                "mpfr-128 {s:?} corner {k}: error {err:e} > bound {bound:e}"
+            );
         }
     }
 }
@@ -154,7 +199,11 @@ fn b44_cotangent_error_bound_holds_against_mpfr_1024() {
     for t in triangles(73, crate::support::cases(300, 100_000)) {
         if t[2] > 1e-6 {
             let p = prec(1024);
-            let exact = cot_opposite(&Mpfr::from_f64(t[0], p), &Mpfr::from_f64(t[1], p), &Mpfr::from_f64(t[2], p));
+            let exact = cot_opposite(
+                &Mpfr::from_f64(t[0], p),
+                &Mpfr::from_f64(t[1], p),
+                &Mpfr::from_f64(t[2], p),
+            );
             let got = cot_opposite(&t[0], &t[1], &t[2]);
             let bound = cot_error(t[0], t[1], t[2], eps::<f64>(()));
             let err = (Mpfr::from_f64(got, p) - &exact).abs().approx_f64();
@@ -171,7 +220,10 @@ fn b49_cotan_weight_sign_exact_agrees_with_mpfr_1024() {
         // Two triangles on a common edge from rational planar points: i, j on the x-axis,
         // k above, l below (a convex or non-convex quadrilateral).
         let q = |rng: &mut ChaCha8Rng, lo: i64, hi: i64| Rational::from((rng.gen_range(lo..hi), 8));
-        let (i, j) = ([q(&mut rng, -20, 0), Rational::new()], [q(&mut rng, 1, 20), Rational::new()]);
+        let (i, j) = (
+            [q(&mut rng, -20, 0), Rational::new()],
+            [q(&mut rng, 1, 20), Rational::new()],
+        );
         let k = [q(&mut rng, -30, 30), q(&mut rng, 1, 30)];
         let l = [q(&mut rng, -30, 30), q(&mut rng, -30, -1)];
         let d2 = |a: &[Rational; 2], b: &[Rational; 2]| {
@@ -197,7 +249,10 @@ fn b49_cotan_weight_sign_exact_agrees_with_mpfr_1024() {
         }
         seen[s as usize] += 1;
     }
-    assert!(seen[0] > 0 && seen[2] > 0, "both signs must occur: {seen:?}");
+    assert!(
+        seen[0] > 0 && seen[2] > 0,
+        "both signs must occur: {seen:?}"
+    );
 }
 
 #[test]
@@ -211,7 +266,11 @@ fn b49_cotan_weight_sign_cocircular_is_zero() {
     assert_eq!(p.sign_exact(), Some(Sign::Zero));
     // Negative control: stretch one side, the weight becomes nonzero.
     let p = CotanWeightSign {
-        first: [Rational::from(2), Rational::from((11, 10)), Rational::from(1)],
+        first: [
+            Rational::from(2),
+            Rational::from((11, 10)),
+            Rational::from(1),
+        ],
         second: [Rational::from(2), Rational::from(1), Rational::from(1)],
     };
     assert_ne!(p.sign_exact(), Some(Sign::Zero));
