@@ -1,7 +1,7 @@
 //! The only place a number becomes a decision: certified signs and the escalation ladder.
+pub mod cotan;
 pub mod delaunay;
 pub mod directed;
-pub mod cotan;
 mod filter;
 pub mod ladder;
 pub mod planar;
