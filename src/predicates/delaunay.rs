@@ -271,11 +271,13 @@ const FILTER_ABS: f64 = 9.332636185032189e-302;
 /// bound does not separate it from zero or the lengths span more than 2²⁰⁰ (proof: B61).
 #[inline]
 pub fn filter_f64(q: [f64; 5]) -> Option<Sign> {
+    // Biased exponent in [823, 1222] ⇔ 2⁻²⁰⁰ ≤ x < 2²⁰⁰ for positive x; zero, negative,
+    // subnormal, infinite and NaN inputs fail (sign bit or exponent out of range).
+    let in_range = |x: f64| (x.to_bits() >> 52).wrapping_sub(823) < 400;
     let [a, b, c, d, e] = q;
-    let lo = a.min(b).min(c).min(d).min(e);
-    let hi = a.max(b).max(c).max(d).max(e);
-    // `!(lo >= SAFE_LO)` also catches NaN.
-    if !(lo >= SAFE_LO && hi <= SAFE_HI) {
+    if !(in_range(a) & in_range(b) & in_range(c) & in_range(d) & in_range(e)) {
+        let lo = a.min(b).min(c).min(d).min(e);
+        let hi = a.max(b).max(c).max(d).max(e);
         return filter_rescaled(q, lo, hi);
     }
     filter_core(a, b, c, d, e)
