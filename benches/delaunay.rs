@@ -35,7 +35,11 @@ fn cotan_laplacian(mesh: &Mesh, l: &[f64]) -> Vec<(u32, u32, f64)> {
             diag[j as usize] += w;
         }
     }
-    t.extend(diag.iter().enumerate().map(|(i, &d)| (i as u32, i as u32, d)));
+    t.extend(
+        diag.iter()
+            .enumerate()
+            .map(|(i, &d)| (i as u32, i as u32, d)),
+    );
     t
 }
 
@@ -70,12 +74,20 @@ fn bench(c: &mut Criterion) {
         let l = e.lengths(&m);
         if let Some(dir) = &export {
             let _ = std::fs::create_dir_all(dir);
-            let _ = std::fs::write(std::path::Path::new(dir).join(format!("{name}.obj")), e.obj());
+            let _ = std::fs::write(
+                std::path::Path::new(dir).join(format!("{name}.obj")),
+                e.obj(),
+            );
         }
         // One run outside the timer: flip counts and certification summary.
         let (mut m1, mut l1) = (m.clone(), l.clone());
-        let r = flip_to_delaunay(&mut m1, &mut l1, FlipKind::Euclidean, &FlipOptions::default())
-            .expect("valid lengths");
+        let r = flip_to_delaunay(
+            &mut m1,
+            &mut l1,
+            FlipKind::Euclidean,
+            &FlipOptions::default(),
+        )
+        .expect("valid lengths");
         let (mut m2, mut l2) = (m.clone(), l.clone());
         let nr = flip_to_delaunay_naive(&mut m2, &mut l2, FlipKind::Euclidean, usize::MAX);
         eprintln!(
@@ -93,8 +105,13 @@ fn bench(c: &mut Criterion) {
             b.iter_batched(
                 || (m.clone(), l.clone()),
                 |(mut mm, mut ll)| {
-                    flip_to_delaunay(&mut mm, &mut ll, FlipKind::Euclidean, &FlipOptions::default())
-                        .map(|r| r.flips)
+                    flip_to_delaunay(
+                        &mut mm,
+                        &mut ll,
+                        FlipKind::Euclidean,
+                        &FlipOptions::default(),
+                    )
+                    .map(|r| r.flips)
                 },
                 BatchSize::LargeInput,
             );
