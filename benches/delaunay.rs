@@ -5,6 +5,8 @@
 //! `cargo bench --bench delaunay` (set `PENNER_BENCH_LARGE=1` for the 10⁶-face mesh and
 //! `PENNER_EXPORT_MESHES=<dir>` to write the meshes as OBJ for `benches/peers/`).
 
+#![allow(missing_docs)] // criterion_group! generates an undocumented function
+
 #[path = "../tests/it/meshgen.rs"]
 mod meshgen;
 
