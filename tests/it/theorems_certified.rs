@@ -275,3 +275,46 @@ fn b49_cotan_weight_sign_cocircular_is_zero() {
     };
     assert_ne!(p.sign_exact(), Some(Sign::Zero));
 }
+
+#[test]
+fn t05_cotan_weight_sign_matches_the_delaunay_predicate() {
+    // Cot-form (Heron, this crate's cotan predicate) against the cos-form Delaunay
+    // predicate on squared lengths: independent formulas, same sign (MATH.md §5).
+    use penner::predicates::delaunay::{delaunay_sign_squared, Quad};
+    let mut rng = ChaCha8Rng::seed_from_u64(83);
+    let mut seen = [0usize; 3];
+    for _ in 0..crate::support::cases(500, 100_000) {
+        let q = |rng: &mut ChaCha8Rng, lo: i64, hi: i64| Rational::from((rng.gen_range(lo..hi), 4));
+        let (i, j) = (
+            [q(&mut rng, -20, 0), Rational::new()],
+            [q(&mut rng, 1, 20), Rational::new()],
+        );
+        let k = [q(&mut rng, -30, 30), q(&mut rng, 1, 30)];
+        let l = [q(&mut rng, -30, 30), q(&mut rng, -30, -1)];
+        let d2 = |a: &[Rational; 2], b: &[Rational; 2]| {
+            let dx = Rational::from(&a[0] - &b[0]);
+            let dy = Rational::from(&a[1] - &b[1]);
+            Rational::from(&dx * &dx) + Rational::from(&dy * &dy)
+        };
+        let (ij, jk, ki, il, lj) = (d2(&i, &j), d2(&j, &k), d2(&k, &i), d2(&i, &l), d2(&l, &j));
+        let cot = CotanWeightSign {
+            first: [ij.clone(), jk.clone(), ki.clone()],
+            second: [ij.clone(), il.clone(), lj.clone()],
+        }
+        .sign_exact()
+        .unwrap();
+        let d = delaunay_sign_squared(Quad {
+            ij: &ij,
+            jk: &jk,
+            ki: &ki,
+            il: &il,
+            lj: &lj,
+        });
+        assert_eq!(cot, d);
+        seen[cot as usize] += 1;
+    }
+    assert!(
+        seen[0] > 0 && seen[2] > 0,
+        "both signs must occur: {seen:?}"
+    );
+}
