@@ -1,6 +1,7 @@
 //! The integration test crate: one module per area.
 
 mod cli;
+mod cone_angles_kernel;
 mod delaunay;
 mod delaunay_flips;
 mod dual;

@@ -1,0 +1,298 @@
+//! The fast cone-angle kernel (proofs B15, B16) against the per-corner sum in MPFR-512.
+
+use crate::support::cases;
+use penner::geometry::cone_angles::{
+    cone_angles, cone_angles_per_corner, corner_direction, unwrap_angle,
+};
+use penner::mesh::{Edge, Mesh};
+use penner::scalar::{Dd, Mpfr, Precision, Real};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use std::f64::consts::PI;
+
+/// A closed fan: apex 0, rim 1..=n, faces `[0, i, i+1]`, apex angles `alpha[i]`; spokes
+/// have length 1 and rim edges `2 sin(α/2)`. Returns the mesh and f64 edge lengths.
+fn fan(alpha: &[f64]) -> (Mesh, Vec<f64>) {
+    let n = alpha.len() as u32;
+    let faces: Vec<[u32; 3]> = (0..n).map(|i| [0, 1 + i, 1 + (i + 1) % n]).collect();
+    let mesh = Mesh::from_faces(n + 1, &faces).expect("valid fan");
+    let mut len = vec![1.0; mesh.n_edges()];
+    for f in mesh.faces() {
+        for h in mesh.face_halfedges(f) {
+            let (t, p) = (mesh.tail(h).idx(), mesh.tip(h).idx());
+            if t != 0 && p != 0 {
+                // Rim edge between rim vertices t and t+1 (cyclically): face index t−1.
+                let i = if (t % n as usize) + 1 == p {
+                    t - 1
+                } else {
+                    p - 1
+                };
+                len[h.edge().idx()] = 2.0 * (alpha[i] / 2.0).sin();
+            }
+        }
+    }
+    (mesh, len)
+}
+
+/// A triangulated torus grid `nu × nv` embedded in ℝ³ with jittered vertices; edge
+/// lengths are Euclidean distances (so every triangle inequality holds).
+fn torus(nu: u32, nv: u32, seed: u64) -> (Mesh, Vec<f64>) {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let id = |i: u32, j: u32| (i % nu) * nv + (j % nv);
+    let mut faces = Vec::new();
+    for i in 0..nu {
+        for j in 0..nv {
+            faces.push([id(i, j), id(i + 1, j), id(i + 1, j + 1)]);
+            faces.push([id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
+        }
+    }
+    let mesh = Mesh::from_faces(nu * nv, &faces).expect("valid torus");
+    let pos: Vec<[f64; 3]> = (0..nu * nv)
+        .map(|k| {
+            let (i, j) = (k / nv, k % nv);
+            let u = 2.0 * PI * (f64::from(i) + rng.gen_range(-0.2..0.2)) / f64::from(nu);
+            let v = 2.0 * PI * (f64::from(j) + rng.gen_range(-0.2..0.2)) / f64::from(nv);
+            let r = 1.0 + 0.4 * v.cos();
+            [r * u.cos(), r * u.sin(), 0.4 * v.sin()]
+        })
+        .collect();
+    let len = mesh
+        .edges()
+        .map(|e: Edge| {
+            let h = e.halfedge();
+            let (p, q) = (pos[mesh.tail(h).idx()], pos[mesh.tip(h).idx()]);
+            ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt()
+        })
+        .collect();
+    (mesh, len)
+}
+
+/// Reference cone angles: per-corner sum in MPFR-512 of the exact f64 lengths.
+fn reference(mesh: &Mesh, len: &[f64]) -> Vec<Mpfr> {
+    let p = Precision::new(512).expect("valid precision");
+    let l: Vec<Mpfr> = len.iter().map(|&x| Mpfr::from_f64(x, p)).collect();
+    cone_angles_per_corner(mesh, &l)
+}
+
+fn err(x: &impl Real, r: &Mpfr) -> f64 {
+    let d = x.to_rational().expect("finite") - r.to_rational().expect("finite");
+    d.abs().to_f64()
+}
+
+/// Corners per vertex.
+fn valence(mesh: &Mesh) -> Vec<usize> {
+    let mut k = vec![0; mesh.n_vertices()];
+    for f in mesh.faces() {
+        for v in mesh.face_vertices(f) {
+            k[v.idx()] += 1;
+        }
+    }
+    k
+}
+
+/// B16's bound for a vertex with `n` corners and cone angle `θ` at unit roundoff `u`.
+fn b16_bound(n: usize, theta: f64, u: f64) -> f64 {
+    (16.0 * n as f64 + 16.0) * u * theta.abs().max(1.0)
+}
+
+/// Fans whose apex sum sits on or next to the places where the winding is decided:
+/// multiples of 2π, odd multiples of π (the branch cut), and the quarter-turn rounding
+/// boundaries (m + ½)·π/2; with 3 to 2000 corners.
+fn winding_fans(count: usize) -> Vec<Vec<f64>> {
+    let mut rng = ChaCha8Rng::seed_from_u64(15);
+    (0..count)
+        .map(|i| {
+            let n = [3usize, 7, 12, 50, 200, 2000][i % 6];
+            let kmax = (n as f64 * 0.9 / 2.0).floor().max(1.0) as i32; // α < π
+            let k = f64::from(rng.gen_range(1..=kmax.min(40)));
+            let target = match i % 3 {
+                0 => 2.0 * PI * k,
+                1 => PI * (2.0 * k - 1.0),
+                _ => (4.0 * k + 0.5) * PI / 2.0,
+            } + rng.gen_range(-1.0..1.0) * 10f64.powi(-rng.gen_range(3..15));
+            let mut alpha = vec![target / n as f64; n];
+            // Unequal corners with the same sum.
+            for j in 0..n / 2 {
+                let d = rng.gen_range(-0.3..0.3) * alpha[j].min(PI - alpha[j]);
+                alpha[j] += d;
+                alpha[n - 1 - j] -= d;
+            }
+            alpha
+        })
+        .collect()
+}
+
+/// Checks every vertex of `mesh` in backend `T` against the MPFR-512 reference within
+/// B16's bound; returns the worst error in units of the bound.
+fn check_backend<T: Real>(mesh: &Mesh, len: &[f64], ctx: T::Ctx, refs: &[Mpfr]) -> f64 {
+    let l: Vec<T> = len.iter().map(|&x| T::from_f64(x, ctx)).collect();
+    let got = cone_angles(mesh, &l);
+    let u = T::unit_roundoff(ctx);
+    let val = valence(mesh);
+    let mut worst = 0.0_f64;
+    for (v, (g, r)) in got.iter().zip(refs).enumerate() {
+        let e = err(g, r) / b16_bound(val[v], r.approx_f64(), u);
+        worst = worst.max(e);
+    }
+    worst
+}
+
+#[test]
+fn b15_winding_recovered_near_multiples_of_2pi_and_the_cut() {
+    let fans = winding_fans(cases(60, 3000));
+    let p128 = Precision::new(128).expect("valid precision");
+    for alpha in &fans {
+        let (mesh, len) = fan(alpha);
+        let refs = reference(&mesh, &len);
+        // The hypothesis of B15: the f64 sum of the corner estimates is within 10⁻⁶·n of θ.
+        let mut est = 0.0;
+        let l: Vec<Dd> = len.iter().map(|&x| Dd::from_f64(x)).collect();
+        for f in mesh.faces() {
+            let hs = mesh.face_halfedges(f);
+            for i in 0..3 {
+                if mesh.tail(hs[(i + 2) % 3]).idx() == 0 {
+                    let a = &l[hs[i].edge().idx()];
+                    let b = &l[hs[(i + 1) % 3].edge().idx()];
+                    let c = &l[hs[(i + 2) % 3].edge().idx()];
+                    est += corner_direction(a, b, c).2;
+                }
+            }
+        }
+        let gap = (est - refs[0].approx_f64()).abs();
+        assert!(gap < 1e-6 * alpha.len() as f64, "estimate off by {gap}");
+        // A wrong winding is off by ≥ 2π − tiny; B16's bound is far below 1.
+        for w in [
+            check_backend::<f64>(&mesh, &len, (), &refs),
+            check_backend::<Dd>(&mesh, &len, (), &refs),
+            check_backend::<Mpfr>(&mesh, &len, p128, &refs),
+        ] {
+            assert!(
+                w <= 1.0,
+                "{} corners, θ = {}: error {w} × bound",
+                alpha.len(),
+                refs[0].approx_f64()
+            );
+        }
+    }
+}
+
+#[test]
+fn b15_negative_control_wrong_estimate_is_rejected() {
+    // An estimate off by 2π (what a lost turn would give) yields an angle off by 2π.
+    let alpha = vec![2.0 * PI * 3.0 / 20.0 + 1e-9; 20];
+    let (mesh, len) = fan(&alpha);
+    let refs = reference(&mesh, &len);
+    let l: Vec<Dd> = len.iter().map(|&x| Dd::from_f64(x)).collect();
+    let good = cone_angles(&mesh, &l);
+    assert!(err(&good[0], &refs[0]) <= b16_bound(20, 6.0 * PI, Dd::unit_roundoff(())));
+    // Rebuild the apex product and unwrap it with a shifted estimate.
+    let (mut re, mut im) = (Dd::from_f64(1.0), Dd::from_f64(0.0));
+    let mut est = 0.0;
+    for f in mesh.faces() {
+        let hs = mesh.face_halfedges(f);
+        for i in 0..3 {
+            if mesh.tail(hs[(i + 2) % 3]).idx() == 0 {
+                let (wr, wi, e) = corner_direction(
+                    &l[hs[i].edge().idx()],
+                    &l[hs[(i + 1) % 3].edge().idx()],
+                    &l[hs[(i + 2) % 3].edge().idx()],
+                );
+                (re, im) = (re * wr - im * wi, re * wi + im * wr);
+                est += e;
+            }
+        }
+    }
+    let right = unwrap_angle(&re, &im, est);
+    assert!(err(&right, &refs[0]) <= b16_bound(20, 6.0 * PI, Dd::unit_roundoff(())));
+    let wrong = unwrap_angle(&re, &im, est + 2.0 * PI);
+    assert!(err(&wrong, &refs[0]) > 6.0, "a lost turn was not detected");
+}
+
+#[test]
+fn b16_cone_angles_accuracy_comparable_to_per_corner_sum() {
+    let (mesh, len) = torus(12, 10, 16);
+    let mut meshes = vec![(mesh, len)];
+    for alpha in winding_fans(cases(12, 300)) {
+        meshes.push(fan(&alpha));
+    }
+    for (mesh, len) in &meshes {
+        let refs = reference(mesh, len);
+        let p128 = Precision::new(128).expect("valid precision");
+        let p256 = Precision::new(256).expect("valid precision");
+        let w = [
+            check_backend::<f64>(mesh, len, (), &refs),
+            check_backend::<Dd>(mesh, len, (), &refs),
+            check_backend::<Mpfr>(mesh, len, p128, &refs),
+            check_backend::<Mpfr>(mesh, len, p256, &refs),
+        ];
+        assert!(
+            w.iter().all(|&x| x <= 1.0),
+            "errors in units of B16's bound: {w:?}"
+        );
+    }
+}
+
+#[test]
+fn b16_measured_errors_of_kernel_and_per_corner_sum() {
+    // Reports both errors in units of n·u (the per-corner sum is the comparison baseline).
+    let (mesh, len) = torus(16, 12, 161);
+    let refs = reference(&mesh, &len);
+    let val = valence(&mesh);
+    let report = |name: &str, fast: &[f64], slow: &[f64]| {
+        let fm = fast.iter().copied().fold(0.0, f64::max);
+        let sm = slow.iter().copied().fold(0.0, f64::max);
+        eprintln!("b16 {name}: kernel {fm:.3} n·u, per-corner {sm:.3} n·u");
+        fm
+    };
+    let l: Vec<f64> = len.clone();
+    let rel = |e: f64, v: usize, u: f64| e / (val[v] as f64 * u);
+    let f = cone_angles(&mesh, &l);
+    let s = cone_angles_per_corner(&mesh, &l);
+    let u = f64::unit_roundoff(());
+    let fe: Vec<f64> = f
+        .iter()
+        .zip(&refs)
+        .enumerate()
+        .map(|(v, (x, r))| rel(err(x, r), v, u))
+        .collect();
+    let se: Vec<f64> = s
+        .iter()
+        .zip(&refs)
+        .enumerate()
+        .map(|(v, (x, r))| rel(err(x, r), v, u))
+        .collect();
+    let m64 = report("f64", &fe, &se);
+    let l: Vec<Dd> = len.iter().map(|&x| Dd::from_f64(x)).collect();
+    let f = cone_angles(&mesh, &l);
+    let s = cone_angles_per_corner(&mesh, &l);
+    let u = Dd::unit_roundoff(());
+    let fe: Vec<f64> = f
+        .iter()
+        .zip(&refs)
+        .enumerate()
+        .map(|(v, (x, r))| rel(err(x, r), v, u))
+        .collect();
+    let se: Vec<f64> = s
+        .iter()
+        .zip(&refs)
+        .enumerate()
+        .map(|(v, (x, r))| rel(err(x, r), v, u))
+        .collect();
+    let mdd = report("dd", &fe, &se);
+    assert!(m64 <= 16.0 && mdd <= 16.0);
+}
+
+#[test]
+fn b16_negative_control_f64_result_fails_the_dd_bound() {
+    let (mesh, len) = torus(8, 8, 162);
+    let refs = reference(&mesh, &len);
+    let val = valence(&mesh);
+    let f = cone_angles(&mesh, &len);
+    let worst = f
+        .iter()
+        .zip(&refs)
+        .enumerate()
+        .map(|(v, (x, r))| err(x, r) / b16_bound(val[v], r.approx_f64(), Dd::unit_roundoff(())))
+        .fold(0.0, f64::max);
+    assert!(worst > 1.0, "the Dd bound accepted an f64 result ({worst})");
+}
