@@ -83,7 +83,8 @@ impl Mesh {
     pub fn next(&self, h: HalfEdge) -> HalfEdge {
         self.next[h.idx()]
     }
-    /// Previous half-edge around a face: `next(next(h))` for a triangle.
+    /// Previous half-edge around a face: `next(next(h))`. Only meaningful for half-edges
+    /// in a face; boundary loops are longer than three.
     #[inline]
     pub fn prev(&self, h: HalfEdge) -> HalfEdge {
         self.next(self.next(h))

@@ -17,7 +17,9 @@ impl Real for f64 {
     }
 
     fn from_rational(q: &rug::Rational, (): ()) -> f64 {
-        q.to_f64()
+        // `Rational::to_f64` truncates; a 53-bit MPFR float rounds to nearest, and its
+        // conversion to f64 is then exact outside the subnormal range.
+        rug::Float::with_val(53, q).to_f64()
     }
 
     fn pi((): ()) -> f64 {

@@ -80,7 +80,8 @@ pub trait Real:
     /// Exact conversion of a finite `f64` (every backend holds at least 53 bits).
     fn from_f64(x: f64, ctx: Self::Ctx) -> Self;
 
-    /// Conversion of an exact rational, correctly rounded for `f64` and [`Mpfr`], within
+    /// Conversion of an exact rational, correctly rounded for [`Mpfr`] and for `f64` (outside
+    /// the subnormal range, where it may round twice), within
     /// u²(1 + u) relative for [`Dd`] in the normal range (proofs/B09).
     fn from_rational(q: &rug::Rational, ctx: Self::Ctx) -> Self;
 

@@ -72,6 +72,7 @@ pub fn check_delaunay_uniqueness<T: Real>(
 ) -> Verdict {
     let mut reference: Option<PairCounts> = None;
     let mut witnesses = Vec::new();
+    let mut undecided = Vec::new();
     for &seed in seeds {
         let (mut m, mut l) = (mesh.clone(), lengths.to_vec());
         let opts = FlipOptions {
@@ -89,15 +90,20 @@ pub fn check_delaunay_uniqueness<T: Real>(
             Err(reason) => return Verdict::NotApplicable { reason },
         };
         witnesses.extend(bad);
-        // At a tie both diagonals pass: flip it and the new diagonal is a tie again.
+        // At a tie both diagonals pass: flip it and the new diagonal is a tie again. The
+        // flipped length is rounded to the working precision (unless the backend is exact
+        // and the flip rational), so a nonzero sign of the rounded quadrilateral refutes
+        // nothing: it leaves the tie claim undecided, never failed.
         for e in ties {
             let (mut m2, mut l2) = (m.clone(), l.clone());
             if flip_metric(&mut m2, &mut l2, e, kind).is_ok() {
                 let s = edge_delaunay_sign(&m2, &l2, e, &settings.ladder);
                 if !matches!(s, Ok(EdgeDelaunay::Interior(c)) if c.value() == Some(Sign::Zero)) {
-                    witnesses.push(Witness {
+                    undecided.push(Witness {
                         element: e.to_string(),
-                        detail: format!("seed {seed}: tie edge whose flip is not a tie"),
+                        detail: format!(
+                            "seed {seed}: tie edge whose flip, with the new length rounded, is not a certified tie"
+                        ),
                         value: 0.0,
                     });
                 }
@@ -113,15 +119,20 @@ pub fn check_delaunay_uniqueness<T: Real>(
             Some(_) => {}
         }
     }
-    if witnesses.is_empty() {
-        Verdict::Holds {
-            certified: true,
-            max_error: 0.0,
-        }
-    } else {
+    if !witnesses.is_empty() {
         Verdict::Fails {
             certified: true,
             witnesses,
+        }
+    } else if !undecided.is_empty() {
+        Verdict::Undecided {
+            bits_tried: settings.ladder.max_bits,
+            witnesses: undecided,
+        }
+    } else {
+        Verdict::Holds {
+            certified: true,
+            max_error: 0.0,
         }
     }
 }

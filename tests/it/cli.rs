@@ -431,51 +431,50 @@ fn hostile_obj_and_off_are_refused_cleanly() {
 }
 
 /// The two-triangle sphere with sides 3, 4, 5: both faces are one right triangle, so the
-/// hypotenuse is a Delaunay tie (D = 0). The T22 check fails on it (a tie edge whose flip is
-/// not a tie in this Δ-complex), which exercises the failure-file path end to end.
+/// hypotenuse is a Delaunay tie (D = 0). Flipping it at f64 rounds the new length, so the
+/// flipped tie cannot be certified: T22 must answer `undecided` (exit 2), never a
+/// certified failure, and write no failure file.
 const RIGHT_SPHERE: &str =
     r#"{"vertices": 3, "faces": [[0,1,2],[0,2,1]], "lengths": ["3","4","5"]}"#;
 
 #[test]
-fn failing_check_writes_fresh_failure_files_and_replay_reproduces() {
+fn t22_rounded_tie_is_undecided_not_failed_and_writes_no_failure_file() {
     let d = scratch("failure-files");
     let p = write(&d, "right.json", RIGHT_SPHERE.as_bytes());
     let ps = p.display().to_string();
     let out = penner(&["check", &ps, "--only", "T22", "--precision", "f64"]);
     let s = text(&out.stdout);
-    assert_eq!(out.status.code(), Some(1), "{s}\n{}", text(&out.stderr));
-    let first = d.join("right.penner-failure-1.json");
-    assert!(
-        s.contains("right.penner-failure-1.json"),
-        "output names the file: {s}"
+    assert_eq!(out.status.code(), Some(2), "{s}\n{}", text(&out.stderr));
+    assert!(s.contains("undecided"), "{s}");
+    assert!(!d.join("right.penner-failure-1.json").exists());
+}
+
+/// A failure file (as `check` writes them) whose surface no longer fails replays as
+/// "no longer fails" with exit 0; a truncated failure file is bad input.
+#[test]
+fn replay_reruns_a_failure_file_and_refuses_a_corrupted_one() {
+    use penner::oracle::failure::Failure;
+    use penner::oracle::precision::Prec;
+    let d = scratch("replay");
+    let surface = penner::io::json::read(RIGHT_SPHERE).unwrap();
+    let failure = Failure {
+        check: "T01".into(),
+        precision: Prec::F64,
+        source: "right.json".into(),
+        source_faces: 2,
+        witnesses: vec![],
+        surface,
+    };
+    let body = format!("{:#}", failure.to_json());
+    let f = write(&d, "right.penner-failure-1.json", body.as_bytes());
+    let r = penner(&["replay", &f.display().to_string()]);
+    assert_eq!(r.status.code(), Some(0), "{}", text(&r.stdout));
+    assert!(text(&r.stdout).contains("no longer fails"));
+    let bad = write(
+        &d,
+        "bad.penner-failure-1.json",
+        &body.as_bytes()[..body.len() / 2],
     );
-    assert!(first.exists());
-    // A second run never overwrites: it picks the next free name.
-    let before = std::fs::read(&first).unwrap();
-    let out2 = penner(&["check", &ps, "--only", "T22", "--precision", "f64"]);
-    assert_eq!(out2.status.code(), Some(1));
-    assert!(d.join("right.penner-failure-2.json").exists());
-    assert_eq!(std::fs::read(&first).unwrap(), before);
-    // The failure file is valid JSON with witnesses and a surface that replays.
-    let v: serde_json::Value = serde_json::from_slice(&before).unwrap();
-    assert_eq!(v["check"], "T22");
-    assert!(!v["witnesses"].as_array().unwrap().is_empty());
-    let r = penner(&["replay", &first.display().to_string()]);
-    assert_eq!(r.status.code(), Some(1), "{}", text(&r.stdout));
-    assert!(text(&r.stdout).contains("still fails"));
-    // `--no-failure-files` writes nothing.
-    let _ = penner(&[
-        "check",
-        &ps,
-        "--only",
-        "T22",
-        "--precision",
-        "f64",
-        "--no-failure-files",
-    ]);
-    assert!(!d.join("right.penner-failure-3.json").exists());
-    // A corrupted failure file is bad input.
-    let bad = write(&d, "bad.penner-failure-1.json", &before[..before.len() / 2]);
     assert_refused(
         &penner(&["replay", &bad.display().to_string()]),
         3,
