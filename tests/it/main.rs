@@ -2,6 +2,7 @@
 
 mod cli;
 mod cone_angles_kernel;
+mod definition_two;
 mod delaunay;
 mod delaunay_flips;
 mod dual;
