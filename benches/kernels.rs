@@ -8,49 +8,17 @@
 // criterion's macros generate undocumented public functions.
 #![allow(missing_docs)]
 
+#[path = "../tests/it/meshgen.rs"]
+mod meshgen;
+
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use meshgen::jittered_torus;
 use penner::geometry::cone_angles::{cone_angles, cone_angles_per_corner};
-use penner::mesh::Mesh;
 use penner::scalar::{Dd, Mpfr, Precision, Real};
-use rand::{Rng, SeedableRng};
-use rand_chacha::ChaCha8Rng;
-use std::f64::consts::PI;
 use std::hint::black_box;
 
-/// A jittered torus grid with `2·nu·nv` faces and its f64 edge lengths.
-fn torus(nu: u32, nv: u32) -> (Mesh, Vec<f64>) {
-    let mut rng = ChaCha8Rng::seed_from_u64(2026);
-    let id = |i: u32, j: u32| (i % nu) * nv + (j % nv);
-    let mut faces = Vec::with_capacity(2 * (nu * nv) as usize);
-    for i in 0..nu {
-        for j in 0..nv {
-            faces.push([id(i, j), id(i + 1, j), id(i + 1, j + 1)]);
-            faces.push([id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
-        }
-    }
-    let mesh = Mesh::from_faces(nu * nv, &faces).expect("the torus grid is a valid mesh");
-    let pos: Vec<[f64; 3]> = (0..nu * nv)
-        .map(|k| {
-            let (i, j) = (k / nv, k % nv);
-            let u = 2.0 * PI * (f64::from(i) + rng.gen_range(-0.2..0.2)) / f64::from(nu);
-            let v = 2.0 * PI * (f64::from(j) + rng.gen_range(-0.2..0.2)) / f64::from(nv);
-            let r = 1.0 + 0.4 * v.cos();
-            [r * u.cos(), r * u.sin(), 0.4 * v.sin()]
-        })
-        .collect();
-    let len = mesh
-        .edges()
-        .map(|e| {
-            let h = e.halfedge();
-            let (p, q) = (pos[mesh.tail(h).idx()], pos[mesh.tip(h).idx()]);
-            ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt()
-        })
-        .collect();
-    (mesh, len)
-}
-
 fn bench_cone_angles(c: &mut Criterion) {
-    let (mesh, len) = torus(1000, 500);
+    let (mesh, len) = jittered_torus(1000, 500, 2026);
     let mut g = c.benchmark_group(format!("cone_angles_{}_faces", mesh.n_faces()));
     g.sample_size(10);
 

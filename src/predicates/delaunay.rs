@@ -214,6 +214,28 @@ impl EdgeDelaunay {
     }
 }
 
+/// Validate `(mesh, lengths, e)` and return the quadrilateral of an interior edge, or the
+/// status fixed by definition (boundary edge, same face on both sides).
+fn interior_quad(
+    mesh: &Mesh,
+    n_lengths: usize,
+    e: Edge,
+) -> Result<Result<QuadEdges, EdgeDelaunay>, DelaunayError> {
+    if n_lengths != mesh.n_edges() {
+        return Err(DelaunayError::LengthCount {
+            expected: mesh.n_edges(),
+            got: n_lengths,
+        });
+    }
+    if e.idx() >= mesh.n_edges() {
+        return Err(DelaunayError::NoSuchEdge(e));
+    }
+    if mesh.is_boundary_edge(e) {
+        return Ok(Err(EdgeDelaunay::Boundary));
+    }
+    Ok(QuadEdges::of(mesh, e).ok_or(EdgeDelaunay::SameFace))
+}
+
 /// The certified Delaunay status of edge `e` under per-edge `lengths` (MATH.md §5, Eq. 13).
 pub fn edge_delaunay_sign<T: Real>(
     mesh: &Mesh,
@@ -221,20 +243,9 @@ pub fn edge_delaunay_sign<T: Real>(
     e: Edge,
     ladder: &Ladder,
 ) -> Result<EdgeDelaunay, DelaunayError> {
-    if lengths.len() != mesh.n_edges() {
-        return Err(DelaunayError::LengthCount {
-            expected: mesh.n_edges(),
-            got: lengths.len(),
-        });
-    }
-    if e.idx() >= mesh.n_edges() {
-        return Err(DelaunayError::NoSuchEdge(e));
-    }
-    if mesh.is_boundary_edge(e) {
-        return Ok(EdgeDelaunay::Boundary);
-    }
-    let Some(q) = QuadEdges::of(mesh, e) else {
-        return Ok(EdgeDelaunay::SameFace);
+    let q = match interior_quad(mesh, lengths.len(), e)? {
+        Ok(q) => q,
+        Err(status) => return Ok(status),
     };
     let quad = q.lengths(lengths);
     for (edge, l) in q.edges.to_array().into_iter().zip(quad.to_array()) {
@@ -491,20 +502,9 @@ pub fn edge_delaunay_sign_scaled(
     e: Edge,
     ladder: &Ladder,
 ) -> Result<EdgeDelaunay, DelaunayError> {
-    if lengths.len() != mesh.n_edges() {
-        return Err(DelaunayError::LengthCount {
-            expected: mesh.n_edges(),
-            got: lengths.len(),
-        });
-    }
-    if e.idx() >= mesh.n_edges() {
-        return Err(DelaunayError::NoSuchEdge(e));
-    }
-    if mesh.is_boundary_edge(e) {
-        return Ok(EdgeDelaunay::Boundary);
-    }
-    let Some(q) = QuadEdges::of(mesh, e) else {
-        return Ok(EdgeDelaunay::SameFace);
+    let q = match interior_quad(mesh, lengths.len(), e)? {
+        Ok(q) => q,
+        Err(status) => return Ok(status),
     };
     let base = q.lengths(lengths).map(|&x| x);
     for (edge, l) in q.edges.to_array().into_iter().zip(base.to_array()) {

@@ -1,10 +1,11 @@
 //! The fast cone-angle kernel (proofs B15, B16) against the per-corner sum in MPFR-512.
 
+use crate::meshgen::jittered_torus;
 use crate::support::cases;
 use penner::geometry::cone_angles::{
     cone_angles, cone_angles_per_corner, corner_direction, unwrap_angle,
 };
-use penner::mesh::{Edge, Mesh};
+use penner::mesh::Mesh;
 use penner::scalar::{Dd, Mpfr, Precision, Real};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -31,39 +32,6 @@ fn fan(alpha: &[f64]) -> (Mesh, Vec<f64>) {
             }
         }
     }
-    (mesh, len)
-}
-
-/// A triangulated torus grid `nu × nv` embedded in ℝ³ with jittered vertices; edge
-/// lengths are Euclidean distances (so every triangle inequality holds).
-fn torus(nu: u32, nv: u32, seed: u64) -> (Mesh, Vec<f64>) {
-    let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let id = |i: u32, j: u32| (i % nu) * nv + (j % nv);
-    let mut faces = Vec::new();
-    for i in 0..nu {
-        for j in 0..nv {
-            faces.push([id(i, j), id(i + 1, j), id(i + 1, j + 1)]);
-            faces.push([id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
-        }
-    }
-    let mesh = Mesh::from_faces(nu * nv, &faces).expect("valid torus");
-    let pos: Vec<[f64; 3]> = (0..nu * nv)
-        .map(|k| {
-            let (i, j) = (k / nv, k % nv);
-            let u = 2.0 * PI * (f64::from(i) + rng.gen_range(-0.2..0.2)) / f64::from(nu);
-            let v = 2.0 * PI * (f64::from(j) + rng.gen_range(-0.2..0.2)) / f64::from(nv);
-            let r = 1.0 + 0.4 * v.cos();
-            [r * u.cos(), r * u.sin(), 0.4 * v.sin()]
-        })
-        .collect();
-    let len = mesh
-        .edges()
-        .map(|e: Edge| {
-            let h = e.halfedge();
-            let (p, q) = (pos[mesh.tail(h).idx()], pos[mesh.tip(h).idx()]);
-            ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt()
-        })
-        .collect();
     (mesh, len)
 }
 
@@ -210,7 +178,7 @@ fn b15_negative_control_wrong_estimate_is_rejected() {
 
 #[test]
 fn b16_cone_angles_accuracy_comparable_to_per_corner_sum() {
-    let (mesh, len) = torus(12, 10, 16);
+    let (mesh, len) = jittered_torus(12, 10, 16);
     let mut meshes = vec![(mesh, len)];
     for alpha in winding_fans(cases(12, 300)) {
         meshes.push(fan(&alpha));
@@ -235,7 +203,7 @@ fn b16_cone_angles_accuracy_comparable_to_per_corner_sum() {
 #[test]
 fn b16_measured_errors_of_kernel_and_per_corner_sum() {
     // Reports both errors in units of n·u (the per-corner sum is the comparison baseline).
-    let (mesh, len) = torus(16, 12, 161);
+    let (mesh, len) = jittered_torus(16, 12, 161);
     let refs = reference(&mesh, &len);
     let val = valence(&mesh);
     let report = |name: &str, fast: &[f64], slow: &[f64]| {
@@ -284,7 +252,7 @@ fn b16_measured_errors_of_kernel_and_per_corner_sum() {
 
 #[test]
 fn b16_negative_control_f64_result_fails_the_dd_bound() {
-    let (mesh, len) = torus(8, 8, 162);
+    let (mesh, len) = jittered_torus(8, 8, 162);
     let refs = reference(&mesh, &len);
     let val = valence(&mesh);
     let f = cone_angles(&mesh, &len);

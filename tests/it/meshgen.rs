@@ -7,6 +7,7 @@ use penner::mesh::Mesh;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::collections::HashMap;
+use std::f64::consts::PI;
 
 /// A triangle mesh with vertex positions.
 pub struct Embedded {
@@ -221,4 +222,37 @@ pub fn random_tetrahedron(seed: u64) -> Embedded {
         pos,
         faces: vec![[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]],
     }
+}
+
+/// A triangulated torus grid `nu × nv` embedded in ℝ³ with jittered vertices; edge
+/// lengths are Euclidean distances (so every triangle inequality holds).
+pub fn jittered_torus(nu: u32, nv: u32, seed: u64) -> (Mesh, Vec<f64>) {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let id = |i: u32, j: u32| (i % nu) * nv + (j % nv);
+    let mut faces = Vec::new();
+    for i in 0..nu {
+        for j in 0..nv {
+            faces.push([id(i, j), id(i + 1, j), id(i + 1, j + 1)]);
+            faces.push([id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
+        }
+    }
+    let mesh = Mesh::from_faces(nu * nv, &faces).expect("valid torus");
+    let pos: Vec<[f64; 3]> = (0..nu * nv)
+        .map(|k| {
+            let (i, j) = (k / nv, k % nv);
+            let u = 2.0 * PI * (f64::from(i) + rng.gen_range(-0.2..0.2)) / f64::from(nu);
+            let v = 2.0 * PI * (f64::from(j) + rng.gen_range(-0.2..0.2)) / f64::from(nv);
+            let r = 1.0 + 0.4 * v.cos();
+            [r * u.cos(), r * u.sin(), 0.4 * v.sin()]
+        })
+        .collect();
+    let len = mesh
+        .edges()
+        .map(|e| {
+            let h = e.halfedge();
+            let (p, q) = (pos[mesh.tail(h).idx()], pos[mesh.tip(h).idx()]);
+            ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt()
+        })
+        .collect();
+    (mesh, len)
 }
