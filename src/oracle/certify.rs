@@ -2,6 +2,7 @@
 
 use super::claim::{Assertion, Claim};
 use crate::geometry::cone_angles::cone_angles;
+use crate::geometry::cotan::cotan_weights;
 use crate::io::json::edge_order;
 use crate::io::Surface;
 use crate::mesh::{Edge, Mesh};
@@ -13,7 +14,7 @@ use rug::Rational;
 use serde_json::{json, Value};
 
 /// First MPFR precision of the ladder used for claims.
-const START_BITS: u32 = 128;
+pub(crate) const START_BITS: u32 = 128;
 
 /// The verdict on a claim.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -230,7 +231,27 @@ pub fn certify(claim: &Claim) -> Result<Answer, Unsupported> {
             };
             Ok(summarize(claim, &b, &name, "log-length residual"))
         }
+        Assertion::CotanLaplacian { weights, epsilon } => {
+            let order = edge_order(mesh);
+            let mut enclose = |p| {
+                let w = cotan_weights(mesh, &interval_lengths(&claim.surface, p));
+                order.iter().map(|&e| w[e].clone()).collect()
+            };
+            let b = within_all(&mut enclose, weights, epsilon, START_BITS, claim.max_bits);
+            let name = |k: usize| {
+                let e = Edge(order[k] as u32);
+                let h = e.halfedge();
+                format!("edge {k} (v{}–v{})", mesh.tail(h).0, mesh.tip(h).0)
+            };
+            Ok(summarize(claim, &b, &name, "cotan weight"))
+        }
+        Assertion::DelaunayFlip {
+            ptolemy,
+            result,
+            epsilon,
+        } => Ok(super::flip_claim::delaunay_flip(
+            claim, *ptolemy, result, epsilon,
+        )),
         Assertion::IntrinsicDelaunay => Ok(intrinsic_delaunay(claim)),
-        other => Err(Unsupported(other.kind())),
     }
 }

@@ -19,12 +19,17 @@ pub enum Assertion {
     /// Delaunay condition (MATH.md §5, Eq. 13: cot α + cot β ≥ 0).
     IntrinsicDelaunay,
     /// `delaunay_flip`: flipping the surface to intrinsic Delaunay with this kind of flip
-    /// gives `result` (same triangulation up to the order of faces, same lengths).
+    /// (notes §1.5.2, MATH.md §5) gives `result`: the same triangulation up to renumbering
+    /// of edges and faces (same gluing, vertices keep their ids) with every length within
+    /// `epsilon` (meaning and tie rule: [`super::flip_claim`]).
     DelaunayFlip {
         /// `true` for Ptolemy flips, `false` for Euclidean flips.
         ptolemy: bool,
         /// The claimed Delaunay surface.
         result: Surface,
+        /// Absolute tolerance ε ≥ 0 on each length (on each squared length when `result`
+        /// gives `squared_lengths`); 0 when absent.
+        epsilon: Rational,
     },
     /// `cone_angles`: the cone angle θ_v (sum of corner angles, MATH.md §2) of every
     /// vertex is within `epsilon` of `angles[v]`.
@@ -190,7 +195,15 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
                 _ => return Err(err("flips: required, \"euclidean\" or \"ptolemy\"")),
             };
             let result = surface_at(v, "result", "the claimed Delaunay surface")?;
-            Assertion::DelaunayFlip { ptolemy, result }
+            let epsilon = match v.get("epsilon") {
+                None => Rational::new(),
+                Some(_) => epsilon(v)?,
+            };
+            Assertion::DelaunayFlip {
+                ptolemy,
+                result,
+                epsilon,
+            }
         }
         "cone_angles" => Assertion::ConeAngles {
             angles: numbers(&v["angles"], "angles", surface.mesh.n_vertices(), "vertex")?,

@@ -9,11 +9,13 @@ pub mod certify;
 pub mod claim;
 pub mod corpus;
 pub mod failure;
+pub mod flip_claim;
 pub mod precision;
 #[macro_use]
 pub mod registry;
 // After `registry`, whose `at_precision!` macro it uses.
 pub mod checks;
+pub mod relabel;
 pub mod report;
 pub mod shrink;
 

@@ -8,14 +8,14 @@ use std::process::{Command, Output};
 const BIN: &str = env!("CARGO_BIN_EXE_penner");
 
 /// A scratch directory unique to one test.
-fn scratch(test: &str) -> PathBuf {
+pub(crate) fn scratch(test: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("penner-it-cli-{}-{test}", std::process::id()));
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).expect("scratch dir");
     d
 }
 
-fn penner(args: &[&str]) -> Output {
+pub(crate) fn penner(args: &[&str]) -> Output {
     Command::new(BIN)
         .args(args)
         .env_remove("RUST_BACKTRACE")
@@ -23,13 +23,13 @@ fn penner(args: &[&str]) -> Output {
         .expect("run penner")
 }
 
-fn text(b: &[u8]) -> String {
+pub(crate) fn text(b: &[u8]) -> String {
     String::from_utf8_lossy(b).into_owned()
 }
 
 /// Assert a clean refusal: exit code `code`, a message on stderr containing every string
 /// in `mentions`, and no sign of a panic.
-fn assert_refused(out: &Output, code: i32, mentions: &[&str]) {
+pub(crate) fn assert_refused(out: &Output, code: i32, mentions: &[&str]) {
     let err = text(&out.stderr);
     assert_eq!(
         out.status.code(),
@@ -62,7 +62,7 @@ const TETRAHEDRON: &str = r#"{
   "lengths": ["1", "1", "1", "1", "1", "1"]
 }"#;
 
-fn write(dir: &Path, name: &str, contents: &[u8]) -> PathBuf {
+pub(crate) fn write(dir: &Path, name: &str, contents: &[u8]) -> PathBuf {
     let p = dir.join(name);
     std::fs::write(&p, contents).expect("write input");
     p
@@ -208,7 +208,7 @@ fn hostile_json_is_refused_cleanly() {
 }
 
 /// Run `penner certify` on a claim; return the exit code and the parsed answer.
-fn certify(
+pub(crate) fn certify(
     dir: &Path,
     name: &str,
     claim: &serde_json::Value,
@@ -225,7 +225,7 @@ fn certify(
     (out.status.code(), answer, text(&out.stderr))
 }
 
-fn tetrahedron_json() -> serde_json::Value {
+pub(crate) fn tetrahedron_json() -> serde_json::Value {
     serde_json::from_str(TETRAHEDRON).unwrap()
 }
 

@@ -1,5 +1,6 @@
 //! The integration test crate: one module per area.
 
+mod claims;
 mod cli;
 mod cone_angles_kernel;
 mod definition_two;

@@ -1,0 +1,577 @@
+//! Answering `delaunay_flip` claims: "flipping this surface to intrinsic Delaunay with
+//! Euclidean (or Ptolemy) flips gives this triangulation with these lengths".
+//!
+//! **Meaning.** The claim holds when `result` is, up to renumbering of edges and faces
+//! (vertices keep their ids under flips; [`super::relabel`]), an intrinsic Delaunay
+//! triangulation reached from `surface` by flips of the given kind, and each claimed
+//! length is within `epsilon` of the length of the corresponding edge.
+//!
+//! **How it is decided.** `flip_to_delaunay` proposes a flip sequence (exact Ptolemy
+//! flipping over ℚ when the surface has rational lengths and Ptolemy flips are claimed,
+//! otherwise MPFR at the working precision). The sequence is then *replayed* here with
+//! certified arithmetic, independent of the rounding of the proposing run: every flipped
+//! edge must be certified not strictly Delaunay at the time of its flip (so the flip is a
+//! legal step: the quadrilateral is convex), the new lengths are exact rationals (Ptolemy
+//! on rational lengths, T28) or outward-rounded MPFR enclosures (Euclidean, B62), and at the
+//! end every interior edge must be certified Delaunay (`D ≥ 0`, MATH.md §5 Eq. 13). By T21
+//! and T22 that triangulation is the intrinsic Delaunay triangulation, unique unless some
+//! edge has `D = 0` exactly (a cocircular *tie*). For Ptolemy flips the lengths are
+//! Penner coordinates and the same Delaunay condition selects the Epstein–Penner
+//! decomposition, with the same uniqueness up to ties. The working precision doubles from
+//! 128 bits to the claim's `max_bits` until every step is decided.
+//!
+//! **Ties.** A tie is certified only where all five lengths of a quadrilateral are exact
+//! (rational lengths or rational squared lengths); on enclosed lengths `D = 0` cannot be
+//! separated from a small `D ≠ 0` and the answer is `undecided`. When our triangulation has
+//! certified ties and the claimed one is not the same (or is the same with other lengths),
+//! the claimed one may be another Delaunay triangulation differing by tie flips: this build
+//! does not search tie flips and answers `undecided`, listing the tie edges.
+//!
+//! **Lengths.** Compared per edge under every relabeling found: exactly where our length
+//! is exact (rational, or a rational square compared by squaring), otherwise by enclosures
+//! that must prove `|ours − claimed| < ε` (holds) or `> ε` (refutes). A `result` given by
+//! `squared_lengths` is compared on squared lengths, with `epsilon` bounding the squared
+//! difference.
+
+use super::certify::{Answer, ClaimVerdict};
+use super::claim::Claim;
+use super::relabel::{first_extra_edge, isomorphisms, Relabeling};
+use crate::algorithms::flip_to_delaunay::{
+    flip_to_delaunay, flip_to_delaunay_exact, rational_bits, FlipKind, FlipOptions,
+};
+use crate::algorithms::flips::{
+    euclidean_length_enclosure, ptolemy_length_enclosure, ptolemy_length_exact,
+};
+use crate::io::json::edge_order;
+use crate::io::{Metric, Surface};
+use crate::mesh::{Edge, Mesh};
+use crate::predicates::delaunay::{delaunay_sign_squared, enclose_p, exact_p, Quad, QuadEdges};
+use crate::predicates::directed::Enclosure;
+use crate::scalar::{Mpfr, Precision, Sign};
+use crate::theorems::Witness;
+use rug::Rational;
+use std::cmp::Ordering;
+
+/// Bit size (numerator + denominator) past which exact Ptolemy lengths are replaced by
+/// enclosures, both in the proposing run and in the replay.
+const EXACT_GUARD_BITS: u64 = 4096;
+
+/// At most this many relabelings are compared (symmetries fixing every vertex).
+const MAX_RELABELINGS: usize = 64;
+
+/// A length in the replay: exact, the square root of an exact rational, or an enclosure.
+#[derive(Clone, Debug)]
+enum Len {
+    Exact(Rational),
+    Root(Rational),
+    Enclosed(Enclosure),
+}
+
+impl Len {
+    fn enclose(&self, bits: u32) -> Option<Enclosure> {
+        match self {
+            Len::Exact(q) => Some(Enclosure::from_rational(q, bits)),
+            Len::Root(s) => Enclosure::from_rational(s, bits).sqrt(),
+            Len::Enclosed(e) => Some(e.clone()),
+        }
+    }
+    fn exact(&self) -> Option<&Rational> {
+        match self {
+            Len::Exact(q) => Some(q),
+            _ => None,
+        }
+    }
+    fn exact_square(&self) -> Option<Rational> {
+        match self {
+            Len::Exact(q) => Some(Rational::from(q * q)),
+            Len::Root(s) => Some(s.clone()),
+            Len::Enclosed(_) => None,
+        }
+    }
+}
+
+/// The certified sign of the Delaunay polynomial `D` of the quadrilateral `q` (proof: B80): exact when
+/// the five lengths (or their squares) are rational (proof: B63), otherwise from the
+/// outward-rounded enclosure of `D` (proof: B62); `None` when the enclosure straddles 0.
+fn sign(lens: &[Len], q: Quad<Edge>, bits: u32) -> Option<Sign> {
+    let l = q.map(|e| &lens[e.idx()]);
+    let arr = l.to_array();
+    if let [Some(a), Some(b), Some(c), Some(d), Some(e)] = arr.map(Len::exact) {
+        return Some(Sign::of_ordering(exact_p([a, b, c, d, e]).cmp0()));
+    }
+    if let [Some(a), Some(b), Some(c), Some(d), Some(e)] = arr.map(Len::exact_square) {
+        let sq = Quad {
+            ij: &a,
+            jk: &b,
+            ki: &c,
+            il: &d,
+            lj: &e,
+        };
+        return Some(delaunay_sign_squared(sq));
+    }
+    let [a, b, c, d, e] = arr.map(|x| x.enclose(bits));
+    enclose_p(&[a?, b?, c?, d?, e?]).sign()
+}
+
+/// Our certified Delaunay triangulation.
+struct Ours {
+    mesh: Mesh,
+    lens: Vec<Len>,
+    /// Interior edges with `D = 0` certified.
+    ties: Vec<Edge>,
+}
+
+/// Why a precision did not suffice.
+struct Open {
+    reason: String,
+    witnesses: Vec<Witness>,
+}
+
+fn edge_name(mesh: &Mesh, e: Edge) -> String {
+    let h = e.halfedge();
+    format!("v{}–v{}", mesh.tail(h).0, mesh.tip(h).0)
+}
+
+/// The length of the new diagonal after flipping the quadrilateral with lengths `quad`:
+/// exact for Ptolemy flips of exact lengths (below the bit guard), otherwise an
+/// outward-rounded enclosure (proof: B80); `None` when it cannot be enclosed as positive.
+fn new_length(quad: Quad<&Len>, ptolemy: bool, bits: u32) -> Option<Len> {
+    if ptolemy {
+        if let [Some(a), Some(b), Some(c), Some(d), Some(e)] = quad.to_array().map(Len::exact) {
+            let l = ptolemy_length_exact(Quad {
+                ij: a,
+                jk: b,
+                ki: c,
+                il: d,
+                lj: e,
+            });
+            return Some(if rational_bits(&l) > EXACT_GUARD_BITS {
+                Len::Enclosed(Enclosure::from_rational(&l, bits))
+            } else {
+                Len::Exact(l)
+            });
+        }
+    }
+    let [a, b, c, d, e] = quad.to_array().map(|x| x.enclose(bits));
+    let (a, b, c, d, e) = (a?, b?, c?, d?, e?);
+    let q = Quad {
+        ij: &a,
+        jk: &b,
+        ki: &c,
+        il: &d,
+        lj: &e,
+    };
+    if ptolemy {
+        ptolemy_length_enclosure(q)
+    } else {
+        euclidean_length_enclosure(q)
+    }
+    .filter(Enclosure::is_positive)
+    .map(Len::Enclosed)
+}
+
+/// An open step at edge `e` of `mesh`.
+fn open(reason: String, mesh: &Mesh, e: Edge) -> Open {
+    Open {
+        witnesses: vec![Witness {
+            element: format!("edge {}", edge_name(mesh, e)),
+            detail: reason.clone(),
+            value: f64::NAN,
+        }],
+        reason,
+    }
+}
+
+/// Replay `sequence` on `surface` with certified arithmetic at `bits` (module docs).
+fn replay(surface: &Surface, sequence: &[Edge], ptolemy: bool, bits: u32) -> Result<Ours, Open> {
+    let mut mesh = surface.mesh.clone();
+    let mut lens: Vec<Len> = match &surface.metric {
+        Metric::Lengths(l) => l.iter().cloned().map(Len::Exact).collect(),
+        Metric::SquaredLengths(s) => s.iter().cloned().map(Len::Root).collect(),
+    };
+    for (n, &e) in sequence.iter().enumerate() {
+        let Some(q) = QuadEdges::of(&mesh, e) else {
+            return Err(open(
+                format!("flip {n} of the proposed sequence is not flippable"),
+                &mesh,
+                e,
+            ));
+        };
+        match sign(&lens, q.edges, bits) {
+            Some(Sign::Negative | Sign::Zero) => {}
+            Some(Sign::Positive) => {
+                return Err(open(
+                    format!("flip {n} of the proposed sequence is of an edge certified strictly Delaunay (rounding in the proposing run at {bits} bits)"),
+                    &mesh,
+                    e,
+                ))
+            }
+            None => {
+                return Err(open(
+                    format!("the Delaunay sign before flip {n} is not decided at {bits} bits"),
+                    &mesh,
+                    e,
+                ))
+            }
+        }
+        let new = new_length(q.lengths(&lens), ptolemy, bits);
+        let Some(new) = new else {
+            return Err(open(
+                format!("the new length of flip {n} is not enclosed at {bits} bits"),
+                &mesh,
+                e,
+            ));
+        };
+        if mesh.flip(e).is_err() {
+            return Err(open(
+                format!("flip {n} of the proposed sequence is refused by the mesh"),
+                &mesh,
+                e,
+            ));
+        }
+        lens[e.idx()] = new;
+    }
+    finish(mesh, lens, bits)
+}
+
+/// Certify the end of a replay: every interior edge Delaunay, ties collected.
+fn finish(mesh: Mesh, lens: Vec<Len>, bits: u32) -> Result<Ours, Open> {
+    let mut ties = Vec::new();
+    let mut undecided = Vec::new();
+    for e in mesh.edges() {
+        let Some(q) = QuadEdges::of(&mesh, e) else {
+            continue;
+        };
+        match sign(&lens, q.edges, bits) {
+            Some(Sign::Positive) => {}
+            Some(Sign::Zero) => ties.push(e),
+            Some(Sign::Negative) => {
+                return Err(open(
+                    format!(
+                    "the proposed sequence ends at an edge certified not Delaunay ({bits} bits)"
+                ),
+                    &mesh,
+                    e,
+                ))
+            }
+            None => undecided.push(e),
+        }
+    }
+    if !undecided.is_empty() {
+        return Err(Open {
+            reason: format!(
+                "{} edge(s) of the flipped triangulation have a Delaunay sign not decided at {bits} bits (a cocircular tie D = 0 is certified only on exact lengths)",
+                undecided.len()
+            ),
+            witnesses: undecided
+                .iter()
+                .map(|&e| Witness {
+                    element: format!("edge {}", edge_name(&mesh, e)),
+                    detail: "Delaunay sign not decided".to_string(),
+                    value: f64::NAN,
+                })
+                .collect(),
+        });
+    }
+    Ok(Ours { mesh, lens, ties })
+}
+
+/// The flip sequence proposed by `flip_to_delaunay` at `bits` (exact over ℚ for Ptolemy
+/// flips of rational lengths, where `bits` is unused).
+fn propose(surface: &Surface, ptolemy: bool, bits: u32) -> Vec<Edge> {
+    let opts = FlipOptions {
+        record: true,
+        ..FlipOptions::default()
+    };
+    let mut mesh = surface.mesh.clone();
+    if let (true, Metric::Lengths(l)) = (ptolemy, &surface.metric) {
+        return flip_to_delaunay_exact(&mut mesh, l.clone(), EXACT_GUARD_BITS, &opts)
+            .map(|(r, _)| r.sequence)
+            .unwrap_or_default();
+    }
+    let Ok(p) = Precision::new(u64::from(bits)) else {
+        return Vec::new();
+    };
+    let mut l: Vec<Mpfr> = surface.lengths(p);
+    let kind = if ptolemy {
+        FlipKind::Ptolemy
+    } else {
+        FlipKind::Euclidean
+    };
+    flip_to_delaunay(&mut mesh, &mut l, kind, &opts)
+        .map(|r| r.sequence)
+        .unwrap_or_default()
+}
+
+/// One edge's comparison of claimed and computed length.
+enum Cmp {
+    Inside,
+    Outside,
+    Open,
+}
+
+/// |x − c| ≤ ε decided exactly.
+fn within_exact(x: &Rational, c: &Rational, eps: &Rational) -> Cmp {
+    let d = Rational::from(x - c).abs();
+    if d <= *eps {
+        Cmp::Inside
+    } else {
+        Cmp::Outside
+    }
+}
+
+/// |√s − c| ≤ ε decided exactly for s > 0, c > 0: c − ε ≤ √s ≤ c + ε.
+fn within_root(s: &Rational, c: &Rational, eps: &Rational) -> Cmp {
+    let lo = Rational::from(c - eps);
+    let hi = Rational::from(c + eps);
+    let lo_ok = lo.cmp0() != Ordering::Greater || Rational::from(&lo * &lo) <= *s;
+    let hi_ok = Rational::from(&hi * &hi) >= *s;
+    if lo_ok && hi_ok {
+        Cmp::Inside
+    } else {
+        Cmp::Outside
+    }
+}
+
+/// |x − c| < ε (Inside) or > ε (Outside) proved by the enclosure `x`, else Open.
+fn within_enclosure(x: &Enclosure, c: &Rational, eps: &Rational, bits: u32) -> Cmp {
+    let d = x.sub(&Enclosure::from_rational(c, bits));
+    let e = Enclosure::from_rational(eps, bits);
+    if e.sub(&d).is_positive() && e.add(&d).is_positive() {
+        Cmp::Inside
+    } else if d.sub(&e).is_positive() || e.add(&d).sign() == Some(Sign::Negative) {
+        Cmp::Outside
+    } else {
+        Cmp::Open
+    }
+}
+
+fn midpoint_abs(x: &Enclosure, c: &Rational, bits: u32) -> f64 {
+    let d = x.sub(&Enclosure::from_rational(c, bits));
+    f64::midpoint(d.lo.to_f64(), d.hi.to_f64()).abs()
+}
+
+/// The verdict of one relabeling: per claimed edge, in the result's edge order.
+struct Compared {
+    verdict: ClaimVerdict,
+    witnesses: Vec<Witness>,
+    max_discrepancy: Option<f64>,
+}
+
+fn compare(result: &Surface, ours: &Ours, rel: &Relabeling, eps: &Rational, bits: u32) -> Compared {
+    let squared = matches!(result.metric, Metric::SquaredLengths(_));
+    let values = result.metric.values();
+    let mut outside = Vec::new();
+    let mut open = Vec::new();
+    let mut max_d: Option<f64> = None;
+    for (k, &er) in edge_order(&result.mesh).iter().enumerate() {
+        let Some(c) = values.get(er) else {
+            continue;
+        };
+        let e = rel.edge(Edge(er as u32));
+        let Some(ours_l) = ours.lens.get(e.idx()) else {
+            continue;
+        };
+        let (cmp, shown) = match (squared, ours_l) {
+            (false, Len::Exact(x)) => (
+                within_exact(x, c, eps),
+                Rational::from(x - c).abs().to_f64(),
+            ),
+            (false, Len::Root(s)) => {
+                let x = Enclosure::from_rational(s, bits).sqrt();
+                let shown = x.as_ref().map_or(f64::NAN, |x| midpoint_abs(x, c, bits));
+                (within_root(s, c, eps), shown)
+            }
+            (true, l) if l.exact_square().is_some() => {
+                let s = l.exact_square().unwrap_or_default();
+                (
+                    within_exact(&s, c, eps),
+                    Rational::from(&s - c).abs().to_f64(),
+                )
+            }
+            (_, l) => match l.enclose(bits) {
+                Some(x) => {
+                    let x = if squared { x.mul(&x) } else { x };
+                    (
+                        within_enclosure(&x, c, eps, bits),
+                        midpoint_abs(&x, c, bits),
+                    )
+                }
+                None => (Cmp::Open, f64::NAN),
+            },
+        };
+        if !shown.is_nan() {
+            max_d = Some(max_d.map_or(shown, |m| m.max(shown)));
+        }
+        let what = if squared { "squared length" } else { "length" };
+        let h = Edge(er as u32).halfedge();
+        let element = format!(
+            "result edge {k} (v{}–v{})",
+            result.mesh.tail(h).0,
+            result.mesh.tip(h).0
+        );
+        match cmp {
+            Cmp::Inside => {}
+            Cmp::Outside => outside.push(Witness {
+                element,
+                detail: format!(
+                    "the claimed {what} differs from the {what} of the Delaunay edge by more than epsilon"
+                ),
+                value: shown,
+            }),
+            Cmp::Open => open.push(Witness {
+                element,
+                detail: format!("cannot separate |{what} difference| from epsilon at {bits} bits"),
+                value: shown,
+            }),
+        }
+    }
+    let (verdict, witnesses) = if !outside.is_empty() {
+        (ClaimVerdict::Refuted, outside)
+    } else if !open.is_empty() {
+        (ClaimVerdict::Undecided, open)
+    } else {
+        (ClaimVerdict::Holds, Vec::new())
+    };
+    Compared {
+        verdict,
+        witnesses,
+        max_discrepancy: max_d,
+    }
+}
+
+fn answer(
+    claim: &Claim,
+    verdict: ClaimVerdict,
+    bits: u32,
+    max_discrepancy: Option<f64>,
+    witnesses: Vec<Witness>,
+) -> Answer {
+    Answer {
+        id: claim.id.clone(),
+        kind: claim.assertion.kind(),
+        verdict,
+        certified: verdict != ClaimVerdict::Undecided,
+        precision_bits: bits,
+        max_discrepancy,
+        counterexample: (verdict == ClaimVerdict::Refuted)
+            .then(|| witnesses.first().cloned())
+            .flatten(),
+        witnesses,
+    }
+}
+
+fn tie_witnesses(ours: &Ours, reason: &str) -> Vec<Witness> {
+    ours.ties
+        .iter()
+        .map(|&e| Witness {
+            element: format!("edge {}", edge_name(&ours.mesh, e)),
+            detail: format!(
+                "cocircular tie (D = 0) in the computed Delaunay triangulation; {reason}"
+            ),
+            value: 0.0,
+        })
+        .collect()
+}
+
+/// Why `result` is not our triangulation, as a refutation witness.
+fn combinatorial_witness(result: &Surface, ours: &Ours) -> Witness {
+    let (nv, nf) = (result.mesh.n_vertices(), result.mesh.n_faces());
+    let (ov, of) = (ours.mesh.n_vertices(), ours.mesh.n_faces());
+    if nv != ov || nf != of || result.mesh.n_edges() != ours.mesh.n_edges() {
+        return Witness {
+            element: "result".to_string(),
+            detail: format!(
+                "the result has {nv} vertices, {} edges and {nf} faces; the intrinsic Delaunay triangulation has {ov}, {} and {of}",
+                result.mesh.n_edges(),
+                ours.mesh.n_edges()
+            ),
+            value: f64::NAN,
+        };
+    }
+    let order = edge_order(&result.mesh);
+    match first_extra_edge(&result.mesh, &order, &ours.mesh) {
+        Some((k, e, na, nb)) => Witness {
+            element: format!("result edge {k} ({})", edge_name(&result.mesh, e)),
+            detail: format!(
+                "not an edge of the intrinsic Delaunay triangulation: the result has {na} edge(s) between these vertices, the Delaunay triangulation {nb}"
+            ),
+            value: f64::NAN,
+        },
+        None => Witness {
+            element: "result".to_string(),
+            detail: "the faces are glued differently from the intrinsic Delaunay triangulation (same vertex pairs, different gluing)".to_string(),
+            value: f64::NAN,
+        },
+    }
+}
+
+/// Answer a `delaunay_flip` claim (module documentation).
+pub fn delaunay_flip(claim: &Claim, ptolemy: bool, result: &Surface, eps: &Rational) -> Answer {
+    let mut bits = super::certify::START_BITS;
+    let mut last: Option<(ClaimVerdict, Option<f64>, Vec<Witness>)> = None;
+    let mut used = bits;
+    while bits <= claim.max_bits {
+        used = bits;
+        let sequence = propose(&claim.surface, ptolemy, bits);
+        let ours = match replay(&claim.surface, &sequence, ptolemy, bits) {
+            Ok(o) => o,
+            Err(o) => {
+                let mut w = o.witnesses;
+                if let Some(first) = w.first_mut() {
+                    first.detail = o.reason;
+                }
+                last = Some((ClaimVerdict::Undecided, None, w));
+                bits = bits.saturating_mul(2);
+                continue;
+            }
+        };
+        let rels = isomorphisms(&result.mesh, &ours.mesh, MAX_RELABELINGS);
+        if rels.is_empty() {
+            if ours.ties.is_empty() {
+                let w = combinatorial_witness(result, &ours);
+                return answer(claim, ClaimVerdict::Refuted, bits, None, vec![w]);
+            }
+            let w = tie_witnesses(
+                &ours,
+                "the claimed triangulation differs from the computed one and may differ by tie flips, which this build does not search",
+            );
+            return answer(claim, ClaimVerdict::Undecided, bits, None, w);
+        }
+        let compared: Vec<Compared> = rels
+            .iter()
+            .map(|r| compare(result, &ours, r, eps, bits))
+            .collect();
+        if let Some(c) = compared.iter().find(|c| c.verdict == ClaimVerdict::Holds) {
+            return answer(
+                claim,
+                ClaimVerdict::Holds,
+                bits,
+                c.max_discrepancy,
+                Vec::new(),
+            );
+        }
+        let any_open = compared
+            .iter()
+            .any(|c| c.verdict == ClaimVerdict::Undecided);
+        if !any_open {
+            let first = compared.into_iter().next();
+            let (d, w) = first.map_or((None, Vec::new()), |c| (c.max_discrepancy, c.witnesses));
+            if ours.ties.is_empty() {
+                return answer(claim, ClaimVerdict::Refuted, bits, d, w);
+            }
+            let w = tie_witnesses(
+                &ours,
+                "the claimed lengths differ from the computed ones, and the claim may be another Delaunay triangulation differing by tie flips, which this build does not search",
+            );
+            return answer(claim, ClaimVerdict::Undecided, bits, d, w);
+        }
+        let open = compared
+            .into_iter()
+            .find(|c| c.verdict == ClaimVerdict::Undecided);
+        last = open.map(|c| (ClaimVerdict::Undecided, c.max_discrepancy, c.witnesses));
+        bits = bits.saturating_mul(2);
+    }
+    let (verdict, d, w) = last.unwrap_or((ClaimVerdict::Undecided, None, Vec::new()));
+    answer(claim, verdict, used, d, w)
+}
