@@ -1,6 +1,6 @@
 //! Flip-to-Delaunay (certified and naive f64) and intrinsic-Delaunay cotan Laplacian on
-//! procedurally generated meshes: noisy subdivided icospheres (jitter 0.3 × mean edge
-//! length) and a sheared torus of thin triangles.
+//! procedurally generated meshes: noisy subdivided icospheres (normal noise of standard
+//! deviation 0.3 × mean edge length per coordinate) and a sheared torus of thin triangles.
 //!
 //! `cargo bench --bench delaunay` (set `PENNER_BENCH_LARGE=1` for the 10⁶-face mesh and
 //! `PENNER_EXPORT_MESHES=<dir>` to write the meshes as OBJ for `benches/peers/`).
@@ -45,10 +45,12 @@ fn cotan_laplacian(mesh: &Mesh, l: &[f64]) -> Vec<(u32, u32, f64)> {
     t
 }
 
+/// Frequency-`k` icosphere with every vertex coordinate moved by normal noise of standard
+/// deviation 0.3 × mean edge length (about 16k flips at 10⁵ faces).
 fn noisy_icosphere(k: u32) -> Embedded {
     let mut e = icosphere(k);
-    let j = 0.3 * e.mean_edge();
-    e.jitter(j, u64::from(k));
+    let sigma = 0.3 * e.mean_edge();
+    e.jitter_normal(sigma, u64::from(k));
     e
 }
 

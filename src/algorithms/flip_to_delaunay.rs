@@ -44,7 +44,7 @@ use crate::predicates::delaunay::{
     check_length, DelaunayError, EnclosureQuad, Quad, QuadEdges, RationalQuad, RealQuad,
 };
 use crate::predicates::directed::Enclosure;
-use crate::predicates::ladder::{decide, Ladder};
+use crate::predicates::ladder::{decide, Ladder, SignPredicate};
 use crate::scalar::{Certified, Real, Sign, Stage};
 use rug::Rational;
 
@@ -143,6 +143,11 @@ pub enum FlipToDelaunayError {
 trait Metric {
     /// The old length of a flipped edge, kept to undo the flip.
     type Saved;
+    /// The first rung alone (a proven `f64` filter), `None` when it does not decide.
+    fn filter(&self, _q: Quad<Edge>) -> Option<Sign> {
+        None
+    }
+    /// The whole ladder.
     fn sign(&self, q: Quad<Edge>, ladder: &Ladder) -> Certified<Sign>;
     /// Compute the new diagonal length, store it, and return the old one (`None` if the
     /// new length is invalid; nothing is stored then).
@@ -157,14 +162,36 @@ trait Metric {
     fn accepted(&mut self, _flips: usize) {}
 }
 
+/// Per-edge state of the driver, one byte per edge so that an edge test touches one
+/// cache line of it.
+const QUEUED: u8 = 1;
+const UNDECIDED: u8 = 2;
+const REFUSED: u8 = 4;
+
+/// The certified sign of `P` on `q`: the filter inline, the rest of the ladder out of
+/// line; every decision is counted in `stages`.
+#[inline(always)]
+fn certified_sign<M: Metric>(
+    m: &M,
+    q: Quad<Edge>,
+    ladder: &Ladder,
+    stages: &mut StageCounts,
+) -> Option<Sign> {
+    if let Some(s) = m.filter(q) {
+        stages.filter += 1;
+        return Some(s);
+    }
+    let c = m.sign(q, ladder);
+    stages.record(&c);
+    c.value()
+}
+
 /// The driver shared by every length type.
 fn run<M: Metric>(mesh: &mut Mesh, m: &mut M, opts: &FlipOptions) -> FlipReport {
     let ne = mesh.n_edges();
     let cap = opts.max_flips.unwrap_or(64 * ne + 1024);
     let mut report = FlipReport::default();
-    let mut queued = vec![true; ne];
-    let mut undecided = vec![false; ne];
-    let mut refused = vec![false; ne];
+    let mut state = vec![QUEUED; ne];
     let mut stack: Vec<Edge> = (0..ne as u32).rev().map(Edge).collect();
     if let Some(seed) = opts.order_seed {
         use rand::seq::SliceRandom;
@@ -172,37 +199,32 @@ fn run<M: Metric>(mesh: &mut Mesh, m: &mut M, opts: &FlipOptions) -> FlipReport 
         stack.shuffle(&mut rand_chacha::ChaCha8Rng::seed_from_u64(seed));
     }
     while let Some(e) = stack.pop() {
-        queued[e.idx()] = false;
         let Some(q) = QuadEdges::of(mesh, e) else {
+            state[e.idx()] = 0;
             continue;
         };
-        let s = m.sign(q.edges, &opts.ladder);
-        report.stages.record(&s);
-        match s.value() {
+        match certified_sign(m, q.edges, &opts.ladder, &mut report.stages) {
             None => {
-                undecided[e.idx()] = true;
+                state[e.idx()] = UNDECIDED;
                 continue;
             }
             Some(Sign::Positive | Sign::Zero) => {
-                undecided[e.idx()] = false;
-                refused[e.idx()] = false;
+                state[e.idx()] = 0;
                 continue;
             }
-            Some(Sign::Negative) => undecided[e.idx()] = false,
+            Some(Sign::Negative) => state[e.idx()] = 0,
         }
         if report.flips >= cap {
             report.hit_cap = true;
             break;
         }
         let Some(saved) = m.flip_length(&q) else {
-            refused[e.idx()] = true;
+            state[e.idx()] = REFUSED;
             continue;
         };
         let mut nudges = 0;
         let accepted = loop {
-            let after = m.sign(q.flipped(), &opts.ladder);
-            report.stages.record(&after);
-            match after.value() {
+            match certified_sign(m, q.flipped(), &opts.ladder, &mut report.stages) {
                 Some(Sign::Positive | Sign::Zero) => break true,
                 // Rounded new length on the wrong side of a near-tie: the exact new
                 // diagonal is strictly Delaunay and `P` decreases with its length.
@@ -211,40 +233,36 @@ fn run<M: Metric>(mesh: &mut Mesh, m: &mut M, opts: &FlipOptions) -> FlipReport 
             }
         };
         report.nudged += usize::from(nudges > 0);
-        if !accepted {
+        if !accepted || mesh.flip(e).is_err() {
+            // `mesh.flip` cannot fail here: `QuadEdges::of` succeeded, so the edge is
+            // flippable; undo the length either way.
             m.restore(e, saved);
-            refused[e.idx()] = true;
+            state[e.idx()] = REFUSED;
             continue;
         }
-        if mesh.flip(e).is_err() {
-            // Unreachable: `QuadEdges::of` succeeded, so the edge is flippable.
-            m.restore(e, saved);
-            refused[e.idx()] = true;
-            continue;
-        }
-        refused[e.idx()] = false;
         report.flips += 1;
         if opts.record {
             report.sequence.push(e);
         }
         m.accepted(report.flips);
         for side in [q.edges.jk, q.edges.ki, q.edges.il, q.edges.lj] {
-            if !queued[side.idx()] {
-                queued[side.idx()] = true;
+            let st = &mut state[side.idx()];
+            if *st & QUEUED == 0 {
+                *st |= QUEUED;
                 stack.push(side);
             }
         }
     }
-    report.undecided = flagged(&undecided);
-    report.refused = flagged(&refused);
+    report.undecided = flagged(&state, UNDECIDED);
+    report.refused = flagged(&state, REFUSED);
     report
 }
 
-fn flagged(flags: &[bool]) -> Vec<Edge> {
-    flags
+fn flagged(state: &[u8], flag: u8) -> Vec<Edge> {
+    state
         .iter()
         .enumerate()
-        .filter(|(_, &f)| f)
+        .filter(|(_, &f)| f & flag != 0)
         .map(|(i, _)| Edge(i as u32))
         .collect()
 }
@@ -269,7 +287,10 @@ struct RealMetric<'a, T> {
 
 impl<T: Real> Metric for RealMetric<'_, T> {
     type Saved = T;
-    #[inline]
+    #[inline(always)]
+    fn filter(&self, q: Quad<Edge>) -> Option<Sign> {
+        RealQuad(q.map(|e| &self.lengths[e.idx()])).filter()
+    }
     fn sign(&self, q: Quad<Edge>, ladder: &Ladder) -> Certified<Sign> {
         decide(&RealQuad(q.map(|e| &self.lengths[e.idx()])), ladder)
     }

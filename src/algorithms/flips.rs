@@ -60,11 +60,20 @@ pub fn ptolemy_length_enclosure(q: Quad<&Enclosure>) -> Option<Enclosure> {
 /// ```
 ///
 /// with `a = ℓ_ij, b = ℓ_jk, c = ℓ_ki, d = ℓ_il, e = ℓ_lj` (MATH.md §1, §5). Kahan's
-/// ordering keeps the area accurate for needles and caps. The lengths are first scaled by
-/// a power of two near `1/a` (exact in binary arithmetic) so that squares of squares do
-/// not overflow. For triangles that violate the triangle inequality the square root of a
-/// negative number is NaN (`f64`): the caller refuses such a flip.
+/// ordering keeps the area accurate for needles and caps. When a length lies outside
+/// `[2⁻¹⁰⁰, 2¹⁰⁰]` the lengths are first scaled by a power of two near `1/a` so that
+/// squares of squares do not overflow; scaling by a power of two commutes with every
+/// rounded operation while no intermediate overflows or underflows, so inside that range
+/// (all intermediates within `2^±500`) skipping it changes no bit of the result. For
+/// triangles that violate the triangle inequality the square root of a negative number is
+/// NaN (`f64`): the caller refuses such a flip.
+#[inline]
 pub fn euclidean_length<T: Real>(q: Quad<&T>) -> T {
+    // Biased exponent in [923, 1123) ⇔ 2⁻¹⁰⁰ ≤ x < 2¹⁰⁰ for positive finite x.
+    let moderate = |x: &T| (x.approx_f64().to_bits() >> 52).wrapping_sub(923) < 200;
+    if q.to_array().iter().all(|x| moderate(x)) {
+        return euclidean_core([q.ij, q.jk, q.ki, q.il, q.lj].map(Clone::clone));
+    }
     let a0 = q.ij.approx_f64();
     let (scale, unscale) = if a0.is_normal() && a0 > 0.0 {
         let k = a0.log2().floor() as i32;
@@ -72,19 +81,34 @@ pub fn euclidean_length<T: Real>(q: Quad<&T>) -> T {
     } else {
         (q.ij.one_like(), q.ij.one_like())
     };
-    let [a, b, c, d, e] = q.to_array().map(|x| x.clone() * &scale);
+    euclidean_core(q.to_array().map(|x| x.clone() * &scale)) * &unscale
+}
+
+/// [`euclidean_length`] without rescaling.
+#[inline]
+fn euclidean_core<T: Real>([a, b, c, d, e]: [T; 5]) -> T {
     let x = (c.clone() - &b) * &(c.clone() + &b) + &((e.clone() - &d) * &(e.clone() + &d));
     let y = four_area(&a, &b, &c) + &four_area(&a, &d, &e);
     let r = (x.clone() * &x + &(y.clone() * &y)).sqrt();
-    r / &(a.clone() * &a.lit(2.0)) * &unscale
+    r / &(a.clone() * &a.lit(2.0))
 }
 
 /// `4·Area` of a triangle by Kahan's formula, ordering the sides by their `f64` images
 /// (an ordering error between nearly equal sides changes the result only by rounding).
+#[inline]
 fn four_area<T: Real>(p: &T, q: &T, r: &T) -> T {
-    let mut s = [p, q, r];
-    s.sort_by(|u, v| v.approx_f64().total_cmp(&u.approx_f64()));
-    let [x, y, z] = s;
+    // Three compare-exchanges sort (x, y, z) into decreasing order of the f64 images.
+    let key = |t: &T| t.approx_f64();
+    let (mut x, mut y, mut z) = (p, q, r);
+    if key(x).total_cmp(&key(y)).is_lt() {
+        std::mem::swap(&mut x, &mut y);
+    }
+    if key(y).total_cmp(&key(z)).is_lt() {
+        std::mem::swap(&mut y, &mut z);
+    }
+    if key(x).total_cmp(&key(y)).is_lt() {
+        std::mem::swap(&mut x, &mut y);
+    }
     let xy = x.clone() - y;
     let prod = (x.clone() + &(y.clone() + z))
         * &(z.clone() - &xy)

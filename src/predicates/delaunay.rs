@@ -69,10 +69,12 @@ pub struct Quad<T> {
 
 impl<T> Quad<T> {
     /// The lengths as `[a, b, c, d, e] = [ij, jk, ki, il, lj]`.
+    #[inline]
     pub fn to_array(self) -> [T; 5] {
         [self.ij, self.jk, self.ki, self.il, self.lj]
     }
     /// The lengths by reference.
+    #[inline]
     pub fn as_refs(&self) -> Quad<&T> {
         Quad {
             ij: &self.ij,
@@ -83,6 +85,7 @@ impl<T> Quad<T> {
         }
     }
     /// Apply `f` to every length.
+    #[inline]
     pub fn map<U>(self, mut f: impl FnMut(T) -> U) -> Quad<U> {
         Quad {
             ij: f(self.ij),
@@ -256,6 +259,7 @@ pub fn edge_delaunay_sign<T: Real>(
 
 /// Check that `l` is finite and positive (exactly, via its rational value when it is not
 /// an `f64`-range 53-bit number).
+#[inline]
 pub fn check_length<T: Real>(edge: Edge, l: &T) -> Result<(), DelaunayError> {
     let x = l.approx_f64();
     if T::precision_bits(l.ctx()) == 53 && x.is_finite() && x > 0.0 {
@@ -280,7 +284,7 @@ const FILTER_ABS: f64 = 9.332636185032189e-302;
 
 /// Sign of `P` for five positive finite `f64` lengths, or `None` when the proven error
 /// bound does not separate it from zero or the lengths span more than 2²⁰⁰ (proof: B61).
-#[inline]
+#[inline(always)]
 pub fn filter_f64(q: [f64; 5]) -> Option<Sign> {
     // Biased exponent in [823, 1222] ⇔ 2⁻²⁰⁰ ≤ x < 2²⁰⁰ for positive x; zero, negative,
     // subnormal, infinite and NaN inputs fail (sign bit or exponent out of range).
@@ -313,7 +317,7 @@ fn filter_rescaled(q: [f64; 5], lo: f64, hi: f64) -> Option<Sign> {
     filter_core(r[0], r[1], r[2], r[3], r[4])
 }
 
-#[inline]
+#[inline(always)]
 fn filter_core(a: f64, b: f64, c: f64, d: f64, e: f64) -> Option<Sign> {
     let a2 = a * a;
     let de = d * e;
@@ -363,6 +367,7 @@ fn sign_of(q: &Rational) -> Sign {
 pub struct RealQuad<'a, T>(pub Quad<&'a T>);
 
 impl<T: Real> SignPredicate for RealQuad<'_, T> {
+    #[inline(always)]
     fn filter(&self) -> Option<Sign> {
         if T::precision_bits(self.0.ij.ctx()) != 53 {
             return None;

@@ -58,6 +58,7 @@ impl Default for Ladder {
 /// assert_eq!(decide(&Five, &Ladder::default()),
 ///            Certified::Known { value: Sign::Positive, stage: Stage::Interval { bits: 128 } });
 /// ```
+#[inline]
 pub fn decide<P: SignPredicate + ?Sized>(p: &P, ladder: &Ladder) -> Certified<Sign> {
     if let Some(s) = p.filter() {
         return Certified::Known {
@@ -65,6 +66,13 @@ pub fn decide<P: SignPredicate + ?Sized>(p: &P, ladder: &Ladder) -> Certified<Si
             stage: Stage::Filter,
         };
     }
+    climb(p, ladder)
+}
+
+/// The rungs after the filter, kept out of line so that the filter inlines into loops.
+#[cold]
+#[inline(never)]
+fn climb<P: SignPredicate + ?Sized>(p: &P, ladder: &Ladder) -> Certified<Sign> {
     let mut bits = ladder.start_bits;
     let mut tried = 0;
     while bits <= ladder.max_bits {
