@@ -15,10 +15,19 @@
 //! stored lengths (T21). A cap on the number of flips (default `64·E + 1024`) bounds the
 //! run even if rounding of new lengths were to create a cycle; hitting it is reported.
 //!
-//! Lengths after Euclidean flips in `f64`/`Dd`/`Mpfr` are rounded values: the certificate
-//! is about the stored metric. Exact Ptolemy flipping over ℚ
-//! ([`flip_to_delaunay_exact`]) has no rounding at all until the bit-growth guard is
-//! passed, after which it continues on outward-rounded MPFR enclosures.
+//! # What is certified
+//!
+//! Exactly this (proof: B65): for the lengths *returned* in the slice, every edge not
+//! listed in [`FlipReport::undecided`] or [`FlipReport::refused`] is Delaunay (`P ≥ 0`),
+//! unless [`FlipReport::hit_cap`] is set. The returned lengths are the input lengths on
+//! edges never flipped; on a flipped edge they are the flip formula evaluated in the
+//! backend's arithmetic (so rounded in `f64`/`Dd`/`Mpfr`), and on the
+//! [`FlipReport::nudged`] flips that value shrunk by at most [`MAX_NUDGES`] steps
+//! `ℓ ← fl(ℓ − fl(4u·ℓ))` (at most `40u` relative in all). The certificate is about the
+//! returned metric, not about the exact flips of the input metric. Exact Ptolemy flipping
+//! over ℚ ([`flip_to_delaunay_exact`]) has no rounding and no nudge until the bit-growth
+//! guard is passed, after which it continues on outward-rounded MPFR enclosures.
+//!
 //!
 //! ```
 //! use penner::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
@@ -43,13 +52,12 @@ use crate::mesh::{Edge, Mesh};
 use crate::predicates::delaunay::{
     check_length, DelaunayError, EnclosureQuad, Quad, QuadEdges, RationalQuad, RealQuad,
 };
-use crate::predicates::directed::Enclosure;
 use crate::predicates::ladder::{decide, Ladder, SignPredicate};
-use crate::scalar::{Certified, Real, Sign, Stage};
+use crate::scalar::{Certified, Interval, Mpfr, Precision, Real, Sign, Stage};
 use rug::Rational;
 
-/// At most this many times a rounded new diagonal is shrunk by `4u` relative before a
-/// flip is refused (proof: B65).
+/// At most this many times a rounded new diagonal is replaced by `fl(ℓ − fl(4u·ℓ))`
+/// (a relative decrease in `[3u, 5u]`) before a flip is refused (proof: B65).
 pub const MAX_NUDGES: usize = 8;
 
 /// Options of [`flip_to_delaunay`] (default: [`Ladder::default`], cap `64·E + 1024`,
@@ -117,8 +125,9 @@ pub struct FlipReport {
     pub max_bits: u64,
     /// Exact path only: the flip count at which the bit guard switched to enclosures.
     pub fell_back_after: Option<usize>,
-    /// Flips whose rounded new length was shrunk by a few units of rounding so that the
-    /// new diagonal is certified Delaunay (proof: B65).
+    /// Flips whose rounded new length was shrunk by at most [`MAX_NUDGES`] steps of
+    /// `ℓ ← fl(ℓ − fl(4u·ℓ))` so that the new diagonal is certified Delaunay: the returned
+    /// metric differs there from the rounded flip by at most `40u` relative (proof: B65).
     pub nudged: usize,
     /// The flipped edges in order, when [`FlipOptions::record`] is set.
     pub sequence: Vec<Edge>,
@@ -192,6 +201,8 @@ fn run<M: Metric>(mesh: &mut Mesh, m: &mut M, opts: &FlipOptions) -> FlipReport 
     let cap = opts.max_flips.unwrap_or(64 * ne + 1024);
     let mut report = FlipReport::default();
     let mut state = vec![QUEUED; ne];
+    // Whether any edge was ever marked undecided or refused (else the final scan is moot).
+    let mut flags_set = false;
     let mut stack: Vec<Edge> = (0..ne as u32).rev().map(Edge).collect();
     if let Some(seed) = opts.order_seed {
         use rand::seq::SliceRandom;
@@ -206,6 +217,7 @@ fn run<M: Metric>(mesh: &mut Mesh, m: &mut M, opts: &FlipOptions) -> FlipReport 
         match certified_sign(m, q.edges, &opts.ladder, &mut report.stages) {
             None => {
                 state[e.idx()] = UNDECIDED;
+                flags_set = true;
                 continue;
             }
             Some(Sign::Positive | Sign::Zero) => {
@@ -220,6 +232,7 @@ fn run<M: Metric>(mesh: &mut Mesh, m: &mut M, opts: &FlipOptions) -> FlipReport 
         }
         let Some(saved) = m.flip_length(&q) else {
             state[e.idx()] = REFUSED;
+            flags_set = true;
             continue;
         };
         let mut nudges = 0;
@@ -238,6 +251,7 @@ fn run<M: Metric>(mesh: &mut Mesh, m: &mut M, opts: &FlipOptions) -> FlipReport 
             // flippable; undo the length either way.
             m.restore(e, saved);
             state[e.idx()] = REFUSED;
+            flags_set = true;
             continue;
         }
         report.flips += 1;
@@ -253,8 +267,10 @@ fn run<M: Metric>(mesh: &mut Mesh, m: &mut M, opts: &FlipOptions) -> FlipReport 
             }
         }
     }
-    report.undecided = flagged(&state, UNDECIDED);
-    report.refused = flagged(&state, REFUSED);
+    if flags_set {
+        report.undecided = flagged(&state, UNDECIDED);
+        report.refused = flagged(&state, REFUSED);
+    }
     report
 }
 
@@ -273,6 +289,18 @@ fn check_all<T: Real>(mesh: &Mesh, lengths: &[T]) -> Result<(), DelaunayError> {
             expected: mesh.n_edges(),
             got: lengths.len(),
         });
+    }
+    // Fast path for 53-bit backends: every image finite and positive (the same test as
+    // `check_length`, without a branch per edge); otherwise find the offending edge.
+    if lengths
+        .first()
+        .is_some_and(|l| T::precision_bits(l.ctx()) == 53)
+        && lengths.iter().fold(true, |ok, l| {
+            let x = l.approx_f64();
+            ok & (x > 0.0) & (x < f64::INFINITY)
+        })
+    {
+        return Ok(());
     }
     for e in mesh.edges() {
         check_length(e, &lengths[e.idx()])?;
@@ -309,7 +337,7 @@ impl<T: Real> Metric for RealMetric<'_, T> {
     fn nudge(&mut self, e: Edge) -> bool {
         let l = &mut self.lengths[e.idx()];
         let u = T::unit_roundoff(l.ctx());
-        // proof: B65 — one step moves the stored value by at most ~4u relative.
+        // proof: B65 — one step decreases the stored value by 3u to 5u relative.
         let step = l.clone() * &l.lit(4.0 * u);
         *l -= &step;
         true
@@ -331,12 +359,12 @@ pub fn flip_to_delaunay<T: Real>(
 }
 
 /// Rational lengths, or enclosures once the bit-growth guard is passed.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub enum ExactLengths {
     /// Exact lengths.
     Exact(Vec<Rational>),
     /// Outward-rounded enclosures of the exact lengths.
-    Enclosed(Vec<Enclosure>),
+    Enclosed(Vec<Interval<Mpfr>>),
 }
 
 /// Bit size of a rational: significant bits of numerator plus denominator.
@@ -352,16 +380,17 @@ struct ExactMetric {
 }
 
 impl ExactMetric {
-    fn enclosure_bits(&self) -> u32 {
+    fn enclosure_precision(&self) -> Precision {
         // Enough to hold the guard-sized rationals tightly, at least 128 bits.
-        (2 * self.guard_bits).clamp(128, 1 << 14) as u32
+        Precision::new((2 * self.guard_bits).clamp(128, 1 << 14))
+            .expect("128 to 16384 bits is within MPFR's precision range")
     }
 }
 
 /// An old length on the exact path.
 enum ExactSaved {
     Exact(Rational),
-    Enclosed(Enclosure),
+    Enclosed(Interval<Mpfr>),
 }
 
 impl Metric for ExactMetric {
@@ -384,7 +413,7 @@ impl Metric for ExactMetric {
             }
             ExactLengths::Enclosed(l) => {
                 let new = ptolemy_length_enclosure(q.lengths(l))?;
-                if !new.is_positive() {
+                if new.sign() != Some(Sign::Positive) {
                     return None;
                 }
                 Some(ExactSaved::Enclosed(std::mem::replace(
@@ -405,12 +434,9 @@ impl Metric for ExactMetric {
     }
     fn accepted(&mut self, flips: usize) {
         if self.fell_back_after.is_none() && self.max_bits > self.guard_bits {
-            let prec = self.enclosure_bits();
+            let prec = self.enclosure_precision();
             if let ExactLengths::Exact(l) = &self.lengths {
-                let enc = l
-                    .iter()
-                    .map(|q| Enclosure::from_rational(q, prec))
-                    .collect();
+                let enc = l.iter().map(|q| Interval::from_rational(q, prec)).collect();
                 self.lengths = ExactLengths::Enclosed(enc);
                 self.fell_back_after = Some(flips);
             }

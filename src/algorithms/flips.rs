@@ -1,6 +1,6 @@
 //! Metric edge flips: the Euclidean flip (planar layout of the two triangles, preserves the
 //! cone metric) and the Ptolemy flip (MATH.md §5, notes Eq. 18), generic over [`Real`],
-//! exact over [`rug::Rational`] and outward-rounded over [`Enclosure`].
+//! exact over [`rug::Rational`] and outward-rounded over [`Interval<Mpfr>`].
 //!
 //! Both refuse, with the mesh's [`FlipError`], an edge that cannot be flipped: a boundary
 //! edge, or an edge with the same face on both sides (a self-folded triangle around a
@@ -21,8 +21,8 @@
 
 use crate::mesh::{Edge, FlipError, Mesh};
 use crate::predicates::delaunay::{Quad, QuadEdges};
-use crate::predicates::directed::Enclosure;
-use crate::scalar::Real;
+use crate::predicates::directed::{div_positive, enclose_f64, valid};
+use crate::scalar::{Interval, Mpfr, Real};
 use rug::Rational;
 
 /// Which flip updates the length of the new diagonal.
@@ -46,9 +46,10 @@ pub fn ptolemy_length_exact(q: Quad<&Rational>) -> Rational {
     (Rational::from(q.ki * q.lj) + Rational::from(q.il * q.jk)) / q.ij
 }
 
-/// The Ptolemy length of enclosed lengths, rounded outward; `None` if `ℓ_ij` may be ≤ 0.
-pub fn ptolemy_length_enclosure(q: Quad<&Enclosure>) -> Option<Enclosure> {
-    q.ki.mul(q.lj).add(&q.il.mul(q.jk)).div_positive(q.ij)
+/// The Ptolemy length of enclosed lengths, rounded outward (proof: B62); `None` if `ℓ_ij`
+/// may be ≤ 0.
+pub fn ptolemy_length_enclosure(q: Quad<&Interval<Mpfr>>) -> Option<Interval<Mpfr>> {
+    div_positive(&(q.ki.clone() * q.lj + &(q.il.clone() * q.jk)), q.ij)
 }
 
 /// The Euclidean length of the new diagonal `kl`: lay out `i = (0,0)`, `j = (a,0)`, `k`
@@ -119,26 +120,26 @@ fn four_area<T: Real>(p: &T, q: &T, r: &T) -> T {
 
 /// The Euclidean length of [`euclidean_length`] on enclosed lengths, rounded outward;
 /// `None` if a triangle may violate the triangle inequality (its area factor may be
-/// negative) or `ℓ_ij` may be ≤ 0.
-pub fn euclidean_length_enclosure(q: Quad<&Enclosure>) -> Option<Enclosure> {
-    let prec = q.ij.lo.prec();
-    let one = Enclosure::from_f64(1.0, prec);
-    let b = q.jk.div_positive(q.ij)?;
-    let c = q.ki.div_positive(q.ij)?;
-    let d = q.il.div_positive(q.ij)?;
-    let e = q.lj.div_positive(q.ij)?;
-    let four_area = |b: &Enclosure, c: &Enclosure| -> Option<Enclosure> {
-        b.add(c)
-            .sub(&one)
-            .mul(&one.sub(b).add(c))
-            .mul(&one.add(b).sub(c))
-            .mul(&one.add(b).add(c))
-            .sqrt()
+/// negative) or `ℓ_ij` may be ≤ 0 (proof: B62).
+pub fn euclidean_length_enclosure(q: Quad<&Interval<Mpfr>>) -> Option<Interval<Mpfr>> {
+    let prec = q.ij.ctx();
+    let one = enclose_f64(1.0, prec);
+    let b = div_positive(q.jk, q.ij)?;
+    let c = div_positive(q.ki, q.ij)?;
+    let d = div_positive(q.il, q.ij)?;
+    let e = div_positive(q.lj, q.ij)?;
+    // 4·Area of the triangle (1, b, c) by Heron's product, scaled by ℓ_ij.
+    let four_area = |b: &Interval<Mpfr>, c: &Interval<Mpfr>| {
+        let s = (b.clone() + c - &one)
+            * &(one.clone() - b + c)
+            * &(one.clone() + b - c)
+            * &(one.clone() + b + c);
+        valid(s.sqrt())
     };
-    let x = c.sub(&b).mul(&c.add(&b)).add(&e.sub(&d).mul(&e.add(&d)));
-    let y = four_area(&b, &c)?.add(&four_area(&d, &e)?);
-    let r = x.mul(&x).add(&y.mul(&y)).sqrt()?;
-    Some(r.mul(q.ij).mul_pow2(-1))
+    let x = (c.clone() - &b) * &(c.clone() + &b) + &((e.clone() - &d) * &(e.clone() + &d));
+    let y = four_area(&b, &c)? + &four_area(&d, &e)?;
+    let r = valid((x.clone() * &x + &(y.clone() * &y)).sqrt())?;
+    valid(r * q.ij * &enclose_f64(0.5, prec))
 }
 
 fn quad_or_refuse(mesh: &Mesh, e: Edge) -> Result<QuadEdges, FlipError> {

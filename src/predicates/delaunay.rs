@@ -45,10 +45,10 @@
 //! assert!(matches!(s, EdgeDelaunay::Interior(Certified::Known { .. })));
 //! ```
 
-use super::directed::Enclosure;
+use super::directed::scaled_length;
 use super::ladder::{decide, Ladder, SignPredicate};
 use crate::mesh::{Edge, HalfEdge, Mesh};
-use crate::scalar::{Certified, Precision, Real, Sign};
+use crate::scalar::{Certified, Interval, Mpfr, Precision, Real, Sign};
 use rug::Rational;
 
 /// The five lengths of the quadrilateral around edge `ij`: `ij` the edge, `jk, ki` the
@@ -341,12 +341,12 @@ fn filter_core(a: f64, b: f64, c: f64, d: f64, e: f64) -> Option<Sign> {
 // Rungs 2 and 3: enclosures and exact rationals.
 
 /// `P` evaluated on interval inputs `[a, b, c, d, e]` with outward rounding (proof: B62).
-pub fn enclose_p(q: &[Enclosure; 5]) -> Enclosure {
+pub fn enclose_p(q: &[Interval<Mpfr>; 5]) -> Interval<Mpfr> {
     let [a, b, c, d, e] = q;
-    let a2 = a.mul(a);
-    let x = b.mul(b).add(&c.mul(c)).sub(&a2);
-    let y = d.mul(d).add(&e.mul(e)).sub(&a2);
-    d.mul(e).mul(&x).add(&b.mul(c).mul(&y))
+    let a2 = a.clone() * a;
+    let x = b.clone() * b + &(c.clone() * c) - &a2;
+    let y = d.clone() * d + &(e.clone() * e) - &a2;
+    d.clone() * e * &x + &(b.clone() * c * &y)
 }
 
 /// `P` in exact rational arithmetic.
@@ -379,9 +379,9 @@ impl<T: Real> SignPredicate for RealQuad<'_, T> {
     fn enclosure_sign(&self, prec: Precision) -> Option<Sign> {
         let mut ins = Vec::with_capacity(5);
         for l in self.0.to_array() {
-            ins.push(Enclosure::from_rational(&l.to_rational()?, prec.bits()));
+            ins.push(Interval::from_rational(&l.to_rational()?, prec));
         }
-        let ins: [Enclosure; 5] = ins.try_into().ok()?;
+        let ins: [Interval<Mpfr>; 5] = ins.try_into().ok()?;
         enclose_p(&ins).sign()
     }
     fn exact_sign(&self) -> Option<Sign> {
@@ -419,10 +419,7 @@ impl SignPredicate for RationalQuad<'_> {
         }
     }
     fn enclosure_sign(&self, prec: Precision) -> Option<Sign> {
-        let ins = self
-            .0
-            .to_array()
-            .map(|q| Enclosure::from_rational(q, prec.bits()));
+        let ins = self.0.to_array().map(|q| Interval::from_rational(q, prec));
         enclose_p(&ins).sign()
     }
     fn exact_sign(&self) -> Option<Sign> {
@@ -433,7 +430,7 @@ impl SignPredicate for RationalQuad<'_> {
 /// The Delaunay predicate on interval lengths (lengths known only as enclosures, e.g.
 /// after exact Ptolemy flipping fell back past its bit-growth guard). No exact rung.
 #[derive(Clone, Copy, Debug)]
-pub struct EnclosureQuad<'a>(pub Quad<&'a Enclosure>);
+pub struct EnclosureQuad<'a>(pub Quad<&'a Interval<Mpfr>>);
 
 impl SignPredicate for EnclosureQuad<'_> {
     fn enclosure_sign(&self, _prec: Precision) -> Option<Sign> {
@@ -485,8 +482,8 @@ impl SignPredicate for ScaledQuad {
     fn enclosure_sign(&self, prec: Precision) -> Option<Sign> {
         let b = self.base.to_array();
         let s = self.scale.to_array();
-        let ins: [Enclosure; 5] =
-            std::array::from_fn(|i| Enclosure::scaled_length(b[i], s[i].0, s[i].1, prec.bits()));
+        let ins: [Interval<Mpfr>; 5] =
+            std::array::from_fn(|i| scaled_length(b[i], s[i].0, s[i].1, prec));
         enclose_p(&ins).sign()
     }
     fn exact_sign(&self) -> Option<Sign> {

@@ -13,24 +13,29 @@ use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOption
 use crate::algorithms::flips::{euclidean_length_enclosure, ptolemy_length_enclosure};
 use crate::mesh::Mesh;
 use crate::predicates::delaunay::QuadEdges;
-use crate::predicates::directed::Enclosure;
-use crate::scalar::Real;
+use crate::predicates::directed::{div_positive, enclose_f64, overlaps, valid};
+use crate::scalar::{Interval, Mpfr, Precision, Real};
 
 /// Enclosures of the corner angle opposite `a` in a triangle `a, b, c`:
 /// `2·atan √((a−b+c)(a+b−c) / ((a+b+c)(−a+b+c)))`; `None` if the triangle may be invalid.
-pub fn corner_angle_enclosure(a: &Enclosure, b: &Enclosure, c: &Enclosure) -> Option<Enclosure> {
-    let num = a.sub(b).add(c).mul(&a.add(b).sub(c));
-    let den = a.add(b).add(c).mul(&b.add(c).sub(a));
-    Some(num.div_positive(&den)?.sqrt()?.atan().mul_pow2(1))
+pub fn corner_angle_enclosure(
+    a: &Interval<Mpfr>,
+    b: &Interval<Mpfr>,
+    c: &Interval<Mpfr>,
+) -> Option<Interval<Mpfr>> {
+    let num = (a.clone() - b + c) * &(a.clone() + b - c);
+    let den = (a.clone() + b + c) * &(b.clone() + c - a);
+    let half = valid(div_positive(&num, &den)?.sqrt())?.atan();
+    valid(half * &enclose_f64(2.0, a.ctx()))
 }
 
 /// Enclosures of all cone angles, or the first face whose angles cannot be enclosed.
 pub fn cone_angle_enclosures(
     mesh: &Mesh,
-    l: &[Enclosure],
-    prec: u32,
-) -> Result<Vec<Enclosure>, u32> {
-    let mut theta = vec![Enclosure::from_f64(0.0, prec); mesh.n_vertices()];
+    l: &[Interval<Mpfr>],
+    prec: Precision,
+) -> Result<Vec<Interval<Mpfr>>, u32> {
+    let mut theta = vec![enclose_f64(0.0, prec); mesh.n_vertices()];
     for f in mesh.faces() {
         let hs = mesh.face_halfedges(f);
         for i in 0..3 {
@@ -38,7 +43,7 @@ pub fn cone_angle_enclosures(
             let b = &l[hs[(i + 1) % 3].edge().idx()];
             let c = &l[hs[(i + 2) % 3].edge().idx()];
             let v = mesh.tail(hs[(i + 2) % 3]).idx();
-            theta[v] = theta[v].add(&corner_angle_enclosure(a, b, c).ok_or(f.0)?);
+            theta[v] += &corner_angle_enclosure(a, b, c).ok_or(f.0)?;
         }
     }
     Ok(theta)
@@ -55,6 +60,15 @@ pub fn check_euclidean_flips_preserve_cone_metric<T: Real>(
     prec: u32,
     settings: &Settings,
 ) -> Verdict {
+    let bits = prec;
+    let prec = match Precision::new(u64::from(bits)) {
+        Ok(p) => p,
+        Err(err) => {
+            return Verdict::NotApplicable {
+                reason: err.to_string(),
+            }
+        }
+    };
     let mut enc = Vec::with_capacity(lengths.len());
     for l in lengths {
         let Some(q) = l.to_rational() else {
@@ -62,7 +76,7 @@ pub fn check_euclidean_flips_preserve_cone_metric<T: Real>(
                 reason: "a length is not finite".into(),
             };
         };
-        enc.push(Enclosure::from_rational(&q, prec));
+        enc.push(Interval::from_rational(&q, prec));
     }
     let (mut m, mut l) = (mesh.clone(), lengths.to_vec());
     let opts = FlipOptions {
@@ -126,7 +140,7 @@ pub fn check_euclidean_flips_preserve_cone_metric<T: Real>(
             });
         }
         return Verdict::Undecided {
-            bits_tried: prec,
+            bits_tried: bits,
             witnesses: undecided,
         };
     };
@@ -135,36 +149,37 @@ pub fn check_euclidean_flips_preserve_cone_metric<T: Real>(
     for v in mesh.vertices() {
         let (b, a) = (&before[v.idx()], &after[v.idx()]);
         max_width = max_width.max(a.width_f64()).max(b.width_f64());
-        if !a.overlaps(b) {
+        if !overlaps(a, b) {
             witnesses.push(Witness {
                 element: v.to_string(),
                 detail: format!(
                     "cone angle changed: [{:.17e}, …] before, [{:.17e}, …] after",
-                    b.lo.to_f64(),
-                    a.lo.to_f64()
+                    b.lo().approx_f64(),
+                    a.lo().approx_f64()
                 ),
-                value: (a.lo.to_f64() - b.lo.to_f64()).abs(),
+                value: (a.lo().approx_f64() - b.lo().approx_f64()).abs(),
             });
         }
     }
     // Gauss–Bonnet on the flipped metric: Σ_int (2π − θ) + Σ_∂ (π − θ) = 2πχ.
-    let pi = Enclosure::pi(prec);
+    let pi = Interval::<Mpfr>::pi(prec);
+    let two_pi = pi.clone() * &enclose_f64(2.0, prec);
     let on_boundary = replayed.boundary_vertices();
-    let mut total = Enclosure::from_f64(0.0, prec);
+    let mut total = enclose_f64(0.0, prec);
     for v in replayed.vertices() {
         let k = if on_boundary[v.idx()] {
             pi.clone()
         } else {
-            pi.mul_pow2(1)
+            two_pi.clone()
         };
-        total = total.add(&k.sub(&after[v.idx()]));
+        total += &(k - &after[v.idx()]);
     }
-    let chi = Enclosure::from_f64(replayed.euler_characteristic() as f64, prec);
-    if !total.overlaps(&pi.mul_pow2(1).mul(&chi)) {
+    let chi = enclose_f64(replayed.euler_characteristic() as f64, prec);
+    if !overlaps(&total, &(two_pi * &chi)) {
         witnesses.push(Witness {
             element: "surface".into(),
             detail: "Gauss–Bonnet fails after flipping".into(),
-            value: total.lo.to_f64(),
+            value: total.lo().approx_f64(),
         });
     }
     if witnesses.is_empty() {

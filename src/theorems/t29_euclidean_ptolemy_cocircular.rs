@@ -10,9 +10,9 @@ use super::{Settings, Verdict, Witness};
 use crate::algorithms::flips::{euclidean_length_enclosure, ptolemy_length_enclosure};
 use crate::mesh::Mesh;
 use crate::predicates::delaunay::{QuadEdges, RealQuad};
-use crate::predicates::directed::Enclosure;
+use crate::predicates::directed::{overlaps, strictly_below};
 use crate::predicates::ladder::decide;
-use crate::scalar::{Real, Sign};
+use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
 
 /// Check T29 on every interior edge whose two triangles satisfy the triangle inequality.
 pub fn check_euclidean_equals_ptolemy_iff_cocircular<T: Real>(
@@ -48,9 +48,12 @@ pub fn check_euclidean_equals_ptolemy_iff_cocircular<T: Real>(
         let mut outcome = None;
         let mut bits = settings.ladder.start_bits.max(64);
         while bits <= settings.ladder.max_bits.max(64) {
-            let enc: Vec<Enclosure> = rat
+            let Ok(prec) = Precision::new(u64::from(bits)) else {
+                break;
+            };
+            let enc: Vec<Interval<Mpfr>> = rat
                 .iter()
-                .map(|x| Enclosure::from_rational(x, bits))
+                .map(|x| Interval::from_rational(x, prec))
                 .collect();
             let eq = crate::predicates::delaunay::Quad {
                 ij: &enc[0],
@@ -67,14 +70,14 @@ pub fn check_euclidean_equals_ptolemy_iff_cocircular<T: Real>(
             };
             match sign {
                 Sign::Zero => {
-                    outcome = Some(Some(eu.overlaps(&pt)));
+                    outcome = Some(Some(overlaps(&eu, &pt)));
                     break;
                 }
-                _ if pt.lo > eu.hi => {
+                _ if strictly_below(&eu, &pt) => {
                     outcome = Some(Some(true));
                     break;
                 }
-                _ if pt.hi < eu.lo => {
+                _ if strictly_below(&pt, &eu) => {
                     outcome = Some(Some(false));
                     break;
                 }

@@ -10,7 +10,7 @@ use penner::predicates::delaunay::{
     delaunay_sign_squared, edge_delaunay_sign_scaled, enclose_p, filter_f64, EdgeDelaunay, Quad,
     RationalQuad, RealQuad,
 };
-use penner::predicates::directed::Enclosure;
+use penner::predicates::directed::enclose_f64;
 use penner::predicates::ladder::{decide, Ladder};
 use penner::scalar::{Certified, Dd, Mpfr, Precision, Real, Sign, Stage};
 use rand::{Rng, SeedableRng};
@@ -168,10 +168,11 @@ fn b62_enclosure_contains_exact_value() {
         let [ij, jk, ki, il, lj] = [&m[0], &m[1], &m[2], &m[3], &m[4]];
         let kl = (ki * lj + il * jk) / ij;
         let p_exact = ij * (&kl * (il * ki + jk * lj) - ij * (jk * ki + il * lj));
-        for bits in [53u32, 64, 100] {
-            let e = enclose_p(&q.map(|x| Enclosure::from_f64(x, bits)));
-            let lo = to_m(&e.lo.to_rational().unwrap());
-            let hi = to_m(&e.hi.to_rational().unwrap());
+        for bits in [53u64, 64, 100] {
+            let p = Precision::new(bits).unwrap();
+            let e = enclose_p(&q.map(|x| enclose_f64(x, p)));
+            let lo = to_m(&e.lo().to_rational().unwrap());
+            let hi = to_m(&e.hi().to_rational().unwrap());
             assert!(lo <= p_exact && p_exact <= hi, "{q:?} at {bits} bits");
             // Negative control: the round-to-nearest midpoint is generally not the value.
             if lo < hi {

@@ -6,6 +6,7 @@ mod cone_angles_kernel;
 mod definition_two;
 mod delaunay;
 mod delaunay_flips;
+mod delaunay_genus;
 mod dual;
 mod exact;
 mod interval;

@@ -1,0 +1,279 @@
+//! T21 over random surfaces of genus 0–3, closed and with boundary, with random and
+//! near-degenerate metrics, flipped at f64, Dd, MPFR and exactly (Ptolemy over ℚ). Every
+//! result is re-checked edge by edge with the malachite D-form oracle; the negative
+//! controls run the same oracle and the T21 check on the unflipped inputs.
+
+use crate::delaunay::{oracle, to_m};
+use crate::support::cases;
+use malachite::rational::Rational as MRational;
+use penner::algorithms::flip_to_delaunay::{
+    flip_to_delaunay, flip_to_delaunay_exact, ExactLengths, FlipKind, FlipOptions, FlipReport,
+};
+use penner::mesh::{builders, Edge, Face, Mesh};
+use penner::predicates::delaunay::QuadEdges;
+use penner::scalar::{Dd, Mpfr, Precision, Real, Sign};
+use penner::theorems::t21_delaunay_flipping::check_all_edges_delaunay;
+use penner::theorems::{Settings, Verdict};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use rug::Rational;
+
+/// How the edge lengths of a test surface are drawn.
+#[derive(Clone, Copy, Debug)]
+enum MetricKind {
+    /// `1 + k/1024`, `k ∈ 0..1024`: any three satisfy the strict triangle inequality.
+    Random,
+    /// `1` or `2 − 2⁻ᵏ` (`k ∈ 20..=50`, exact in binary64): a triangle with sides
+    /// `(1, 1, 2 − 2⁻ᵏ)` is within `2⁻ᵏ` of degenerate (a cap with an angle near π);
+    /// every other combination is a valid, fat triangle.
+    NearDegenerate,
+}
+
+struct Case {
+    name: String,
+    mesh: Mesh,
+    /// Exact lengths (every value is a binary64 number).
+    lengths: Vec<Rational>,
+}
+
+/// A random closed surface of genus `g`, or the same surface with a hole cut in it
+/// (two face splits, then the removal of a face with three distinct corners).
+fn surface(g: u32, n_vertices: u32, boundary: bool, seed: u64) -> Mesh {
+    let min = if g == 0 { 3 } else { 1 };
+    let mut m = builders::random_surface(g, n_vertices.max(min), seed).unwrap();
+    if boundary {
+        m.split_face(Face(0)).unwrap();
+        let f = Face(m.n_faces() as u32 - 2);
+        m.split_face(f).unwrap();
+        m = builders::remove_face(&m, Face(m.n_faces() as u32 - 2)).unwrap();
+        assert!(m.n_boundary_loops() >= 1);
+    }
+    m
+}
+
+fn lengths(n: usize, kind: MetricKind, rng: &mut ChaCha8Rng) -> Vec<Rational> {
+    let k: u32 = rng.gen_range(20..=50);
+    (0..n)
+        .map(|_| match kind {
+            MetricKind::Random => Rational::from((1024 + rng.gen_range(0u32..1024), 1024)),
+            MetricKind::NearDegenerate => {
+                if rng.gen_bool(0.5) {
+                    Rational::from(1)
+                } else {
+                    Rational::from(2) - Rational::from((1, rug::Integer::from(1) << k))
+                }
+            }
+        })
+        .collect()
+}
+
+/// The `i`-th test case: genus `i mod 4`, boundary and metric kind from the seed.
+fn case(i: u64) -> Case {
+    let mut rng = ChaCha8Rng::seed_from_u64(0x7421 + i);
+    let g = (i % 4) as u32;
+    let boundary = rng.gen_bool(0.5);
+    let kind = if rng.gen_bool(0.5) {
+        MetricKind::Random
+    } else {
+        MetricKind::NearDegenerate
+    };
+    let nv = rng.gen_range(1..=18);
+    let mesh = surface(g, nv, boundary, rng.gen());
+    let lengths = lengths(mesh.n_edges(), kind, &mut rng);
+    Case {
+        name: format!(
+            "case {i}: genus {g}, boundary {boundary}, {kind:?}, V = {}",
+            mesh.n_vertices()
+        ),
+        mesh,
+        lengths,
+    }
+}
+
+/// Interior edges the malachite oracle finds not Delaunay (D < 0).
+fn oracle_non_delaunay(mesh: &Mesh, lengths: &[MRational]) -> Vec<Edge> {
+    mesh.edges()
+        .filter(|&e| {
+            QuadEdges::of(mesh, e).is_some_and(|q| {
+                let x = q.lengths(lengths);
+                oracle([x.ij, x.jk, x.ki, x.il, x.lj]) == Sign::Negative
+            })
+        })
+        .collect()
+}
+
+fn oracle_of<T: Real>(l: &[T]) -> Vec<MRational> {
+    l.iter().map(|x| to_m(&x.to_rational().unwrap())).collect()
+}
+
+/// Flip at backend `T`, then assert: terminated, every edge certified, the oracle agrees,
+/// χ and the boundary are unchanged. Returns the flip count.
+fn flip_and_check<T: Real>(c: &Case, l: &[T], kind: FlipKind, what: &str) -> usize {
+    let (mut m, mut l) = (c.mesh.clone(), l.to_vec());
+    let r: FlipReport = flip_to_delaunay(&mut m, &mut l, kind, &FlipOptions::default()).unwrap();
+    assert!(
+        r.all_certified_delaunay(),
+        "{} {what} {kind:?}: {r:?}",
+        c.name
+    );
+    assert_eq!(
+        oracle_non_delaunay(&m, &oracle_of(&l)),
+        vec![],
+        "{} {what} {kind:?}",
+        c.name
+    );
+    assert_eq!(m.euler_characteristic(), c.mesh.euler_characteristic());
+    assert_eq!(m.n_boundary_loops(), c.mesh.n_boundary_loops());
+    r.flips
+}
+
+fn settings() -> Settings {
+    Settings::default()
+}
+
+#[test]
+fn t21_genus_0_to_3_with_and_without_boundary_all_backends() {
+    let p = Precision::new(128).unwrap();
+    let mut non_delaunay_inputs = 0;
+    let mut flips = 0;
+    let n = cases(48, 20_000) as u64;
+    for i in 0..n {
+        let c = case(i);
+        let f: Vec<f64> = c.lengths.iter().map(Rational::to_f64).collect();
+        // Every length is a binary64 number: the f64 metric is the exact metric.
+        assert!(f
+            .iter()
+            .zip(&c.lengths)
+            .all(|(x, q)| Rational::from_f64(*x).as_ref() == Some(q)));
+        let dd: Vec<Dd> = f.iter().map(|&x| <Dd as Real>::from_f64(x, ())).collect();
+        let mp: Vec<Mpfr> = f.iter().map(|&x| Mpfr::from_f64(x, p)).collect();
+        for kind in [FlipKind::Euclidean, FlipKind::Ptolemy] {
+            flips += flip_and_check(&c, &f, kind, "f64");
+            flip_and_check(&c, &dd, kind, "dd");
+            flip_and_check(&c, &mp, kind, "mpfr");
+        }
+        // Exact Ptolemy flipping over ℚ: no rounding at all below the guard.
+        let mut m = c.mesh.clone();
+        let (r, out) =
+            flip_to_delaunay_exact(&mut m, c.lengths.clone(), 1 << 16, &FlipOptions::default())
+                .unwrap();
+        assert!(r.all_certified_delaunay(), "{} exact: {r:?}", c.name);
+        let ExactLengths::Exact(ex) = out else {
+            panic!("{}: guard of 2¹⁶ bits passed", c.name)
+        };
+        let ex: Vec<MRational> = ex.iter().map(to_m).collect();
+        assert_eq!(oracle_non_delaunay(&m, &ex), vec![], "{} exact", c.name);
+        // Negative control: the same oracle and the T21 check reject the unflipped input
+        // whenever it is not Delaunay, naming every failing edge.
+        let before = oracle_non_delaunay(&c.mesh, &oracle_of(&f));
+        let v = check_all_edges_delaunay(&c.mesh, &f, &settings(), false, 0);
+        if before.is_empty() {
+            assert!(v.holds(), "{}", c.name);
+        } else {
+            non_delaunay_inputs += 1;
+            let Verdict::Fails { witnesses, .. } = v else {
+                panic!("{}: unflipped input accepted: {v:?}", c.name)
+            };
+            assert_eq!(witnesses.len(), before.len(), "{}", c.name);
+        }
+    }
+    assert!(
+        non_delaunay_inputs * 2 > n as usize,
+        "most inputs must need flips: {non_delaunay_inputs} of {n}"
+    );
+    assert!(flips > 0);
+}
+
+#[test]
+fn t21_genus_cases_cover_every_genus_boundary_and_metric() {
+    // The generator really produces genus 0–3, closed and bounded: χ = 2 − 2g − b.
+    let mut seen = [[false; 2]; 4];
+    for i in 0..cases(48, 20_000) as u64 {
+        let c = case(i);
+        let b = c.mesh.n_boundary_loops() as i64;
+        let g = (2 - c.mesh.euler_characteristic() - b) / 2;
+        assert!((0..=3).contains(&g), "{}", c.name);
+        assert_eq!(g as u64, i % 4, "{}", c.name);
+        seen[g as usize][usize::from(b > 0)] = true;
+    }
+    assert_eq!(seen, [[true; 2]; 4]);
+}
+
+/// Four points on the unit circle at increasing random angles, split along `0–2`: the
+/// edge lengths of the disk `[0,1,2], [0,2,3]` rounded to f64, so `P` of the diagonal is a
+/// rounding-sized number of either sign.
+fn cocircular_quad(rng: &mut ChaCha8Rng) -> (Mesh, Vec<f64>) {
+    let mut t: Vec<f64> = (0..4)
+        .map(|_| rng.gen_range(0.0..std::f64::consts::TAU))
+        .collect();
+    t.sort_by(f64::total_cmp);
+    let m = Mesh::from_faces(4, &[[0, 1, 2], [0, 2, 3]]).unwrap();
+    let l = m
+        .edges()
+        .map(|e| {
+            let h = e.halfedge();
+            let (a, b) = (t[m.tail(h).idx()], t[m.tip(h).idx()]);
+            (a.cos() - b.cos()).hypot(a.sin() - b.sin())
+        })
+        .collect();
+    (m, l)
+}
+
+#[test]
+fn b65_nudged_flips_are_certified_for_the_stored_lengths() {
+    use penner::algorithms::flips::euclidean_length;
+    let u = f64::EPSILON / 2.0;
+    let mut rng = ChaCha8Rng::seed_from_u64(65);
+    let (mut nudged, mut flipped) = (0, 0);
+    for _ in 0..cases(3000, 200_000) {
+        let (m, l) = cocircular_quad(&mut rng);
+        let diag = m.edges().find(|&e| !m.is_boundary_edge(e)).unwrap();
+        let q = QuadEdges::of(&m, diag).unwrap();
+        let rounded = euclidean_length(q.lengths(&l));
+        let (mut m2, mut l2) = (m.clone(), l.clone());
+        let r = flip_to_delaunay(
+            &mut m2,
+            &mut l2,
+            FlipKind::Euclidean,
+            &FlipOptions::default(),
+        )
+        .unwrap();
+        assert!(r.all_certified_delaunay(), "{l:?}: {r:?}");
+        // The oracle agrees on the stored lengths, whatever happened.
+        assert_eq!(oracle_non_delaunay(&m2, &oracle_of(&l2)), vec![], "{l:?}");
+        if r.flips == 0 {
+            continue;
+        }
+        flipped += 1;
+        let stored = l2[diag.idx()];
+        if r.nudged == 0 {
+            assert_eq!(
+                stored, rounded,
+                "an unnudged flip stores the rounded length"
+            );
+            continue;
+        }
+        nudged += 1;
+        // The stored length is the rounded one shrunk by at most 8 steps of
+        // fl(ℓ − fl(4u·ℓ)), each a relative change below 5u + 4u² (proof: B65).
+        assert!(stored < rounded, "{l:?}");
+        assert!(
+            stored >= rounded * (1.0 - 8.0 * (5.0 * u + 4.0 * u * u)),
+            "{l:?}"
+        );
+        // Negative control: with the rounded length the new diagonal is not Delaunay for
+        // the oracle, so the nudge was needed.
+        let mut bare = l2.clone();
+        bare[diag.idx()] = rounded;
+        assert_eq!(
+            oracle_non_delaunay(&m2, &oracle_of(&bare)),
+            vec![diag],
+            "{l:?}"
+        );
+    }
+    assert!(flipped > 100, "only {flipped} flips");
+    assert!(
+        nudged > 0,
+        "no rounded flip landed on the wrong side of a tie"
+    );
+}
