@@ -284,6 +284,7 @@ const FILTER_ABS: f64 = 9.332636185032189e-302;
 
 /// Sign of `P` for five positive finite `f64` lengths, or `None` when the proven error
 /// bound does not separate it from zero or the lengths span more than 2²⁰⁰ (proof: B61).
+#[allow(clippy::inline_always)] // hot path of the flip loop (measured)
 #[inline(always)]
 pub fn filter_f64(q: [f64; 5]) -> Option<Sign> {
     // Biased exponent in [823, 1222] ⇔ 2⁻²⁰⁰ ≤ x < 2²⁰⁰ for positive x; zero, negative,
@@ -317,6 +318,7 @@ fn filter_rescaled(q: [f64; 5], lo: f64, hi: f64) -> Option<Sign> {
     filter_core(r[0], r[1], r[2], r[3], r[4])
 }
 
+#[allow(clippy::inline_always)] // hot path of the flip loop (measured)
 #[inline(always)]
 fn filter_core(a: f64, b: f64, c: f64, d: f64, e: f64) -> Option<Sign> {
     let a2 = a * a;
@@ -367,6 +369,7 @@ fn sign_of(q: &Rational) -> Sign {
 pub struct RealQuad<'a, T>(pub Quad<&'a T>);
 
 impl<T: Real> SignPredicate for RealQuad<'_, T> {
+    #[allow(clippy::inline_always)] // hot path of the flip loop (measured)
     #[inline(always)]
     fn filter(&self) -> Option<Sign> {
         if T::precision_bits(self.0.ij.ctx()) != 53 {
