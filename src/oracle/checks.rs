@@ -1,8 +1,8 @@
 //! The registry's entries: each catalogue check that applies to a single surface with a
 //! metric, adapted to a [`Surface`] and a [`Prec`].
 //!
-//! T04 (angle integrability) is absent: its vertex-sum condition is about planar layouts,
-//! and deciding that a surface is flat is not done here.
+//! T04, T07, T20 and T35 need data beyond a metric; their entries live in
+//! [`super::checks_extra`].
 //!
 //! Where a theorem compares two metrics, the second one is derived from the case by a fixed
 //! rule stated in the entry (a conformal scaling by [`scale_factors`], a uniform scale by
@@ -12,6 +12,7 @@
 #![allow(clippy::clone_on_copy, clippy::op_ref, clippy::let_unit_value)]
 
 use super::case::MetricOps;
+use super::checks_extra as extra;
 use super::precision::Prec;
 use super::registry::Check;
 use crate::algorithms::flip_to_delaunay::FlipKind;
@@ -301,9 +302,19 @@ pub fn entries() -> Vec<Check> {
             run: t03,
         },
         Check {
+            id: "T04",
+            title: "angle integrability (planar)",
+            run: extra::t04,
+        },
+        Check {
             id: "T05",
             title: "cotan Laplacian",
             run: t05,
+        },
+        Check {
+            id: "T07",
+            title: "E_C = E_D − A",
+            run: extra::t07,
         },
         Check {
             id: "T15",
@@ -329,6 +340,11 @@ pub fn entries() -> Vec<Check> {
             id: "T19",
             title: "one-vertex torus",
             run: t19,
+        },
+        Check {
+            id: "T20",
+            title: "inversion keeps cross ratios",
+            run: extra::t20,
         },
         Check {
             id: "T21",
@@ -364,6 +380,11 @@ pub fn entries() -> Vec<Check> {
             id: "T29",
             title: "Euclid = Ptolemy ⇔ cocircular",
             run: t29,
+        },
+        Check {
+            id: "T35",
+            title: "Definition 2 (scale + flips)",
+            run: extra::t35,
         },
     ]
 }

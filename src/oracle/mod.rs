@@ -15,6 +15,7 @@ pub mod precision;
 pub mod registry;
 // After `registry`, whose `at_precision!` macro it uses.
 pub mod checks;
+pub mod checks_extra;
 pub mod relabel;
 pub mod report;
 pub mod shrink;

@@ -16,6 +16,7 @@ mod mesh_core;
 mod meshgen;
 mod oracle;
 mod predicates_planar;
+mod registry_extra;
 mod scalar_dd;
 #[cfg(feature = "strategies")]
 mod strategies;
