@@ -57,6 +57,16 @@ pub(crate) fn inputs<const N: usize>(qs: &[Rational; N]) -> Option<[f64; N]> {
     Some(out)
 }
 
+/// The f64 inputs of a filter when all are usable and each is 0 or within
+/// `2^lo_exp ≤ |x| < 2^hi_exp` (the magnitude hypotheses of the filter's proof), or `None`.
+pub(crate) fn inputs_in_range<const N: usize>(
+    qs: &[Rational; N],
+    lo_exp: i32,
+    hi_exp: i32,
+) -> Option<[f64; N]> {
+    inputs(qs).filter(|x| x.iter().all(|&t| in_range(t, lo_exp, hi_exp)))
+}
+
 /// Whether `x` is 0 or `2^lo_exp ≤ |x| ≤ 2^hi_exp` (magnitude guards of the filters).
 pub(crate) fn in_range(x: f64, lo_exp: i32, hi_exp: i32) -> bool {
     if x == 0.0 {

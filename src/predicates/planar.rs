@@ -57,20 +57,17 @@ pub const ORIENT2D_FILTER: f64 = 8.0 * U;
 /// Filter constant of [`InCircle`]: `|det − fl(det)| ≤ 2⁻⁴⁹·P` (`16u`), proofs/B26.
 pub const INCIRCLE_FILTER: f64 = 16.0 * U;
 
+/// The coordinates `[x₀, y₀, x₁, y₁, …]` of `K` points as `N = 2K` rationals.
+fn coordinates<const K: usize, const N: usize>(points: [&Point; K]) -> [Rational; N] {
+    std::array::from_fn(|i| points[i / 2][i % 2].clone())
+}
+
 impl Orient2d {
     /// The orientation question for `a, b, c`.
     pub fn new(a: &Point, b: &Point, c: &Point) -> Orient2d {
-        let v = [
-            a[0].clone(),
-            a[1].clone(),
-            b[0].clone(),
-            b[1].clone(),
-            c[0].clone(),
-            c[1].clone(),
-        ];
+        let v = coordinates([a, b, c]);
         // proof: B25 (inputs: nonzero coordinates in [2^-450, 2^500])
-        let approx =
-            filter::inputs(&v).filter(|x| x.iter().all(|&t| filter::in_range(t, -450, 500)));
+        let approx = filter::inputs_in_range(&v, -450, 500);
         Orient2d { v, approx }
     }
 
@@ -149,19 +146,9 @@ pub struct InCircle {
 impl InCircle {
     /// The incircle question for `d` against the circle through `a, b, c`.
     pub fn new(a: &Point, b: &Point, c: &Point, d: &Point) -> InCircle {
-        let v = [
-            a[0].clone(),
-            a[1].clone(),
-            b[0].clone(),
-            b[1].clone(),
-            c[0].clone(),
-            c[1].clone(),
-            d[0].clone(),
-            d[1].clone(),
-        ];
+        let v = coordinates([a, b, c, d]);
         // proof: B26 (inputs: nonzero coordinates in [2^-190, 2^248])
-        let approx =
-            filter::inputs(&v).filter(|x| x.iter().all(|&t| filter::in_range(t, -190, 248)));
+        let approx = filter::inputs_in_range(&v, -190, 248);
         InCircle { v, approx }
     }
 

@@ -52,8 +52,7 @@ impl TriangleSlack {
     pub fn new(a: &Rational, b: &Rational, c: &Rational) -> TriangleSlack {
         let v = [a.clone(), b.clone(), c.clone()];
         // proof: B23 (inputs: nonzero in [2^-900, 2^1000])
-        let approx =
-            filter::inputs(&v).filter(|x| x.iter().all(|&t| filter::in_range(t, -900, 1000)));
+        let approx = filter::inputs_in_range(&v, -900, 1000);
         TriangleSlack { v, approx }
     }
 
@@ -114,8 +113,7 @@ impl TriangleAreaSq {
     pub fn new(a2: &Rational, b2: &Rational, c2: &Rational) -> TriangleAreaSq {
         let v = [a2.clone(), b2.clone(), c2.clone()];
         // proof: B24 (inputs: nonzero in [2^-450, 2^450])
-        let approx =
-            filter::inputs(&v).filter(|x| x.iter().all(|&t| filter::in_range(t, -450, 450)));
+        let approx = filter::inputs_in_range(&v, -450, 450);
         TriangleAreaSq { v, approx }
     }
 

@@ -119,22 +119,7 @@ pub fn check_delaunay_uniqueness<T: Real>(
             Some(_) => {}
         }
     }
-    if !witnesses.is_empty() {
-        Verdict::Fails {
-            certified: true,
-            witnesses,
-        }
-    } else if !undecided.is_empty() {
-        Verdict::Undecided {
-            bits_tried: settings.ladder.max_bits,
-            witnesses: undecided,
-        }
-    } else {
-        Verdict::Holds {
-            certified: true,
-            max_error: 0.0,
-        }
-    }
+    Verdict::certified(witnesses, undecided, settings.ladder.max_bits)
 }
 
 /// Flip the planar triangulation `faces` of `points` (convex boundary) with Euclidean flips
@@ -172,17 +157,7 @@ pub fn check_planar_delaunay_matches_spade(
         Ok(w) => w,
         Err(reason) => return Verdict::NotApplicable { reason },
     };
-    if witnesses.is_empty() {
-        Verdict::Holds {
-            certified: true,
-            max_error: 0.0,
-        }
-    } else {
-        Verdict::Fails {
-            certified: true,
-            witnesses,
-        }
-    }
+    Verdict::certified(witnesses, Vec::new(), 0)
 }
 
 /// Every edge of the triangulation `(m, l)` of `points` that is not in `spade`'s constrained

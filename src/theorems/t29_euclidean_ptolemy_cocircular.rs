@@ -101,20 +101,5 @@ pub fn check_euclidean_equals_ptolemy_iff_cocircular<T: Real>(
             }),
         }
     }
-    if !witnesses.is_empty() {
-        Verdict::Fails {
-            certified: true,
-            witnesses,
-        }
-    } else if !undecided.is_empty() {
-        Verdict::Undecided {
-            bits_tried: settings.ladder.max_bits,
-            witnesses: undecided,
-        }
-    } else {
-        Verdict::Holds {
-            certified: true,
-            max_error: 0.0,
-        }
-    }
+    Verdict::certified(witnesses, undecided, settings.ladder.max_bits)
 }

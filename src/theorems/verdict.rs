@@ -56,6 +56,37 @@ impl Verdict {
     pub fn fails(&self) -> bool {
         matches!(self, Verdict::Fails { .. })
     }
+
+    /// The verdict of a check whose every decision is exact or certified (an enclosure with
+    /// directed rounding): any `failures` make it a certified `Fails`; otherwise any
+    /// `undecided` elements make it `Undecided` at `bits_tried`; otherwise it `Holds` with
+    /// no discrepancy.
+    ///
+    /// ```
+    /// use penner::theorems::{Verdict, Witness};
+    /// let w = Witness { element: "e3".into(), detail: "D < 0".into(), value: -1.0 };
+    /// assert!(Verdict::certified(vec![], vec![], 0).holds());
+    /// assert!(Verdict::certified(vec![w.clone()], vec![], 0).fails());
+    /// assert!(matches!(Verdict::certified(vec![], vec![w], 1024), Verdict::Undecided { bits_tried: 1024, .. }));
+    /// ```
+    pub fn certified(failures: Vec<Witness>, undecided: Vec<Witness>, bits_tried: u32) -> Verdict {
+        if !failures.is_empty() {
+            Verdict::Fails {
+                certified: true,
+                witnesses: failures,
+            }
+        } else if !undecided.is_empty() {
+            Verdict::Undecided {
+                bits_tried,
+                witnesses: undecided,
+            }
+        } else {
+            Verdict::Holds {
+                certified: true,
+                max_error: 0.0,
+            }
+        }
+    }
 }
 
 /// Settings shared by all checks.

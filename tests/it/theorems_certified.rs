@@ -212,25 +212,30 @@ fn b44_cotangent_error_bound_holds_against_mpfr_1024() {
     }
 }
 
+/// Two triangles on a common edge from rational planar points with denominator `den`:
+/// `i, j` on the x-axis, `k` above, `l` below (a convex or non-convex quadrilateral).
+fn planar_quad(rng: &mut ChaCha8Rng, den: i64) -> [[Rational; 2]; 4] {
+    let mut q = |lo: i64, hi: i64| Rational::from((rng.gen_range(lo..hi), den));
+    let i = [q(-20, 0), Rational::new()];
+    let j = [q(1, 20), Rational::new()];
+    let k = [q(-30, 30), q(1, 30)];
+    let l = [q(-30, 30), q(-30, -1)];
+    [i, j, k, l]
+}
+
+/// The squared distance of two rational points.
+fn d2(a: &[Rational; 2], b: &[Rational; 2]) -> Rational {
+    let dx = Rational::from(&a[0] - &b[0]);
+    let dy = Rational::from(&a[1] - &b[1]);
+    Rational::from(&dx * &dx) + Rational::from(&dy * &dy)
+}
+
 #[test]
 fn b49_cotan_weight_sign_exact_agrees_with_mpfr_1024() {
     let mut rng = ChaCha8Rng::seed_from_u64(79);
     let mut seen = [0usize; 3];
     for _ in 0..crate::support::cases(500, 100_000) {
-        // Two triangles on a common edge from rational planar points: i, j on the x-axis,
-        // k above, l below (a convex or non-convex quadrilateral).
-        let q = |rng: &mut ChaCha8Rng, lo: i64, hi: i64| Rational::from((rng.gen_range(lo..hi), 8));
-        let (i, j) = (
-            [q(&mut rng, -20, 0), Rational::new()],
-            [q(&mut rng, 1, 20), Rational::new()],
-        );
-        let k = [q(&mut rng, -30, 30), q(&mut rng, 1, 30)];
-        let l = [q(&mut rng, -30, 30), q(&mut rng, -30, -1)];
-        let d2 = |a: &[Rational; 2], b: &[Rational; 2]| {
-            let dx = Rational::from(&a[0] - &b[0]);
-            let dy = Rational::from(&a[1] - &b[1]);
-            Rational::from(&dx * &dx) + Rational::from(&dy * &dy)
-        };
+        let [i, j, k, l] = planar_quad(&mut rng, 8);
         let p = CotanWeightSign {
             first: [d2(&i, &j), d2(&j, &k), d2(&k, &i)],
             second: [d2(&i, &j), d2(&i, &l), d2(&l, &j)],
@@ -284,18 +289,7 @@ fn t05_cotan_weight_sign_matches_the_delaunay_predicate() {
     let mut rng = ChaCha8Rng::seed_from_u64(83);
     let mut seen = [0usize; 3];
     for _ in 0..crate::support::cases(500, 100_000) {
-        let q = |rng: &mut ChaCha8Rng, lo: i64, hi: i64| Rational::from((rng.gen_range(lo..hi), 4));
-        let (i, j) = (
-            [q(&mut rng, -20, 0), Rational::new()],
-            [q(&mut rng, 1, 20), Rational::new()],
-        );
-        let k = [q(&mut rng, -30, 30), q(&mut rng, 1, 30)];
-        let l = [q(&mut rng, -30, 30), q(&mut rng, -30, -1)];
-        let d2 = |a: &[Rational; 2], b: &[Rational; 2]| {
-            let dx = Rational::from(&a[0] - &b[0]);
-            let dy = Rational::from(&a[1] - &b[1]);
-            Rational::from(&dx * &dx) + Rational::from(&dy * &dy)
-        };
+        let [i, j, k, l] = planar_quad(&mut rng, 4);
         let (ij, jk, ki, il, lj) = (d2(&i, &j), d2(&j, &k), d2(&k, &i), d2(&i, &l), d2(&l, &j));
         let cot = CotanWeightSign {
             first: [ij.clone(), jk.clone(), ki.clone()],
