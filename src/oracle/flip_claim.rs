@@ -46,8 +46,8 @@ use crate::io::json::edge_order;
 use crate::io::{Metric, Surface};
 use crate::mesh::{Edge, Mesh};
 use crate::predicates::delaunay::{delaunay_sign_squared, enclose_p, exact_p, Quad, QuadEdges};
-use crate::predicates::directed::Enclosure;
-use crate::scalar::{Mpfr, Precision, Sign};
+use crate::predicates::directed::valid;
+use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
 use crate::theorems::Witness;
 use rug::Rational;
 use std::cmp::Ordering;
@@ -58,6 +58,19 @@ const EXACT_GUARD_BITS: u64 = 4096;
 
 /// At most this many relabelings are compared (symmetries fixing every vertex).
 const MAX_RELABELINGS: usize = 64;
+
+/// The outward-rounded MPFR enclosure of the replay (proof: B62).
+type Enclosure = Interval<Mpfr>;
+
+/// The tightest enclosure of `q` at `bits` bits; `None` for a precision MPFR refuses.
+fn from_q(q: &Rational, bits: u32) -> Option<Enclosure> {
+    let p = Precision::new(u64::from(bits)).ok()?;
+    Some(Interval::from_rational(q, p))
+}
+
+fn positive(x: &Enclosure) -> bool {
+    x.sign() == Some(Sign::Positive)
+}
 
 /// A length in the replay: exact, the square root of an exact rational, or an enclosure.
 #[derive(Clone, Debug)]
@@ -70,8 +83,8 @@ enum Len {
 impl Len {
     fn enclose(&self, bits: u32) -> Option<Enclosure> {
         match self {
-            Len::Exact(q) => Some(Enclosure::from_rational(q, bits)),
-            Len::Root(s) => Enclosure::from_rational(s, bits).sqrt(),
+            Len::Exact(q) => from_q(q, bits),
+            Len::Root(s) => valid(from_q(s, bits)?.sqrt()),
             Len::Enclosed(e) => Some(e.clone()),
         }
     }
@@ -145,11 +158,11 @@ fn new_length(quad: Quad<&Len>, ptolemy: bool, bits: u32) -> Option<Len> {
                 il: d,
                 lj: e,
             });
-            return Some(if rational_bits(&l) > EXACT_GUARD_BITS {
-                Len::Enclosed(Enclosure::from_rational(&l, bits))
+            return if rational_bits(&l) > EXACT_GUARD_BITS {
+                from_q(&l, bits).map(Len::Enclosed)
             } else {
-                Len::Exact(l)
-            });
+                Some(Len::Exact(l))
+            };
         }
     }
     let [a, b, c, d, e] = quad.to_array().map(|x| x.enclose(bits));
@@ -166,7 +179,7 @@ fn new_length(quad: Quad<&Len>, ptolemy: bool, bits: u32) -> Option<Len> {
     } else {
         euclidean_length_enclosure(q)
     }
-    .filter(Enclosure::is_positive)
+    .filter(positive)
     .map(Len::Enclosed)
 }
 
@@ -335,11 +348,13 @@ fn within_root(s: &Rational, c: &Rational, eps: &Rational) -> Cmp {
 
 /// |x − c| < ε (Inside) or > ε (Outside) proved by the enclosure `x`, else Open.
 fn within_enclosure(x: &Enclosure, c: &Rational, eps: &Rational, bits: u32) -> Cmp {
-    let d = x.sub(&Enclosure::from_rational(c, bits));
-    let e = Enclosure::from_rational(eps, bits);
-    if e.sub(&d).is_positive() && e.add(&d).is_positive() {
+    let (Some(c), Some(e)) = (from_q(c, bits), from_q(eps, bits)) else {
+        return Cmp::Open;
+    };
+    let d = x.clone() - &c;
+    if positive(&(e.clone() - &d)) && positive(&(e.clone() + &d)) {
         Cmp::Inside
-    } else if d.sub(&e).is_positive() || e.add(&d).sign() == Some(Sign::Negative) {
+    } else if positive(&(d.clone() - &e)) || (e.clone() + &d).sign() == Some(Sign::Negative) {
         Cmp::Outside
     } else {
         Cmp::Open
@@ -347,8 +362,11 @@ fn within_enclosure(x: &Enclosure, c: &Rational, eps: &Rational, bits: u32) -> C
 }
 
 fn midpoint_abs(x: &Enclosure, c: &Rational, bits: u32) -> f64 {
-    let d = x.sub(&Enclosure::from_rational(c, bits));
-    f64::midpoint(d.lo.to_f64(), d.hi.to_f64()).abs()
+    let Some(c) = from_q(c, bits) else {
+        return f64::NAN;
+    };
+    let d = x.clone() - &c;
+    f64::midpoint(d.lo().approx_f64(), d.hi().approx_f64()).abs()
 }
 
 /// The verdict of one relabeling: per claimed edge, in the result's edge order.
@@ -378,7 +396,7 @@ fn compare(result: &Surface, ours: &Ours, rel: &Relabeling, eps: &Rational, bits
                 Rational::from(x - c).abs().to_f64(),
             ),
             (false, Len::Root(s)) => {
-                let x = Enclosure::from_rational(s, bits).sqrt();
+                let x = from_q(s, bits).and_then(|x| valid(x.sqrt()));
                 let shown = x.as_ref().map_or(f64::NAN, |x| midpoint_abs(x, c, bits));
                 (within_root(s, c, eps), shown)
             }
@@ -391,7 +409,7 @@ fn compare(result: &Surface, ours: &Ours, rel: &Relabeling, eps: &Rational, bits
             }
             (_, l) => match l.enclose(bits) {
                 Some(x) => {
-                    let x = if squared { x.mul(&x) } else { x };
+                    let x = if squared { x.clone() * &x } else { x };
                     (
                         within_enclosure(&x, c, eps, bits),
                         midpoint_abs(&x, c, bits),
