@@ -13,6 +13,7 @@ mod interval;
 mod io;
 mod mesh;
 mod mesh_core;
+mod mesh_enumeration;
 mod meshgen;
 mod oracle;
 mod predicates_planar;

@@ -265,7 +265,7 @@ fn relabel(r: &RawMesh, ph: &[u32], pf: &[u32]) -> RawMesh {
 /// Flipping `e` twice equals the original up to the documented relabeling: swap `2e` ↔
 /// `2e+1` and the two faces (face_halfedge/out may differ); four flips restore
 /// next/tail/face exactly.
-fn check_flip_involution(name: &str, m: &Mesh, e: Edge) {
+pub(crate) fn check_flip_involution(name: &str, m: &Mesh, e: Edge) {
     let before = m.to_raw();
     let mut x = m.clone();
     let (fa, fb) = (m.face(e.side(0)), m.face(e.side(1)));
