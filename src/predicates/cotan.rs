@@ -1,19 +1,25 @@
 //! Certified sign of a cotan weight `w_ij = ½(cot α_k + cot α_l)` from squared lengths.
 
+use super::filter::{self, Ring};
 use super::ladder::{decide, Ladder, SignPredicate};
 use crate::mesh::{Edge, Mesh};
-use crate::scalar::{Certified, Precision, Sign};
+use crate::scalar::{Certified, Precision, Real, Sign};
 use rug::Rational;
 
 /// `16·Area²` of a triangle from its squared sides:
-/// `P = 2(a²b² + b²c² + c²a²) − a⁴ − b⁴ − c⁴` (Heron, MATH.md §1).
-fn heron16(a2: &Rational, b2: &Rational, c2: &Rational) -> Rational {
-    let ab = Rational::from(a2 * b2);
-    let bc = Rational::from(b2 * c2);
-    let ca = Rational::from(c2 * a2);
-    let s = Rational::from(&ab + &bc) + &ca;
-    let sq = Rational::from(a2 * a2) + Rational::from(b2 * b2) + Rational::from(c2 * c2);
-    s * Rational::from(2) - sq
+/// `P = 2(a²b² + b²c² + c²a²) − a⁴ − b⁴ − c⁴` (Heron, MATH.md §1), in any ring (exact in ℚ,
+/// an enclosure on intervals).
+fn heron16<T: Ring>(a2: &T, b2: &T, c2: &T) -> T {
+    let s = a2.clone() * b2 + &(b2.clone() * c2) + &(c2.clone() * a2);
+    let sq = a2.clone() * a2 + &(b2.clone() * b2) + &(c2.clone() * c2);
+    s.clone() + &s - &sq
+}
+
+/// `N = b² + c² − a²` and `P = 16·Area²` of a triangle `[a², b², c²]`.
+fn np<T: Ring>(t: &[T; 3]) -> (T, T) {
+    let n = t[1].clone() + &t[2] - &t[0];
+    let p = heron16(&t[0], &t[1], &t[2]);
+    (n, p)
 }
 
 /// The sign of `cot α_k + cot α_l` for interior edge `ij` between triangles with squared
@@ -23,7 +29,9 @@ fn heron16(a2: &Rational, b2: &Rational, c2: &Rational) -> Rational {
 /// `N_1/√P_1 + N_2/√P_2` is that of `N_1 √P_2 + N_2 √P_1`: the common sign of `N_1, N_2` when
 /// they agree, else the sign of `N_1² P_2 − N_2² P_1` times the sign of the larger term's `N`
 /// (proofs/B49). Everything is a polynomial in the squared lengths, so the exact rung
-/// decides in ℚ.
+/// decides in ℚ. The interval rung encloses `N_1 √P_2 + N_2 √P_1` directly with outward
+/// rounding (once both `P` are certainly positive); a cocircular pair (value 0) is decided
+/// there only when the enclosure is the point 0, otherwise it goes on to ℚ.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CotanWeightSign {
     /// Squared sides `[ij, jk, ki]` of the first triangle.
@@ -33,17 +41,11 @@ pub struct CotanWeightSign {
 }
 
 impl CotanWeightSign {
-    /// `N = b² + c² − a²` and `P = 16·Area²` of a triangle `[a², b², c²]`.
-    fn np(t: &[Rational; 3]) -> (Rational, Rational) {
-        let n = Rational::from(&t[1] + &t[2]) - &t[0];
-        (n, heron16(&t[0], &t[1], &t[2]))
-    }
-
     /// The exact sign, or `None` when a triangle is degenerate or violates the triangle
     /// inequality (`P ≤ 0`), where the cotangent is undefined.
     pub fn sign_exact(&self) -> Option<Sign> {
-        let (n1, p1) = Self::np(&self.first);
-        let (n2, p2) = Self::np(&self.second);
+        let (n1, p1) = np(&self.first);
+        let (n2, p2) = np(&self.second);
         if p1.cmp0().is_le() || p2.cmp0().is_le() {
             return None;
         }
@@ -67,8 +69,15 @@ impl CotanWeightSign {
 }
 
 impl SignPredicate for CotanWeightSign {
-    fn enclosure_sign(&self, _prec: Precision) -> Option<Sign> {
-        None
+    fn enclosure_sign(&self, prec: Precision) -> Option<Sign> {
+        // proof: B49 (interval rung)
+        let (n1, p1) = np(&filter::enclose(&self.first, prec));
+        let (n2, p2) = np(&filter::enclose(&self.second, prec));
+        if p1.sign() != Some(Sign::Positive) || p2.sign() != Some(Sign::Positive) {
+            return None;
+        }
+        let w = n1 * &p2.sqrt() + &(n2 * &p1.sqrt());
+        filter::sign_of(&w)
     }
     fn exact_sign(&self) -> Option<Sign> {
         self.sign_exact()

@@ -261,6 +261,50 @@ fn b49_cotan_weight_sign_exact_agrees_with_mpfr_1024() {
 }
 
 #[test]
+fn b49_cotan_weight_interval_rung_agrees_with_exact_and_decides_a_tie_only_at_a_point_zero() {
+    use penner::predicates::ladder::SignPredicate;
+    let mut rng = ChaCha8Rng::seed_from_u64(80);
+    let n = crate::support::cases(500, 100_000);
+    let mut decided = 0;
+    for _ in 0..n {
+        let [i, j, k, l] = planar_quad(&mut rng, 8);
+        let p = CotanWeightSign {
+            first: [d2(&i, &j), d2(&j, &k), d2(&k, &i)],
+            second: [d2(&i, &j), d2(&i, &l), d2(&l, &j)],
+        };
+        let exact = p.sign_exact().unwrap();
+        if let Some(s) = p.enclosure_sign(prec(128)) {
+            assert_eq!(s, exact, "{p:?}");
+            decided += 1;
+        }
+    }
+    assert!(
+        decided * 10 >= n * 9,
+        "interval rung decided only {decided} of {n}"
+    );
+    // Control: at a tie (a square split by its diagonal, W = 0) the rung may only answer
+    // Zero, and only when its enclosure is the point 0 (side 1: every value exact); with side
+    // 1/3 the enclosures are proper and contain 0, so it must not decide.
+    for side in [Rational::from(1), Rational::from((1, 3))] {
+        let s2 = Rational::from(&side * &side);
+        let d = Rational::from(&s2 * 2);
+        let tie = CotanWeightSign {
+            first: [d.clone(), s2.clone(), s2.clone()],
+            second: [d, s2.clone(), s2],
+        };
+        assert_eq!(tie.sign_exact(), Some(Sign::Zero));
+        for bits in [128, 1024] {
+            let got = tie.enclosure_sign(prec(bits));
+            if side == 1 {
+                assert_eq!(got, Some(Sign::Zero));
+            } else {
+                assert_eq!(got, None, "side {side} at {bits} bits");
+            }
+        }
+    }
+}
+
+#[test]
 fn b49_cotan_weight_sign_cocircular_is_zero() {
     // Unit square split along a diagonal: the two opposite angles are right angles.
     let one = Rational::from(1);
