@@ -21,6 +21,8 @@ pub mod parse;
 
 pub use certified::{Certified, Sign, Stage};
 #[doc(hidden)]
+pub use dd::div_jmp17 as dd_div_jmp17;
+#[doc(hidden)]
 pub use dd::sloppy_add as dd_sloppy_add;
 pub use dd::Dd;
 pub use dual::Dual;

@@ -19,6 +19,7 @@ mod oracle;
 mod predicates_planar;
 mod registry_extra;
 mod scalar_dd;
+mod scalar_dd_div;
 #[cfg(feature = "strategies")]
 mod strategies;
 #[allow(dead_code)] // helpers used by some areas only

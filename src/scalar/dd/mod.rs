@@ -8,7 +8,7 @@
 //! |---|---|---|---|
 //! | `+`, `−` | JMP17 Alg. 6 (AccurateDWPlusDW) | 3u² + 13u³ | B04 |
 //! | `×` | JMP17 Alg. 12 (DWTimesDW3) | 4u² | B06 |
-//! | `÷` | JMP17 Alg. 18 (DWDivDW3) | 9.8u² | B07 |
+//! | `÷` | JMP17 Alg. 18 (DWDivDW3, B07) + one residual correction | u² + 2⁹u³ | B17 |
 //! | `√` | SQRTDWtoDW (Lefèvre et al. 2023) | 25/8 u² | B08 |
 //! | `from_rational` | round twice to nearest | u² (1 + u) | B09 |
 //! | `+ f64`, `× f64` | JMP17 Alg. 4, Alg. 9 | 2u² | B03, B05 |
@@ -20,7 +20,7 @@ mod exp_ln;
 mod trig;
 
 #[doc(hidden)]
-pub use arith::sloppy_add;
+pub use arith::{div_jmp17, sloppy_add};
 
 use super::Real;
 use rug::Float;
@@ -142,7 +142,7 @@ impl Mul for Dd {
 }
 impl Div for Dd {
     type Output = Dd;
-    /// JMP17 Algorithm 18, ≤ 9.8u². proof: B07
+    /// JMP17 Algorithm 18 and one residual correction, ≤ u² + 2⁹u³. proof: B17
     fn div(self, y: Dd) -> Dd {
         arith::div(self, y)
     }
