@@ -25,6 +25,8 @@ pub use dd::div_jmp17 as dd_div_jmp17;
 #[doc(hidden)]
 pub use dd::sloppy_add as dd_sloppy_add;
 pub use dd::Dd;
+#[doc(hidden)]
+pub use dd::{PI_2_FIXED as DD_PI_2_FIXED, TWO_OVER_PI_BITS as DD_TWO_OVER_PI_BITS};
 pub use dual::Dual;
 pub use interval::{Interval, IntervalBound};
 pub use mpfr::{Mpfr, Precision, PrecisionError};

@@ -109,7 +109,7 @@ fn div_inputs(n: usize) -> Vec<(Dd, Dd)> {
 fn in_b17_range(x: Dd, y: Dd) -> bool {
     let r = (q(x) / q(y)).abs();
     r >= Rational::from((1, rug::Integer::from(1) << 900u32))
-        && r <= Rational::from(rug::Integer::from(1) << 1020u32)
+        && r <= (rug::Integer::from(1) << 1020u32)
 }
 
 fn div_err(x: Dd, y: Dd, f: fn(Dd, Dd) -> Dd) -> f64 {

@@ -13,14 +13,18 @@
 //! | `from_rational` | round twice to nearest | u² (1 + u) | B09 |
 //! | `+ f64`, `× f64` | JMP17 Alg. 4, Alg. 9 | 2u² | B03, B05 |
 //! | exp, ln, sin, cos, atan, atan2, acos | reduction + polynomial / Newton | measured ≤ 16u² | B10–B14 |
+//! | reduction mod π/2 for `|x_h| ≥ 64` | Payne–Hanek, 1536 bits of 2/π | 2⁻²⁵² + u²(1 + 2⁻¹⁹)·\|r\| | B18 |
 
 mod arith;
 mod consts;
 mod exp_ln;
+mod reduce;
 mod trig;
 
 #[doc(hidden)]
 pub use arith::{div_jmp17, sloppy_add};
+#[doc(hidden)]
+pub use reduce::{PI_2_FIXED, TWO_OVER_PI_BITS};
 
 use super::Real;
 use rug::Float;

@@ -12,6 +12,7 @@
 
 use super::arith::{add, add_f64, div, mul, mul_f64, sqrt, two_prod};
 use super::consts::{ATAN_TABLE, INV_FACT_TRIG, INV_ODD, PI, PI_2, PI_2_PARTS, TWO_OVER_PI};
+use super::reduce::reduce_payne_hanek;
 use super::Dd;
 
 /// Highest power in the sine series (odd).
@@ -23,8 +24,15 @@ const ATAN_TERMS: usize = 8;
 /// Table spacing of the arctangent reduction: `c = j/ATAN_STEPS`.
 const ATAN_STEPS: f64 = 64.0;
 
-/// `x = k·π/2 + r`: returns `r` and `k mod 4`.
+/// Below this `|x_h|` the reduction is Cody–Waite with π/2 in three doubles; from it on,
+/// Payne–Hanek. proof: B12, B18
+const CODY_WAITE_MAX: f64 = 64.0;
+
+/// `x = k·π/2 + r`, `|r| ≤ π/4 (1 + 2⁻⁴⁰)`: returns `r` and `k mod 4`. proof: B12, B18
 fn reduce(x: Dd) -> (Dd, i64) {
+    if x.hi.abs() >= CODY_WAITE_MAX {
+        return reduce_payne_hanek(x);
+    }
     let k = (x.hi * TWO_OVER_PI).round();
     let (a, b) = two_prod(-k, PI_2_PARTS[0]);
     let (c, d) = two_prod(-k, PI_2_PARTS[1]);
