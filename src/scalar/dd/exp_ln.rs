@@ -44,7 +44,9 @@ fn k_ln2(k: f64) -> Dd {
     )
 }
 
-/// `e^x`. Overflows to +∞ above ≈ 709.78 and underflows to 0 below ≈ −745.
+/// `e^x`: relative error ≤ 16u² (measured) for `−669 ≤ x ≤ 709.78`; below, an absolute
+/// term of one subnormal unit is added, `|z − eˣ| ≤ 16u²·eˣ + 2⁻¹⁰⁷⁴`, the result is never
+/// negative and is exactly 0 below −745.2 (where eˣ < 2⁻¹⁰⁷⁵). +∞ above 709.8. proof: B10
 pub(super) fn exp(x: Dd) -> Dd {
     if x.hi.is_nan() {
         return x;
@@ -64,7 +66,14 @@ pub(super) fn exp(x: Dd) -> Dd {
     let r = add(r, Dd { hi: c, lo: d });
     let r = add_f64(r, -k * LN2_PARTS[2]);
     let p = expm1_reduced(r);
-    add_f64(p, 1.0).ldexp(k as i32)
+    let z = add_f64(p, 1.0).ldexp(k as i32);
+    if k < -1021.0 {
+        // Below 2⁻¹⁰²² each word rounds to a subnormal on its own (≤ 2⁻¹⁰⁷⁵ each);
+        // renormalize, exactly (sums of subnormals do not round). proof: B10
+        Dd::from_parts(z.hi, z.lo)
+    } else {
+        z
+    }
 }
 
 /// `ln x` for `x > 0`; `ln 0 = −∞`, NaN for negative or NaN input, `ln ∞ = ∞`.
