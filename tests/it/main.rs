@@ -28,4 +28,5 @@ mod strategies;
 mod support;
 mod theorems_certified;
 mod theorems_fixed;
+mod theorems_random;
 mod tidy;
