@@ -33,6 +33,10 @@ pub enum Command {
         /// Do not write failure files.
         #[arg(long)]
         no_failure_files: bool,
+        /// Run the negative controls instead: each check's comparison on data made wrong by
+        /// a fixed perturbation, expected to fail; failures are written as failure files.
+        #[arg(long)]
+        negative_controls: bool,
     },
     /// Answer a JSON claim (protocol v1, schema/claim-v1.schema.json) with a verdict.
     Certify {

@@ -6,7 +6,7 @@ use super::files::{emit, write_fresh_failure};
 use penner::oracle::failure::Failure;
 use penner::oracle::registry::{self, Check, Outcome};
 use penner::oracle::shrink::{shrink, Budget};
-use penner::oracle::{report, Prec, Surface};
+use penner::oracle::{controls, report, Prec, Surface};
 use penner::theorems::{Settings, Verdict};
 use std::path::{Path, PathBuf};
 
@@ -22,12 +22,22 @@ pub struct Options<'a> {
     pub json: bool,
     /// Skip failure files.
     pub no_failure_files: bool,
+    /// Run the negative controls ([`penner::oracle::controls`]) instead of the checks.
+    pub negative_controls: bool,
 }
 
 /// Run `penner check`.
 pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
-    let precs = super::precisions(o.precision)?;
-    let checks = select(o.only)?;
+    let mut precs = super::precisions(o.precision)?;
+    // Several controls are exact-only; they always run at `exact` too.
+    if o.negative_controls && !precs.contains(&Prec::Exact) {
+        precs.push(Prec::Exact);
+    }
+    let checks = if o.negative_controls {
+        select_controls(o.only)?
+    } else {
+        select(o.only)?
+    };
     let case = super::input::load_case(o.path)?;
     let settings = Settings::default();
     let rows = registry::run_case(&case, &checks, &precs, &settings);
@@ -84,7 +94,66 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
             ));
         }
     }
+    if o.negative_controls {
+        return Ok(controls_verdict(&rows, &checks, o.json));
+    }
     Ok(super::status_code(report::status(&rows)))
+}
+
+/// The negative controls whose check IDs are named by `--only` (`T16` selects `T16-NC`),
+/// or all.
+fn select_controls(only: &[String]) -> Result<Vec<Check>, CliError> {
+    let all = controls::controls();
+    if only.is_empty() {
+        return Ok(all);
+    }
+    let mut out = Vec::new();
+    for id in only {
+        let id = id.trim().to_ascii_uppercase();
+        let base = id.trim_end_matches("-NC");
+        let Some(c) = all.iter().find(|c| c.id.trim_end_matches("-NC") == base) else {
+            let known: Vec<&str> = all.iter().map(|c| c.id).collect();
+            return Err(CliError::Input(format!(
+                "--only: no negative control for `{id}` (available: {})",
+                known.join(", ")
+            )));
+        };
+        out.push(*c);
+    }
+    Ok(out)
+}
+
+/// Exit code of `--negative-controls`: 0 when every control that ran (verdict other than
+/// not applicable) failed as expected, 1 when one held (the check did not see its
+/// perturbation on this surface), 5 when one crashed. Prints a line per control.
+fn controls_verdict(rows: &[registry::Row], checks: &[Check], json: bool) -> u8 {
+    let mut code = super::error::code::HOLDS;
+    for c in checks {
+        let mine: Vec<&registry::Row> = rows.iter().filter(|r| r.id == c.id).collect();
+        let ran = mine
+            .iter()
+            .filter(|r| !matches!(r.outcome, Outcome::Verdict(Verdict::NotApplicable { .. })));
+        let (mut failed, mut held) = (0, 0);
+        for r in ran {
+            match &r.outcome {
+                Outcome::Verdict(Verdict::Fails { .. }) => failed += 1,
+                Outcome::Crashed(_) => code = super::error::code::INTERNAL,
+                Outcome::Verdict(_) => held += 1,
+            }
+        }
+        if held > 0 && code == super::error::code::HOLDS {
+            code = super::error::code::FAILS;
+        }
+        if !json {
+            let word = match (failed, held) {
+                (0, 0) => "not applicable to this surface".to_string(),
+                (f, 0) => format!("rejected as expected at {f} precision(s)"),
+                (f, h) => format!("NOT rejected at {h} precision(s) (rejected at {f})"),
+            };
+            emit(&format!("{} ({}): {word}\n", c.id, c.title));
+        }
+    }
+    code
 }
 
 /// The checks named by `--only`, or all.

@@ -13,12 +13,14 @@ pub fn run(path: &Path, json: bool) -> Result<u8, CliError> {
     let text = read_text(path)?;
     let name = path.display().to_string();
     let failure = Failure::parse(&text, &name).map_err(|e| CliError::Input(e.to_string()))?;
-    let check = registry::by_id(&failure.check).ok_or_else(|| {
-        CliError::Input(format!(
-            "{name}: check `{}` is not in this build of penner",
-            failure.check
-        ))
-    })?;
+    let check = registry::by_id(&failure.check)
+        .or_else(|| penner::oracle::controls::by_id(&failure.check))
+        .ok_or_else(|| {
+            CliError::Input(format!(
+                "{name}: check `{}` is not in this build of penner",
+                failure.check
+            ))
+        })?;
     let checks = [check];
     let settings = Settings::default();
     let rows = registry::run_case(&failure.surface, &checks, &[failure.precision], &settings);

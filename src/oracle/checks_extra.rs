@@ -110,7 +110,7 @@ pub fn t07(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
 
 /// The inversion sphere of T20: center `(x_max + 1, 1/3, 1/7)` (outside the bounding box in
 /// x, so never a vertex), squared radius 2.
-fn t20_sphere(points: &[[Rational; 3]]) -> ([Rational; 3], Rational) {
+pub fn t20_sphere(points: &[[Rational; 3]]) -> ([Rational; 3], Rational) {
     let x_max = points
         .iter()
         .map(|p| p[0].clone())

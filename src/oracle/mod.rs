@@ -16,6 +16,7 @@ pub mod registry;
 // After `registry`, whose `at_precision!` macro it uses.
 pub mod checks;
 pub mod checks_extra;
+pub mod controls;
 pub mod relabel;
 pub mod report;
 pub mod shrink;

@@ -2,6 +2,7 @@
 
 mod claims;
 mod cli;
+mod cli_controls;
 mod cone_angles_kernel;
 mod definition_two;
 mod delaunay;

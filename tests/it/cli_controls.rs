@@ -1,0 +1,140 @@
+//! `penner check --negative-controls` end to end: every applicable control fails, a new
+//! failure file is written for each (never over an existing file), and `penner replay`
+//! reproduces each failure.
+
+use crate::cli::{penner, scratch, text, write};
+use std::fmt::Write as _;
+use std::path::Path;
+
+const TET_OBJ: &str =
+    "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n";
+
+/// The 2 × 2 grid of unit squares in the plane z = 0, each cut by a diagonal.
+fn grid_obj() -> String {
+    let mut s = String::new();
+    for j in 0..3 {
+        for i in 0..3 {
+            let _ = writeln!(s, "v {i} {j} 0");
+        }
+    }
+    let idx = |i: u32, j: u32| j * 3 + i + 1;
+    for j in 0..2 {
+        for i in 0..2 {
+            let (a, b, c, d) = (idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1));
+            let _ = writeln!(s, "f {a} {b} {c}\nf {a} {c} {d}");
+        }
+    }
+    s
+}
+
+fn failure_files(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .filter_map(Result::ok)
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| n.contains(".penner-failure-"))
+        .collect();
+    v.sort();
+    v
+}
+
+#[test]
+fn negative_controls_write_fresh_failure_files_that_replay_reproduces() {
+    let d = scratch("controls");
+    let p = write(&d, "tet.obj", TET_OBJ.as_bytes());
+    // A file in the way: the first fresh name is taken and must survive untouched.
+    let blocker = d.join("tet.penner-failure-1.json");
+    std::fs::write(&blocker, "not mine").unwrap();
+    let out = penner(&["check", &p.display().to_string(), "--negative-controls"]);
+    let stdout = text(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{stdout}\n{}",
+        text(&out.stderr)
+    );
+    for id in ["T01-NC", "T05-NC", "T16-NC", "T20-NC"] {
+        assert!(
+            stdout.contains(&format!("{id} (")) && stdout.contains("rejected as expected"),
+            "{id}: {stdout}"
+        );
+    }
+    assert_eq!(std::fs::read_to_string(&blocker).unwrap(), "not mine");
+    let first = failure_files(&d);
+    assert_eq!(first.len(), 5, "{first:?}"); // the blocker and one per failing control
+                                             // A second run adds new files and changes none of the old ones.
+    let before: Vec<String> = first
+        .iter()
+        .map(|n| std::fs::read_to_string(d.join(n)).unwrap())
+        .collect();
+    let again = penner(&["check", &p.display().to_string(), "--negative-controls"]);
+    assert_eq!(again.status.code(), Some(0));
+    let second = failure_files(&d);
+    assert_eq!(second.len(), 9, "{second:?}");
+    for (n, b) in first.iter().zip(&before) {
+        assert_eq!(
+            &std::fs::read_to_string(d.join(n)).unwrap(),
+            b,
+            "{n} changed"
+        );
+    }
+    // Each written file replays to the same failure (exit 1, "still fails").
+    for n in second.iter().filter(|n| !n.ends_with("-1.json")) {
+        let r = penner(&["replay", &d.join(n).display().to_string()]);
+        let o = text(&r.stdout);
+        assert_eq!(r.status.code(), Some(1), "{n}: {o}");
+        assert!(
+            o.contains("-NC at ") && o.contains("still fails"),
+            "{n}: {o}"
+        );
+    }
+}
+
+#[test]
+fn t04_negative_control_on_a_planar_grid_fails_and_replays() {
+    let d = scratch("controls-grid");
+    let p = write(&d, "grid.obj", grid_obj().as_bytes());
+    let out = penner(&[
+        "check",
+        &p.display().to_string(),
+        "--negative-controls",
+        "--only",
+        "T04",
+    ]);
+    let stdout = text(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{stdout}");
+    assert!(
+        stdout.contains("T04-NC") && stdout.contains("rejected as expected"),
+        "{stdout}"
+    );
+    let files = failure_files(&d);
+    assert_eq!(files, ["grid.penner-failure-1.json"]);
+    let r = penner(&["replay", &d.join(&files[0]).display().to_string()]);
+    assert_eq!(r.status.code(), Some(1), "{}", text(&r.stdout));
+    // The unperturbed check holds on the same grid: the control's failure is the
+    // perturbation's doing.
+    let ok = penner(&[
+        "check",
+        &p.display().to_string(),
+        "--only",
+        "T04",
+        "--no-failure-files",
+    ]);
+    assert_eq!(ok.status.code(), Some(0), "{}", text(&ok.stdout));
+}
+
+#[test]
+fn negative_controls_refuse_an_unknown_id() {
+    let d = scratch("controls-bad");
+    let p = write(&d, "tet.obj", TET_OBJ.as_bytes());
+    let out = penner(&[
+        "check",
+        &p.display().to_string(),
+        "--negative-controls",
+        "--only",
+        "T99",
+    ]);
+    assert_eq!(out.status.code(), Some(3));
+    assert!(text(&out.stderr).contains("T99"));
+    assert!(failure_files(&d).is_empty());
+}
