@@ -50,7 +50,8 @@ use super::flips::{
 };
 use crate::mesh::{Edge, Mesh};
 use crate::predicates::delaunay::{
-    check_length, DelaunayError, EnclosureQuad, Quad, QuadEdges, RationalQuad, RealQuad,
+    check_length, filter_f64_in_range, in_filter_range, DelaunayError, EnclosureQuad, Quad,
+    QuadEdges, RationalQuad, RealQuad,
 };
 use crate::predicates::ladder::{decide, Ladder, SignPredicate};
 use crate::scalar::{Certified, Interval, Mpfr, Precision, Real, Sign, Stage};
@@ -284,7 +285,9 @@ fn flagged(state: &[u8], flag: u8) -> Vec<Edge> {
         .collect()
 }
 
-fn check_all<T: Real>(mesh: &Mesh, lengths: &[T]) -> Result<(), DelaunayError> {
+/// Validate the lengths; `Ok(true)` when the backend has 53 bits and every length is in
+/// the f64 filter's unscaled range (then the filter may skip its range test).
+fn check_all<T: Real>(mesh: &Mesh, lengths: &[T]) -> Result<bool, DelaunayError> {
     if lengths.len() != mesh.n_edges() {
         return Err(DelaunayError::LengthCount {
             expected: mesh.n_edges(),
@@ -293,25 +296,41 @@ fn check_all<T: Real>(mesh: &Mesh, lengths: &[T]) -> Result<(), DelaunayError> {
     }
     // Fast path for 53-bit backends: every image finite and positive (the test of
     // `check_length`); otherwise find the offending edge.
-    if lengths
+    let f53 = lengths
         .first()
-        .is_some_and(|l| T::precision_bits(l.ctx()) == 53)
+        .is_some_and(|l| T::precision_bits(l.ctx()) == 53);
+    if f53 && lengths.iter().all(|l| in_filter_range(l.approx_f64())) {
+        return Ok(true);
+    }
+    if f53
         && lengths.iter().all(|l| {
             let x = l.approx_f64();
             x > 0.0 && x < f64::INFINITY
         })
     {
-        return Ok(());
+        return Ok(false);
     }
     for e in mesh.edges() {
         check_length(e, &lengths[e.idx()])?;
     }
-    Ok(())
+    Ok(false)
 }
 
 struct RealMetric<'a, T> {
     lengths: &'a mut [T],
     kind: FlipKind,
+    /// Invariant while `true`: the backend has 53 bits and every stored length is an f64
+    /// in [`in_filter_range`], so the filter needs no range test (proof: B61). Cleared
+    /// when a new or nudged length leaves the range.
+    in_range: bool,
+}
+
+impl<T: Real> RealMetric<'_, T> {
+    /// Keep the `in_range` invariant after storing `x`.
+    #[inline]
+    fn stored(&mut self, x: f64) {
+        self.in_range &= in_filter_range(x);
+    }
 }
 
 impl<T: Real> Metric for RealMetric<'_, T> {
@@ -319,7 +338,13 @@ impl<T: Real> Metric for RealMetric<'_, T> {
     #[allow(clippy::inline_always)] // hot path of the flip loop (measured)
     #[inline(always)]
     fn filter(&self, q: Quad<Edge>) -> Option<Sign> {
-        RealQuad(q.map(|e| &self.lengths[e.idx()])).filter()
+        let l = q.map(|e| &self.lengths[e.idx()]);
+        if self.in_range {
+            // 53-bit values in the f64 range are f64 numbers exactly.
+            filter_f64_in_range(l.to_array().map(Real::approx_f64))
+        } else {
+            RealQuad(l).filter()
+        }
     }
     fn sign(&self, q: Quad<Edge>, ladder: &Ladder) -> Certified<Sign> {
         decide(&RealQuad(q.map(|e| &self.lengths[e.idx()])), ladder)
@@ -331,6 +356,7 @@ impl<T: Real> Metric for RealMetric<'_, T> {
             FlipKind::Ptolemy => ptolemy_length(quad),
         };
         check_length(q.edge, &new).ok()?;
+        self.stored(new.approx_f64());
         Some(std::mem::replace(&mut self.lengths[q.edge.idx()], new))
     }
     fn restore(&mut self, e: Edge, old: T) {
@@ -342,6 +368,8 @@ impl<T: Real> Metric for RealMetric<'_, T> {
         // proof: B65 — one step decreases the stored value by 3u to 5u relative.
         let step = l.clone() * &l.lit(4.0 * u);
         *l -= &step;
+        let x = l.approx_f64();
+        self.stored(x);
         true
     }
 }
@@ -355,8 +383,12 @@ pub fn flip_to_delaunay<T: Real>(
     kind: FlipKind,
     opts: &FlipOptions,
 ) -> Result<FlipReport, FlipToDelaunayError> {
-    check_all(mesh, lengths)?;
-    let mut m = RealMetric { lengths, kind };
+    let in_range = check_all(mesh, lengths)?;
+    let mut m = RealMetric {
+        lengths,
+        kind,
+        in_range,
+    };
     Ok(run(mesh, &mut m, opts))
 }
 

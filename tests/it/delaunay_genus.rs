@@ -277,3 +277,60 @@ fn b65_nudged_flips_are_certified_for_the_stored_lengths() {
         "no rounded flip landed on the wrong side of a tie"
     );
 }
+
+#[test]
+fn b61_flipping_commutes_with_power_of_two_scaling() {
+    // Scaling every length by 2ᵏ multiplies P by 2⁴ᵏ and every flip length by 2ᵏ exactly,
+    // so certified flipping must make the same flips and return exactly 2ᵏ × the lengths,
+    // whether the filter runs unscaled (|k| small), rescaled, or not at all (the lengths
+    // span the 2^±200 range boundary, or leave it during the run).
+    for i in 0..cases(12, 400) as u64 {
+        let c = case(i);
+        let f: Vec<f64> = c.lengths.iter().map(Rational::to_f64).collect();
+        let opts = FlipOptions {
+            record: true,
+            ..FlipOptions::default()
+        };
+        let (mut m0, mut l0) = (c.mesh.clone(), f.clone());
+        let r0 = flip_to_delaunay(&mut m0, &mut l0, FlipKind::Euclidean, &opts).unwrap();
+        assert!(r0.all_certified_delaunay(), "{}", c.name);
+        for k in [-600, -300, -199, -150, 150, 199, 300, 600] {
+            let s = 2f64.powi(k);
+            let mut ls: Vec<f64> = f.iter().map(|x| x * s).collect();
+            let mut ms = c.mesh.clone();
+            let rs = flip_to_delaunay(&mut ms, &mut ls, FlipKind::Euclidean, &opts).unwrap();
+            assert!(rs.all_certified_delaunay(), "{} at 2^{k}", c.name);
+            assert_eq!(rs.sequence, r0.sequence, "{} at 2^{k}", c.name);
+            assert_eq!(ms, m0, "{} at 2^{k}", c.name);
+            let back: Vec<f64> = ls.iter().map(|x| x / s).collect();
+            assert_eq!(back, l0, "{} at 2^{k}", c.name);
+        }
+    }
+    // Negative control: raw f64 decisions at 2^±300 overflow or underflow (P is ∞ − ∞ or
+    // 0) and flip differently from the unscaled run on the same inputs.
+    let mut differs = 0;
+    for i in 0..cases(12, 400) as u64 {
+        let c = case(i);
+        let f: Vec<f64> = c.lengths.iter().map(Rational::to_f64).collect();
+        let (mut m0, mut l0) = (c.mesh.clone(), f.clone());
+        let n0 = penner::algorithms::naive::flip_to_delaunay_naive(
+            &mut m0,
+            &mut l0,
+            FlipKind::Euclidean,
+            10_000,
+        );
+        for k in [-300, 300] {
+            let s = 2f64.powi(k);
+            let mut ls: Vec<f64> = f.iter().map(|x| x * s).collect();
+            let mut ms = c.mesh.clone();
+            let ns = penner::algorithms::naive::flip_to_delaunay_naive(
+                &mut ms,
+                &mut ls,
+                FlipKind::Euclidean,
+                10_000,
+            );
+            differs += usize::from(ns.flips != n0.flips || ms != m0);
+        }
+    }
+    assert!(differs > 0, "naive f64 flipping never noticed the scale");
+}
