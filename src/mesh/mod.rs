@@ -15,6 +15,7 @@ mod flip;
 mod ids;
 mod invariants;
 mod ops;
+pub mod relabel;
 
 pub use build::{FaceSide, MeshError};
 pub use builders::{BuildError, Embedded, Intrinsic};

@@ -3,10 +3,12 @@
 //!
 //! Two comparisons:
 //! - [`check_delaunay_uniqueness`]: flip one start with several visit orders and compare
-//!   the strictly Delaunay edges (certified `P > 0`) as multisets of vertex pairs; tie
-//!   edges (certified `P = 0`) must stay ties after flipping them. Vertex labels are
-//!   preserved by flips, so the comparison is up to the identity isomorphism; with
-//!   multi-edges equal multisets are necessary, not sufficient.
+//!   the results. Vertex labels are preserved by flips, so without ties the results must
+//!   be the same triangulation up to renumbering of edges and faces
+//!   ([`same_triangulation`], a vertex-fixing isomorphism of the gluing, which also
+//!   separates Δ-complexes whose multi-edges make face lists ambiguous). With ties
+//!   (certified `P = 0`) the strictly Delaunay edges are compared as multisets of vertex
+//!   pairs, and each tie edge must stay a tie after flipping it.
 //! - [`check_planar_delaunay_matches_spade`]: a planar triangulation with convex boundary,
 //!   flipped intrinsically, has the edge set of `spade`'s constrained Delaunay
 //!   triangulation of the same points (an independent implementation).
@@ -14,6 +16,7 @@
 use super::{Settings, Verdict, Witness};
 use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
 use crate::algorithms::flips::flip_metric;
+use crate::mesh::relabel::isomorphisms;
 use crate::mesh::Mesh;
 use crate::predicates::delaunay::{edge_delaunay_sign, EdgeDelaunay};
 use crate::scalar::{Certified, Real, Sign};
@@ -61,6 +64,25 @@ fn classify<T: Real>(
     Ok((strict, ties, bad))
 }
 
+/// Whether `a` and `b` are the same triangulation of one vertex set: some bijection of
+/// half-edges keeps every tail and tip and commutes with `twin` and `next`
+/// ([`isomorphisms`], proofs/B81).
+///
+/// ```
+/// use penner::mesh::{Edge, Mesh};
+/// use penner::theorems::t22_delaunay_uniqueness::same_triangulation;
+/// let a = Mesh::from_faces(4, &[[0, 1, 2], [0, 2, 3]]).unwrap();
+/// let b = Mesh::from_faces(4, &[[2, 3, 0], [1, 2, 0]]).unwrap();
+/// assert!(same_triangulation(&a, &b));
+/// let mut c = a.clone();
+/// let diagonal = c.edges().find(|&e| !c.is_boundary_edge(e)).unwrap();
+/// c.flip(diagonal).unwrap();
+/// assert!(!same_triangulation(&a, &c));
+/// ```
+pub fn same_triangulation(a: &Mesh, b: &Mesh) -> bool {
+    !isomorphisms(a, b, 1).is_empty()
+}
+
 /// Flip `(mesh, lengths)` to Delaunay once per seed in `seeds` (random visit orders) and
 /// compare the results (see the module documentation).
 pub fn check_delaunay_uniqueness<T: Real>(
@@ -70,7 +92,7 @@ pub fn check_delaunay_uniqueness<T: Real>(
     seeds: &[u64],
     settings: &Settings,
 ) -> Verdict {
-    let mut reference: Option<PairCounts> = None;
+    let mut reference: Option<(Mesh, PairCounts, bool)> = None;
     let mut witnesses = Vec::new();
     let mut undecided = Vec::new();
     for &seed in seeds {
@@ -94,6 +116,7 @@ pub fn check_delaunay_uniqueness<T: Real>(
         // flipped length is rounded to the working precision (unless the backend is exact
         // and the flip rational), so a nonzero sign of the rounded quadrilateral refutes
         // nothing: it leaves the tie claim undecided, never failed.
+        let tied = !ties.is_empty();
         for e in ties {
             let (mut m2, mut l2) = (m.clone(), l.clone());
             if flip_metric(&mut m2, &mut l2, e, kind).is_ok() {
@@ -110,8 +133,17 @@ pub fn check_delaunay_uniqueness<T: Real>(
             }
         }
         match &reference {
-            None => reference = Some(strict),
-            Some(r) if *r != strict => witnesses.push(Witness {
+            None => reference = Some((m, strict, tied)),
+            Some((rm, _, false)) if !tied && !same_triangulation(rm, &m) => {
+                witnesses.push(Witness {
+                    element: "surface".into(),
+                    detail: format!(
+                        "seed {seed}: not the same triangulation as the first run (no ties)"
+                    ),
+                    value: seed as f64,
+                });
+            }
+            Some((_, r, _)) if *r != strict => witnesses.push(Witness {
                 element: "surface".into(),
                 detail: format!("seed {seed}: strictly Delaunay edges differ from the first run"),
                 value: seed as f64,

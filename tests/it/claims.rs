@@ -8,10 +8,10 @@
 
 use crate::cli::{certify, scratch, tetrahedron_json};
 use penner::io::json::to_value;
+use penner::mesh::relabel::isomorphisms;
 use penner::mesh::Mesh;
 use penner::oracle::certify::{certify as answer, ClaimVerdict};
 use penner::oracle::claim::parse_value;
-use penner::oracle::relabel::isomorphisms;
 use penner::oracle::{Metric, Surface};
 use rug::Rational;
 use serde_json::{json, Value};

@@ -8,6 +8,7 @@ mod definition_two;
 mod delaunay;
 mod delaunay_flips;
 mod delaunay_genus;
+mod delaunay_uniqueness;
 mod dual;
 mod exact;
 mod interval;

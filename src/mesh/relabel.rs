@@ -97,7 +97,7 @@ fn extend(
 ///
 /// ```
 /// use penner::mesh::Mesh;
-/// use penner::oracle::relabel::isomorphisms;
+/// use penner::mesh::relabel::isomorphisms;
 /// let a = Mesh::from_faces(4, &[[0, 1, 2], [0, 2, 3]]).unwrap();
 /// let b = Mesh::from_faces(4, &[[2, 3, 0], [1, 2, 0]]).unwrap();
 /// assert_eq!(isomorphisms(&a, &b, 8).len(), 1);

@@ -1,0 +1,58 @@
+//! T22 on random surfaces of genus 0–3: different flip orders reach the same triangulation
+//! up to renumbering of edges and faces (a vertex-fixing isomorphism of the gluing).
+
+use crate::support::cases;
+use penner::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
+use penner::mesh::Mesh;
+use penner::strategies::ArbSurface;
+use penner::theorems::t22_delaunay_uniqueness::{check_delaunay_uniqueness, same_triangulation};
+use penner::theorems::Settings;
+
+/// The Delaunay triangulation of `(mesh, l)` reached with visit order `seed`.
+fn delaunay(mesh: &Mesh, l: &[f64], kind: FlipKind, seed: u64) -> (Mesh, usize) {
+    let (mut m, mut l) = (mesh.clone(), l.to_vec());
+    let opts = FlipOptions {
+        order_seed: Some(seed),
+        ..FlipOptions::default()
+    };
+    let report = flip_to_delaunay(&mut m, &mut l, kind, &opts).expect("valid surface");
+    (m, report.flips)
+}
+
+#[test]
+fn t22_flip_orders_reach_the_same_triangulation_on_random_surfaces_of_genus_0_to_3() {
+    let mut flipped = 0;
+    let mut controls = 0;
+    for seed in 0..cases(60, 2000) as u64 {
+        let genus = (seed % 4) as u32;
+        let s = ArbSurface::new(genus, 4 + (seed % 9) as u32, seed).surface;
+        let l: Vec<f64> = s.lengths(());
+        for kind in [FlipKind::Euclidean, FlipKind::Ptolemy] {
+            let v = check_delaunay_uniqueness(&s.mesh, &l, kind, &[1, 2, 3], &Settings::default());
+            assert!(v.holds(), "{} (genus {genus}) {kind:?}: {v:?}", s.name);
+            // Negative controls for the comparison itself: the start (when any flip was
+            // needed) and the result with one more flip are other triangulations.
+            let (d, flips) = delaunay(&s.mesh, &l, kind, 1);
+            if flips > 0 {
+                flipped += 1;
+                assert!(!same_triangulation(&s.mesh, &d), "{}", s.name);
+            }
+            // Flipping an edge ij whose new diagonal kl joins another vertex pair changes
+            // the multiset of edge endpoints, which every vertex-fixing isomorphism keeps.
+            let pair = |m: &Mesh, e: penner::mesh::Edge| {
+                let h = e.halfedge();
+                let (a, b) = (m.tail(h).0, m.tip(h).0);
+                (a.min(b), a.max(b))
+            };
+            for e in d.edges() {
+                let mut x = d.clone();
+                if x.flip(e).is_ok() && pair(&x, e) != pair(&d, e) {
+                    assert!(!same_triangulation(&d, &x), "{} {e}", s.name);
+                    controls += 1;
+                    break;
+                }
+            }
+        }
+    }
+    assert!(flipped > 0 && controls > 0, "{flipped} {controls}");
+}
