@@ -1,71 +1,226 @@
 //! Cone angles θ_v: the sum of corner angles at each vertex.
 //!
-//! Fast path (proofs B15, B16): instead of one arctangent per corner, each corner
-//! contributes the unit complex number `e^{iα} = cos α + i sin α`, formed without any
-//! transcendental function from the half-angle quantities of the triangle, and the vertex
-//! multiplies them: `Π e^{iα_k} = e^{iθ_v}`. One `atan2` per vertex recovers `θ_v` modulo
-//! 2π; the multiple of 2π (more precisely the quarter turn `m` around which `θ_v` lies) is
-//! read from an `f64` running sum of the corner angles, which is within a proven margin of
-//! the exact sum (B15). The product is rotated by `i^{−m}` before the `atan2`, so the
-//! principal value is taken at least 3π/4 away from the branch cut and no fallback is
-//! needed.
+//! Kernel (proofs B15, B16): instead of one arctangent per corner, each corner contributes
+//! the direction `e^{iα} = cos α + i sin α`, formed without any transcendental function
+//! from the half-angle quantities of its triangle (shared by the three corners of a face),
+//! and the vertex multiplies them: `Π e^{iα_k} = e^{iθ_v}`. Along the way the vertex counts
+//! the quarter turns of the running product exactly, from the signs of its two components
+//! (B15); one `atan2` per vertex, taken a quarter turn away from any branch cut, gives the
+//! remainder. No per-corner arctangent, no estimate, no fallback.
 
 use crate::mesh::Mesh;
 use crate::scalar::Real;
 
-/// The direction `(cos α, sin α)` of the corner angle `α` opposite side `a` in a triangle
-/// with sides `a, b, c`, scaled by a positive factor `ρ` close to 1 (the factor does not
-/// change the argument), and an `f64` estimate of `α`.
+/// The quadrant `q ∈ {0, 1, 2, 3}` of the nonzero point `re + i·im`: the index of the
+/// half-open arc `[qπ/2, (q+1)π/2)` of `[0, 2π)` holding its argument. So 0 for
+/// `re > 0, im ≥ 0`; 1 for `re ≤ 0, im > 0`; 2 for `re < 0, im ≤ 0`; 3 for `re ≥ 0, im < 0`
+/// (`−0.0` counts as 0). proof: B15
 ///
-/// With `N = (a − b + c)(a + b − c)` and `D = (a + b + c)(−a + b + c)` (the half-angle
-/// factors of MATH.md §1, `tan²(α/2) = N/D`): `cos α = (D − N)/(D + N)` and
-/// `sin α = 2√(N D)/(D + N)`, since `(√D + i√N)² ∝ e^{iα}`. The normalization `1/(D + N)`
-/// is taken in `f64` (it only rescales). proof: B16
-pub fn corner_direction<T: Real>(a: &T, b: &T, c: &T) -> (T, T, f64) {
-    let apb = a.clone() + b;
-    let amb = a.clone() - b;
-    let n = (amb + c) * &(apb.clone() - c);
-    let d = (apb + c) * &(b.clone() + c - a);
-    let (nf, df) = (n.approx_f64(), d.approx_f64());
-    let h = 1.0 / (df + nf);
-    let root = (n.clone() * &d).sqrt();
-    let re = (d - &n) * &a.lit(h);
-    let im = root * &a.lit(2.0 * h);
-    let est = im.approx_f64().atan2(re.approx_f64());
-    (re, im, est)
+/// ```
+/// use penner::geometry::cone_angles::quadrant;
+/// // The arguments 0, π/2, π, 3π/2 open the four arcs.
+/// assert_eq!([quadrant(1.0, 0.0), quadrant(0.0, 1.0), quadrant(-1.0, 0.0), quadrant(0.0, -1.0)], [0, 1, 2, 3]);
+/// assert_eq!(quadrant(1.0, -1e-300), 3);
+/// ```
+#[inline]
+pub fn quadrant(re: f64, im: f64) -> i64 {
+    // Argument in [π, 2π).
+    let lower = im < 0.0 || (im == 0.0 && re < 0.0);
+    if lower {
+        2 + i64::from(re >= 0.0)
+    } else {
+        i64::from(re <= 0.0)
+    }
 }
 
-/// The angle `θ` with `e^{iθ} ∝ re + i·im` that lies within 3π/4 of `estimate`, for an
-/// `estimate` within `3π/4 − ε` of the true angle (ε: the error of the computed argument):
-/// `θ = atan2(i^{−m}(re + i·im)) + m·π/2` with `m = round(estimate / (π/2))`.
+/// The quarter-turn index `Q' = ⌊Φ'/(π/2)⌋` of a path point after one step, given the
+/// index `Q = ⌊Φ/(π/2)⌋` before it, the components of the new point (only their signs are
+/// read) and whether the step's direction is obtuse (`cos < 0`, step in `(π/2 − η, π + η]`)
+/// or not (step in `[−η, π/2 + η]`), for a per-step argument error `η < π/2`.
 ///
-/// The rotation by `i^{−m}` is exact (swaps and sign changes), and puts the argument within
-/// `π/4 + |estimate − θ|` of 0, far from the branch cut of `atan2`. proof: B15
-pub fn unwrap_angle<T: Real>(re: &T, im: &T, estimate: f64) -> T {
-    let m = (estimate / std::f64::consts::FRAC_PI_2).round();
-    let (x, y) = match (m.rem_euclid(4.0)) as u8 {
+/// The change `Q' − Q` is the representative of `quadrant(re, im) − Q (mod 4)` in
+/// `{−1, 0, 1, 2}` for a non-obtuse step and in `{0, 1, 2, 3}` for an obtuse one. proof: B15
+///
+/// ```
+/// use penner::geometry::cone_angles::quarter_step;
+/// // From Q = 3 (argument just below 2π) a small step forward lands in quadrant 0: Q = 4.
+/// assert_eq!(quarter_step(3, 1.0, 1e-3, false), 4);
+/// // A small step backwards from Q = 4 (argument just above 2π): Q = 3.
+/// assert_eq!(quarter_step(4, 1.0, -1e-3, false), 3);
+/// // An obtuse step of almost π from quadrant 0 lands in quadrant 2: Q = 2, not −2.
+/// assert_eq!(quarter_step(0, -1.0, -1e-3, true), 2);
+/// ```
+#[inline]
+pub fn quarter_step(quarter: i64, re: f64, im: f64, obtuse: bool) -> i64 {
+    let shift = i64::from(!obtuse);
+    quarter + ((quadrant(re, im) - quarter + shift) & 3) - shift
+}
+
+/// The angle `m·π/2 + atan2(i^{−m}(re + i·im))`, with `half_pi` = π/2 in the context of
+/// `re`: the argument of `re + i·im` unwrapped around the quarter turn `m`.
+///
+/// The rotation by `i^{−m}` is exact (swaps and sign changes). When `m` is the quarter-turn
+/// index of the continuous argument Φ (Φ ∈ [mπ/2, (m+1)π/2)), the rotated point has its
+/// argument in `[0, π/2)`, a quarter turn away from the branch cut of `atan2`, and the
+/// result is Φ up to the error of `atan2` and one rounding of `m·π/2`. proof: B15
+pub fn unwrap_quarter<T: Real>(re: &T, im: &T, m: i64, half_pi: &T) -> T {
+    let (x, y) = match m.rem_euclid(4) {
         0 => (re.clone(), im.clone()),
         1 => (im.clone(), -re.clone()),
         2 => (-re.clone(), -im.clone()),
         _ => (-im.clone(), re.clone()),
     };
-    let principal = y.atan2(&x);
-    // m·π/2 = (m/2)·π, with m/2 exact in f64.
-    principal + &(T::pi(re.ctx()) * &re.lit(0.5 * m))
+    let mut turn = half_pi.clone();
+    turn.mul_assign_f64(m as f64);
+    y.atan2(&x) + &turn
+}
+
+/// The angle `θ` with `e^{iθ} ∝ re + i·im` that lies within 3π/4 of `estimate`, for an
+/// `estimate` within `3π/4 − ε` of the true angle (ε: the error of the computed argument):
+/// [`unwrap_quarter`] with `m = round(estimate / (π/2))`. proof: B15
+///
+/// ```
+/// use penner::geometry::cone_angles::unwrap_angle;
+/// // The point e^{i·0.3}, unwrapped near 2π + 0.3.
+/// let (re, im) = (0.3_f64.cos(), 0.3_f64.sin());
+/// let t = unwrap_angle(&re, &im, 6.0);
+/// assert!((t - (2.0 * std::f64::consts::PI + 0.3)).abs() < 1e-14);
+/// ```
+pub fn unwrap_angle<T: Real>(re: &T, im: &T, estimate: f64) -> T {
+    let m = (estimate / std::f64::consts::FRAC_PI_2).round() as i64;
+    let mut half_pi = T::pi(re.ctx());
+    half_pi.mul_assign_f64(0.5);
+    unwrap_quarter(re, im, m, &half_pi)
+}
+
+/// Per-vertex state: the running product `re + i·im` of corner directions and the
+/// quarter-turn index of its continuous argument.
+#[derive(Clone)]
+struct Winding<T> {
+    re: T,
+    im: T,
+    quarter: i64,
+}
+
+/// Scratch values of one face, reused for every face (no allocation per face for MPFR).
+struct FaceScratch<T> {
+    /// Partial sums.
+    t: T,
+    /// `a + b + c`.
+    s: T,
+    /// `e_i = l_{i+1} + l_{i+2} − l_i`.
+    e: [T; 3],
+    /// `D_i = s·e_i`, then `D_i − N_i` (the unnormalized cosine part), then `cos α_i`.
+    c: [T; 3],
+    /// `N_i = e_{i+1}·e_{i+2}`.
+    n: T,
+    /// `√(D_i N_i) = √(s e_0 e_1 e_2)` (the same for all three corners: 4·area).
+    r: T,
+    /// `sin α_i` (normalized).
+    w: T,
+    /// Products of the complex multiplication.
+    p: T,
+    q: T,
+}
+
+impl<T: Real> FaceScratch<T> {
+    fn new(like: &T) -> Self {
+        let z = like.zero_like();
+        FaceScratch {
+            t: z.clone(),
+            s: z.clone(),
+            e: [z.clone(), z.clone(), z.clone()],
+            c: [z.clone(), z.clone(), z.clone()],
+            n: z.clone(),
+            r: z.clone(),
+            w: z.clone(),
+            p: z.clone(),
+            q: z,
+        }
+    }
+
+    /// The unnormalized cosine parts `D_i − N_i` of the three corners of the triangle with
+    /// sides `l = [l_0, l_1, l_2]` (corner `i` opposite `l_i`) into `c`, and the common sine
+    /// part `√(D_i N_i)` into `r` (MATH.md §1: `tan²(α_i/2) = N_i/D_i`, so
+    /// `(√D_i + i√N_i)² = (D_i − N_i) + 2i√(D_i N_i) ∝ e^{iα_i}`, of modulus
+    /// `D_i + N_i = 4 l_{i+1} l_{i+2}`). proof: B16
+    fn load(&mut self, l: [&T; 3]) {
+        let [a, b, c] = l;
+        self.t.clone_from(b);
+        self.t += c;
+        self.e[0].clone_from(&self.t);
+        self.e[0] -= a;
+        self.s.clone_from(&self.t);
+        self.s += a;
+        self.t.clone_from(a);
+        self.t -= b;
+        self.e[1].clone_from(&self.t);
+        self.e[1] += c;
+        self.t.clone_from(a);
+        self.t += b;
+        self.e[2].clone_from(&self.t);
+        self.e[2] -= c;
+        for i in 0..3 {
+            self.c[i].clone_from(&self.s);
+            self.c[i] *= &self.e[i];
+        }
+        // N_0, then 16·area² = D_0·N_0.
+        self.n.clone_from(&self.e[1]);
+        self.n *= &self.e[2];
+        self.t.clone_from(&self.c[0]);
+        self.t *= &self.n;
+        self.c[0] -= &self.n;
+        self.r = self.t.sqrt();
+        self.n.clone_from(&self.e[2]);
+        self.n *= &self.e[0];
+        self.c[1] -= &self.n;
+        self.n.clone_from(&self.e[0]);
+        self.n *= &self.e[1];
+        self.c[2] -= &self.n;
+    }
+
+    /// Multiplies the running product of `acc` by the direction of corner `i`, normalized
+    /// by `h ≈ 1/(4 l_{i+1} l_{i+2})` (only the modulus depends on `h`), and advances its
+    /// quarter-turn index. proof: B15, B16
+    fn step(&mut self, i: usize, h: f64, acc: &mut Winding<T>) {
+        let wr = &mut self.c[i];
+        wr.mul_assign_f64(h);
+        let obtuse = wr.approx_f64() < 0.0;
+        self.w.clone_from(&self.r);
+        self.w.mul_assign_f64(2.0 * h);
+        // (re + i·im)(wr + i·w) = (re·wr − im·w) + i(im·wr + re·w)
+        self.p.clone_from(&acc.re);
+        self.p *= &self.w;
+        self.q.clone_from(&acc.im);
+        self.q *= &self.w;
+        acc.re *= &*wr;
+        acc.re -= &self.q;
+        acc.im *= &*wr;
+        acc.im += &self.p;
+        acc.quarter = quarter_step(
+            acc.quarter,
+            acc.re.approx_f64(),
+            acc.im.approx_f64(),
+            obtuse,
+        );
+    }
 }
 
 /// Cone angle `θ_v = Σ α_v` over all corners at `v` (MATH.md §2), from per-edge lengths
 /// `lengths[e]` (indexed by `Edge::idx`). Corners are counted with multiplicity (a face may
 /// have a vertex twice); a vertex without corners gets 0.
 ///
-/// Cost: per corner a few arithmetic operations in `T` and one `f64` arctangent; per
-/// vertex one `atan2` in `T` ([`corner_direction`], [`unwrap_angle`]). The error is that of
-/// a product of unit complex numbers, comparable to the per-corner sum (proof: B16); the
-/// multiple of 2π is exact under the hypotheses of B15 (every corner's direction, read in
-/// `f64`, within 10⁻⁶ rad of the true one, and fewer than 10⁶ corners at a vertex).
+/// Cost per face: seven additions, seven multiplications and one square root for the three
+/// corner directions; per corner a complex multiplication, two products by an `f64` and
+/// two sign reads; per vertex one `atan2` ([`unwrap_quarter`]). No transcendental function
+/// per corner. The quarter-turn count is exact for the computed product (proof: B15), so
+/// the error is that of a product of unit complex numbers, comparable to the per-corner
+/// sum (proof: B16).
 ///
 /// Lengths violating the triangle inequality give NaN (f64) — callers validate lengths
-/// first (see `predicates`).
+/// first (see `predicates`). The normalization is formed in `f64` from
+/// [`Real::approx_f64`] of the lengths, whose pairwise products must be normal `f64`
+/// numbers (lengths within about 2^±500).
 ///
 /// ```
 /// use penner::geometry::cone_angles::cone_angles;
@@ -81,33 +236,32 @@ pub fn cone_angles<T: Real>(mesh: &Mesh, lengths: &[T]) -> Vec<T> {
         mesh.n_edges(),
         "cone_angles: one length per edge is required"
     );
-    let nv = mesh.n_vertices();
     let Some(first) = lengths.first() else {
         return Vec::new();
     };
-    let mut re = vec![first.one_like(); nv];
-    let mut im = vec![first.zero_like(); nv];
-    let mut est = vec![0.0_f64; nv];
+    let start = Winding {
+        re: first.one_like(),
+        im: first.zero_like(),
+        quarter: 0,
+    };
+    let mut acc = vec![start; mesh.n_vertices()];
+    let mut sc = FaceScratch::new(first);
     for f in mesh.faces() {
         let hs = mesh.face_halfedges(f);
+        let l = hs.map(|h| &lengths[h.edge().idx()]);
+        let lf = l.map(Real::approx_f64);
+        sc.load(l);
         for i in 0..3 {
-            // Corner opposite hs[i] is at the tail of hs[(i+2)%3].
-            let a = &lengths[hs[i].edge().idx()];
-            let b = &lengths[hs[(i + 1) % 3].edge().idx()];
-            let c = &lengths[hs[(i + 2) % 3].edge().idx()];
-            let v = mesh.tail(hs[(i + 2) % 3]).idx();
-            let (wr, wi, alpha) = corner_direction(a, b, c);
-            let nr = re[v].clone() * &wr - &(im[v].clone() * &wi);
-            let ni = re[v].clone() * &wi + &(im[v].clone() * &wr);
-            re[v] = nr;
-            im[v] = ni;
-            est[v] += alpha;
+            // Corner opposite hs[i] is at the tail of hs[(i+2)%3], between sides i+1, i+2.
+            let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+            let h = (0.5 / lf[j]) * (0.5 / lf[k]);
+            sc.step(i, h, &mut acc[mesh.tail(hs[k]).idx()]);
         }
     }
-    re.iter()
-        .zip(&im)
-        .zip(&est)
-        .map(|((r, i), &e)| unwrap_angle(r, i, e))
+    let mut half_pi = T::pi(first.ctx());
+    half_pi.mul_assign_f64(0.5);
+    acc.iter()
+        .map(|w| unwrap_quarter(&w.re, &w.im, w.quarter, &half_pi))
         .collect()
 }
 

@@ -6,12 +6,14 @@ use super::Real;
 impl Real for f64 {
     type Ctx = ();
 
+    #[inline]
     fn ctx(&self) {}
 
     fn backend_name((): ()) -> String {
         "f64".to_string()
     }
 
+    #[inline]
     fn from_f64(x: f64, (): ()) -> f64 {
         x
     }
@@ -22,46 +24,63 @@ impl Real for f64 {
         rug::Float::with_val(53, q).to_f64()
     }
 
+    #[inline]
     fn pi((): ()) -> f64 {
         std::f64::consts::PI
     }
 
+    #[inline]
     fn sqrt(&self) -> f64 {
         f64::sqrt(*self)
     }
+    #[inline]
     fn exp(&self) -> f64 {
         f64::exp(*self)
     }
+    #[inline]
     fn ln(&self) -> f64 {
         f64::ln(*self)
     }
+    #[inline]
     fn sin(&self) -> f64 {
         f64::sin(*self)
     }
+    #[inline]
     fn cos(&self) -> f64 {
         f64::cos(*self)
     }
+    #[inline]
     fn atan(&self) -> f64 {
         f64::atan(*self)
     }
+    #[inline]
     fn atan2(&self, x: &f64) -> f64 {
         f64::atan2(*self, *x)
     }
+    #[inline]
     fn acos(&self) -> f64 {
         // atan2(√((1−x)(1+x)), x): accurate near ±1, unlike acos of a rounded argument.
         f64::atan2(((1.0 - self) * (1.0 + self)).sqrt(), *self)
     }
+    #[inline]
     fn abs(&self) -> f64 {
         f64::abs(*self)
     }
+    #[inline]
     fn approx_f64(&self) -> f64 {
         *self
     }
+    #[inline]
     fn unit_roundoff((): ()) -> f64 {
         f64::EPSILON / 2.0
     }
+    #[inline]
     fn precision_bits((): ()) -> u32 {
         53
+    }
+    #[inline]
+    fn mul_assign_f64(&mut self, y: f64) {
+        *self *= y;
     }
     fn to_rational(&self) -> Option<rug::Rational> {
         rug::Rational::from_f64(*self)

@@ -135,6 +135,22 @@ pub trait Real:
         self.lit(1.0)
     }
 
+    /// `self ← self · y` for an `f64` `y`, rounded once as a product in this backend
+    /// (correctly rounded for `f64` and [`Mpfr`], JMP17 DWTimesFP3 for [`Dd`] with relative
+    /// error ≤ 2u², proofs/B05; an enclosure for intervals). Exact when `y` is a power of
+    /// two and nothing overflows or underflows. The default multiplies by `self.lit(y)`.
+    ///
+    /// ```
+    /// use penner::scalar::{Dd, Real};
+    /// let mut x = Dd::from_f64(3.0);
+    /// x.mul_assign_f64(0.5);
+    /// assert_eq!(x.approx_f64(), 1.5);
+    /// ```
+    fn mul_assign_f64(&mut self, y: f64) {
+        let f = self.lit(y);
+        *self *= &f;
+    }
+
     /// Exact conversion to a rational, or `None` when the value is not finite.
     fn to_rational(&self) -> Option<rug::Rational>;
 }

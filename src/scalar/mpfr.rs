@@ -51,8 +51,19 @@ impl Precision {
 /// let third = Mpfr::from_f64(1.0, p) / Mpfr::from_f64(3.0, p);
 /// assert!((third.approx_f64() - 1.0 / 3.0).abs() < 1e-16);
 /// ```
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Debug, PartialEq)]
 pub struct Mpfr(pub Float);
+
+impl Clone for Mpfr {
+    fn clone(&self) -> Mpfr {
+        Mpfr(self.0.clone())
+    }
+    /// Reuses the allocation of `self` when the precisions agree (no allocation in loops
+    /// that copy into scratch values).
+    fn clone_from(&mut self, source: &Mpfr) {
+        self.0.clone_from(&source.0);
+    }
+}
 
 impl Mpfr {
     /// The underlying rug float.
@@ -180,6 +191,10 @@ impl Real for Mpfr {
     }
     fn approx_f64(&self) -> f64 {
         self.0.to_f64()
+    }
+    /// `mpfr_mul_d`: correctly rounded, no allocation.
+    fn mul_assign_f64(&mut self, y: f64) {
+        self.0 *= y;
     }
     fn unit_roundoff(ctx: Precision) -> f64 {
         (-(f64::from(ctx.0))).exp2()

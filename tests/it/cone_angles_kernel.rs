@@ -3,13 +3,13 @@
 use crate::meshgen::jittered_torus;
 use crate::support::cases;
 use penner::geometry::cone_angles::{
-    cone_angles, cone_angles_per_corner, corner_direction, unwrap_angle,
+    cone_angles, cone_angles_per_corner, quarter_step, unwrap_angle, unwrap_quarter,
 };
 use penner::mesh::Mesh;
 use penner::scalar::{Dd, Mpfr, Precision, Real};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use std::f64::consts::PI;
+use std::f64::consts::{FRAC_PI_2, PI};
 
 /// A closed fan: apex 0, rim 1..=n, faces `[0, i, i+1]`, apex angles `alpha[i]`; spokes
 /// have length 1 and rim edges `2 sin(α/2)`. Returns the mesh and f64 edge lengths.
@@ -105,6 +105,77 @@ fn check_backend<T: Real>(mesh: &Mesh, len: &[f64], ctx: T::Ctx, refs: &[Mpfr]) 
     worst
 }
 
+/// Independent quarter-turn index of an angle: `⌊φ/(π/2)⌋`.
+fn floor_quarter(phi: f64) -> i64 {
+    (phi / FRAC_PI_2).floor() as i64
+}
+
+/// Random pairs (Φ, δ) with δ in `[lo, hi)`, keeping Φ and Φ + δ at least 10⁻⁹ away from
+/// the quarter-turn boundaries (where the f64 point (cos, sin) could fall on either side).
+fn steps(count: usize, lo: f64, hi: f64, seed: u64) -> Vec<(f64, f64)> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let near = |x: f64| {
+        let r = x / FRAC_PI_2;
+        (r - r.round()).abs() < 1e-9
+    };
+    let mut out = Vec::with_capacity(count);
+    while out.len() < count {
+        let phi = rng.gen_range(-40.0..40.0);
+        // Half of the steps hug the window ends.
+        let delta = if rng.gen_bool(0.5) {
+            rng.gen_range(lo..hi)
+        } else if rng.gen_bool(0.5) {
+            lo + rng.gen_range(0.0..1e-6)
+        } else {
+            hi - rng.gen_range(1e-12..1e-6)
+        };
+        if !near(phi) && !near(phi + delta) {
+            out.push((phi, delta));
+        }
+    }
+    out
+}
+
+#[test]
+fn b15_quarter_step_is_the_floor_of_the_continuous_argument() {
+    let n = cases(20_000, 1_000_000);
+    // Non-obtuse steps: δ ∈ (−π/2, π); obtuse steps: δ ∈ [0, 3π/2).
+    for (obtuse, lo, hi, seed) in [(false, -FRAC_PI_2, PI, 151), (true, 0.0, 1.5 * PI, 152)] {
+        for (phi, delta) in steps(n, lo, hi, seed) {
+            let next = phi + delta;
+            let got = quarter_step(floor_quarter(phi), next.cos(), next.sin(), obtuse);
+            assert_eq!(
+                got,
+                floor_quarter(next),
+                "Φ = {phi}, δ = {delta}, obtuse = {obtuse}"
+            );
+        }
+    }
+}
+
+#[test]
+fn b15_negative_control_steps_outside_the_window_lose_a_turn() {
+    // A step of more than π read as non-obtuse, or a step backwards read as obtuse, is
+    // off by a full turn (four quarters) whenever its true quarter change leaves the window.
+    let n = cases(2_000, 100_000);
+    for (obtuse, lo, hi, seed) in [(false, PI, 1.5 * PI, 153), (true, -FRAC_PI_2, 0.0, 154)] {
+        let mut outside = 0;
+        for (phi, delta) in steps(n, lo, hi, seed) {
+            let next = phi + delta;
+            let (q, want) = (floor_quarter(phi), floor_quarter(next));
+            let got = quarter_step(q, next.cos(), next.sin(), obtuse);
+            let window = if obtuse { 0..=3 } else { -1..=2 };
+            if window.contains(&(want - q)) {
+                assert_eq!(got, want);
+            } else {
+                assert_eq!((got - want).abs(), 4, "Φ = {phi}, δ = {delta}");
+                outside += 1;
+            }
+        }
+        assert!(outside > n / 10, "only {outside} steps left the window");
+    }
+}
+
 #[test]
 fn b15_winding_recovered_near_multiples_of_2pi_and_the_cut() {
     let fans = winding_fans(cases(60, 3000));
@@ -112,22 +183,6 @@ fn b15_winding_recovered_near_multiples_of_2pi_and_the_cut() {
     for alpha in &fans {
         let (mesh, len) = fan(alpha);
         let refs = reference(&mesh, &len);
-        // The hypothesis of B15: the f64 sum of the corner estimates is within 10⁻⁶·n of θ.
-        let mut est = 0.0;
-        let l: Vec<Dd> = len.iter().map(|&x| Dd::from_f64(x)).collect();
-        for f in mesh.faces() {
-            let hs = mesh.face_halfedges(f);
-            for i in 0..3 {
-                if mesh.tail(hs[(i + 2) % 3]).idx() == 0 {
-                    let a = &l[hs[i].edge().idx()];
-                    let b = &l[hs[(i + 1) % 3].edge().idx()];
-                    let c = &l[hs[(i + 2) % 3].edge().idx()];
-                    est += corner_direction(a, b, c).2;
-                }
-            }
-        }
-        let gap = (est - refs[0].approx_f64()).abs();
-        assert!(gap < 1e-6 * alpha.len() as f64, "estimate off by {gap}");
         // A wrong winding is off by ≥ 2π − tiny; B16's bound is far below 1.
         for w in [
             check_backend::<f64>(&mesh, &len, (), &refs),
@@ -144,36 +199,70 @@ fn b15_winding_recovered_near_multiples_of_2pi_and_the_cut() {
     }
 }
 
+/// Fans whose apex corners are nearly flat (π − 10⁻ᵏ, or exactly π: rim length 2) or
+/// nearly zero (10⁻ᵏ), alternating so that the partial sums sit next to multiples of π.
+fn degenerate_fans(count: usize) -> Vec<Vec<f64>> {
+    let mut rng = ChaCha8Rng::seed_from_u64(155);
+    (0..count)
+        .map(|_| {
+            let n = rng.gen_range(3..40);
+            (0..n)
+                .map(|j| {
+                    let eps = 10f64.powi(-rng.gen_range(3..13));
+                    match (j % 2, rng.gen_range(0..4)) {
+                        (0, 0) => PI,
+                        (0, _) => PI - eps,
+                        (_, 0) => rng.gen_range(0.1..3.0),
+                        _ => eps,
+                    }
+                })
+                .collect()
+        })
+        .collect()
+}
+
 #[test]
-fn b15_negative_control_wrong_estimate_is_rejected() {
-    // An estimate off by 2π (what a lost turn would give) yields an angle off by 2π.
+fn b15_winding_recovered_with_flat_and_needle_corners() {
+    // Steps of (almost) π and of almost 0 are where a quarter count could slip; B16 claims
+    // no accuracy for such triangles, but a lost turn would be off by about 2π.
+    let p128 = Precision::new(128).expect("valid precision");
+    for alpha in degenerate_fans(cases(40, 2000)) {
+        let (mesh, len) = fan(&alpha);
+        let refs = reference(&mesh, &len);
+        let f = cone_angles(&mesh, &len);
+        let l: Vec<Dd> = len.iter().map(|&x| Dd::from_f64(x)).collect();
+        let d = cone_angles(&mesh, &l);
+        let l: Vec<Mpfr> = len.iter().map(|&x| Mpfr::from_f64(x, p128)).collect();
+        let m = cone_angles(&mesh, &l);
+        for v in 0..refs.len() {
+            let e = [err(&f[v], &refs[v]), err(&d[v], &refs[v]), err(&m[v], &refs[v])];
+            assert!(
+                e.iter().all(|&x| x < 1e-5),
+                "vertex {v} of {alpha:?}: errors {e:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn b15_negative_control_wrong_quarter_is_rejected() {
+    // The kernel's result unwrapped around a quarter turn off by four (a lost turn) is off
+    // by 2π; around the right one it meets B16's bound.
     let alpha = vec![2.0 * PI * 3.0 / 20.0 + 1e-9; 20];
     let (mesh, len) = fan(&alpha);
     let refs = reference(&mesh, &len);
     let l: Vec<Dd> = len.iter().map(|&x| Dd::from_f64(x)).collect();
-    let good = cone_angles(&mesh, &l);
-    assert!(err(&good[0], &refs[0]) <= b16_bound(20, 6.0 * PI, Dd::unit_roundoff(())));
-    // Rebuild the apex product and unwrap it with a shifted estimate.
-    let (mut re, mut im) = (Dd::from_f64(1.0), Dd::from_f64(0.0));
-    let mut est = 0.0;
-    for f in mesh.faces() {
-        let hs = mesh.face_halfedges(f);
-        for i in 0..3 {
-            if mesh.tail(hs[(i + 2) % 3]).idx() == 0 {
-                let (wr, wi, e) = corner_direction(
-                    &l[hs[i].edge().idx()],
-                    &l[hs[(i + 1) % 3].edge().idx()],
-                    &l[hs[(i + 2) % 3].edge().idx()],
-                );
-                (re, im) = (re * wr - im * wi, re * wi + im * wr);
-                est += e;
-            }
-        }
-    }
-    let right = unwrap_angle(&re, &im, est);
-    assert!(err(&right, &refs[0]) <= b16_bound(20, 6.0 * PI, Dd::unit_roundoff(())));
-    let wrong = unwrap_angle(&re, &im, est + 2.0 * PI);
+    let good = cone_angles(&mesh, &l)[0];
+    let bound = b16_bound(20, 6.0 * PI, Dd::unit_roundoff(()));
+    assert!(err(&good, &refs[0]) <= bound);
+    let (re, im) = (good.cos(), good.sin());
+    let m = (good.approx_f64() / FRAC_PI_2).floor() as i64;
+    let half_pi = Dd::pi(()) * Dd::from_f64(0.5);
+    let right = unwrap_quarter(&re, &im, m, &half_pi);
+    assert!(err(&right, &refs[0]) <= 2.0 * bound);
+    let wrong = unwrap_quarter(&re, &im, m + 4, &half_pi);
     assert!(err(&wrong, &refs[0]) > 6.0, "a lost turn was not detected");
+    assert!(err(&unwrap_angle(&re, &im, good.approx_f64() + 2.0 * PI), &refs[0]) > 6.0);
 }
 
 #[test]

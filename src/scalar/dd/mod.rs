@@ -115,6 +115,7 @@ fn pow2(k: i32) -> f64 {
 
 impl Neg for Dd {
     type Output = Dd;
+    #[inline]
     fn neg(self) -> Dd {
         Dd {
             hi: -self.hi,
@@ -126,6 +127,7 @@ impl Neg for Dd {
 impl Add for Dd {
     type Output = Dd;
     /// JMP17 Algorithm 6, ≤ 3u² + 13u³. proof: B04
+    #[inline]
     fn add(self, y: Dd) -> Dd {
         arith::add(self, y)
     }
@@ -133,6 +135,7 @@ impl Add for Dd {
 impl Sub for Dd {
     type Output = Dd;
     /// JMP17 Algorithm 6 on `−y`, ≤ 3u² + 13u³. proof: B04
+    #[inline]
     fn sub(self, y: Dd) -> Dd {
         arith::add(self, -y)
     }
@@ -140,6 +143,7 @@ impl Sub for Dd {
 impl Mul for Dd {
     type Output = Dd;
     /// JMP17 Algorithm 12, ≤ 4u². proof: B06
+    #[inline]
     fn mul(self, y: Dd) -> Dd {
         arith::mul(self, y)
     }
@@ -147,6 +151,7 @@ impl Mul for Dd {
 impl Div for Dd {
     type Output = Dd;
     /// JMP17 Algorithm 18 and one residual correction, ≤ u² + 2⁹u³. proof: B17
+    #[inline]
     fn div(self, y: Dd) -> Dd {
         arith::div(self, y)
     }
@@ -154,39 +159,46 @@ impl Div for Dd {
 
 impl<'a> Add<&'a Dd> for Dd {
     type Output = Dd;
+    #[inline]
     fn add(self, o: &'a Dd) -> Dd {
         arith::add(self, *o)
     }
 }
 impl<'a> Sub<&'a Dd> for Dd {
     type Output = Dd;
+    #[inline]
     fn sub(self, o: &'a Dd) -> Dd {
         arith::add(self, -*o)
     }
 }
 impl<'a> Mul<&'a Dd> for Dd {
     type Output = Dd;
+    #[inline]
     fn mul(self, o: &'a Dd) -> Dd {
         arith::mul(self, *o)
     }
 }
 impl<'a> Div<&'a Dd> for Dd {
     type Output = Dd;
+    #[inline]
     fn div(self, o: &'a Dd) -> Dd {
         arith::div(self, *o)
     }
 }
 impl<'a> AddAssign<&'a Dd> for Dd {
+    #[inline]
     fn add_assign(&mut self, o: &'a Dd) {
         *self = arith::add(*self, *o);
     }
 }
 impl<'a> SubAssign<&'a Dd> for Dd {
+    #[inline]
     fn sub_assign(&mut self, o: &'a Dd) {
         *self = arith::add(*self, -*o);
     }
 }
 impl<'a> MulAssign<&'a Dd> for Dd {
+    #[inline]
     fn mul_assign(&mut self, o: &'a Dd) {
         *self = arith::mul(*self, *o);
     }
@@ -227,6 +239,7 @@ impl Real for Dd {
     }
 
     /// proof: B08
+    #[inline]
     fn sqrt(&self) -> Dd {
         if self.hi > 0.0 && self.hi.is_finite() {
             arith::sqrt(*self)
@@ -270,8 +283,14 @@ impl Real for Dd {
             *self
         }
     }
+    #[inline]
     fn approx_f64(&self) -> f64 {
         self.hi + self.lo
+    }
+    /// JMP17 Algorithm 9 (DWTimesFP3), ≤ 2u². proof: B05
+    #[inline]
+    fn mul_assign_f64(&mut self, y: f64) {
+        *self = arith::mul_f64(*self, y);
     }
     fn unit_roundoff((): ()) -> f64 {
         (-104.0_f64).exp2()
