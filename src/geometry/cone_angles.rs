@@ -70,8 +70,7 @@ pub fn unwrap_quarter<T: Real>(re: &T, im: &T, m: i64, half_pi: &T) -> T {
         2 => (-re.clone(), -im.clone()),
         _ => (-im.clone(), re.clone()),
     };
-    let mut turn = half_pi.clone();
-    turn.mul_assign_f64(m as f64);
+    let turn = half_pi.clone() * &half_pi.lit(m as f64);
     y.atan2(&x) + &turn
 }
 
@@ -88,8 +87,7 @@ pub fn unwrap_quarter<T: Real>(re: &T, im: &T, m: i64, half_pi: &T) -> T {
 /// ```
 pub fn unwrap_angle<T: Real>(re: &T, im: &T, estimate: f64) -> T {
     let m = (estimate / std::f64::consts::FRAC_PI_2).round() as i64;
-    let mut half_pi = T::pi(re.ctx());
-    half_pi.mul_assign_f64(0.5);
+    let half_pi = T::pi(re.ctx()) * &re.lit(0.5);
     unwrap_quarter(re, im, m, &half_pi)
 }
 
@@ -114,10 +112,8 @@ struct FaceScratch<T> {
     c: [T; 3],
     /// `N_i = e_{i+1}·e_{i+2}`.
     n: T,
-    /// `√(D_i N_i) = √(s e_0 e_1 e_2)` (the same for all three corners: 4·area).
+    /// `2√(D_i N_i) = 2√(s e_0 e_1 e_2)` (the same for all three corners: 8·area).
     r: T,
-    /// `sin α_i` (normalized).
-    w: T,
     /// Products of the complex multiplication.
     p: T,
     q: T,
@@ -133,7 +129,6 @@ impl<T: Real> FaceScratch<T> {
             c: [z.clone(), z.clone(), z.clone()],
             n: z.clone(),
             r: z.clone(),
-            w: z.clone(),
             p: z.clone(),
             q: z,
         }
@@ -141,7 +136,7 @@ impl<T: Real> FaceScratch<T> {
 
     /// The unnormalized cosine parts `D_i − N_i` of the three corners of the triangle with
     /// sides `l = [l_0, l_1, l_2]` (corner `i` opposite `l_i`) into `c`, and the common sine
-    /// part `√(D_i N_i)` into `r` (MATH.md §1: `tan²(α_i/2) = N_i/D_i`, so
+    /// part `2√(D_i N_i)` into `r` (MATH.md §1: `tan²(α_i/2) = N_i/D_i`, so
     /// `(√D_i + i√N_i)² = (D_i − N_i) + 2i√(D_i N_i) ∝ e^{iα_i}`, of modulus
     /// `D_i + N_i = 4 l_{i+1} l_{i+2}`). proof: B16
     fn load(&mut self, l: [&T; 3]) {
@@ -171,6 +166,7 @@ impl<T: Real> FaceScratch<T> {
         self.t *= &self.n;
         self.c[0] -= &self.n;
         self.r = self.t.sqrt();
+        self.r.ldexp_assign(1);
         self.n.clone_from(&self.e[2]);
         self.n *= &self.e[0];
         self.c[1] -= &self.n;
@@ -179,30 +175,40 @@ impl<T: Real> FaceScratch<T> {
         self.c[2] -= &self.n;
     }
 
-    /// Multiplies the running product of `acc` by the direction of corner `i`, normalized
-    /// by `h ≈ 1/(4 l_{i+1} l_{i+2})` (only the modulus depends on `h`), and advances its
-    /// quarter-turn index. proof: B15, B16
-    fn step(&mut self, i: usize, h: f64, acc: &mut Winding<T>) {
-        let wr = &mut self.c[i];
-        wr.mul_assign_f64(h);
+    /// Multiplies the running product of `acc` by the (unnormalized) direction
+    /// `c_i + i·r` of corner `i`, advances its quarter-turn index, and rescales it by the
+    /// power of two that brings its larger component into `[1, 2)` (exact: only the
+    /// modulus changes, and it stays in `[1, 2√2)` for any number of corners).
+    /// proof: B15, B16
+    fn step(&mut self, i: usize, acc: &mut Winding<T>) {
+        let wr = &self.c[i];
         let obtuse = wr.approx_f64() < 0.0;
-        self.w.clone_from(&self.r);
-        self.w.mul_assign_f64(2.0 * h);
-        // (re + i·im)(wr + i·w) = (re·wr − im·w) + i(im·wr + re·w)
+        // (re + i·im)(wr + i·r) = (re·wr − im·r) + i(im·wr + re·r)
         self.p.clone_from(&acc.re);
-        self.p *= &self.w;
+        self.p *= &self.r;
         self.q.clone_from(&acc.im);
-        self.q *= &self.w;
-        acc.re *= &*wr;
+        self.q *= &self.r;
+        acc.re *= wr;
         acc.re -= &self.q;
-        acc.im *= &*wr;
+        acc.im *= wr;
         acc.im += &self.p;
-        acc.quarter = quarter_step(
-            acc.quarter,
-            acc.re.approx_f64(),
-            acc.im.approx_f64(),
-            obtuse,
-        );
+        let (x, y) = (acc.re.approx_f64(), acc.im.approx_f64());
+        acc.quarter = quarter_step(acc.quarter, x, y, obtuse);
+        let k = -exponent(x.abs().max(y.abs()));
+        acc.re.ldexp_assign(k);
+        acc.im.ldexp_assign(k);
+    }
+}
+
+/// The binary exponent `⌊log₂ x⌋` of a positive normal `f64`, clamped to `[−1000, 1000]`
+/// (0 for zero, subnormal or non-finite input: the rescaling is then skipped in effect).
+#[inline]
+fn exponent(x: f64) -> i32 {
+    let e = ((x.to_bits() >> 52) & 0x7ff) as i32;
+    if e == 0 || e == 0x7ff {
+        0
+    } else {
+        (e - 1023).clamp(-1000, 1000)
     }
 }
 
@@ -211,16 +217,16 @@ impl<T: Real> FaceScratch<T> {
 /// have a vertex twice); a vertex without corners gets 0.
 ///
 /// Cost per face: seven additions, seven multiplications and one square root for the three
-/// corner directions; per corner a complex multiplication, two products by an `f64` and
-/// two sign reads; per vertex one `atan2` ([`unwrap_quarter`]). No transcendental function
-/// per corner. The quarter-turn count is exact for the computed product (proof: B15), so
+/// corner directions; per corner a complex multiplication, three sign reads and an exact
+/// rescaling by a power of two; per vertex one `atan2` ([`unwrap_quarter`]). No
+/// transcendental function per corner. The quarter-turn count is exact for the computed product (proof: B15), so
 /// the error is that of a product of unit complex numbers, comparable to the per-corner
 /// sum (proof: B16).
 ///
 /// Lengths violating the triangle inequality give NaN (f64) — callers validate lengths
-/// first (see `predicates`). The normalization is formed in `f64` from
-/// [`Real::approx_f64`] of the lengths, whose pairwise products must be normal `f64`
-/// numbers (lengths within about 2^±500).
+/// first (see `predicates`). Lengths must lie within about 2^±250, so that the
+/// unnormalized directions (modulus `4bc`) and their products with the running product
+/// stay in the normal range of every backend.
 ///
 /// ```
 /// use penner::geometry::cone_angles::cone_angles;
@@ -248,18 +254,13 @@ pub fn cone_angles<T: Real>(mesh: &Mesh, lengths: &[T]) -> Vec<T> {
     let mut sc = FaceScratch::new(first);
     for f in mesh.faces() {
         let hs = mesh.face_halfedges(f);
-        let l = hs.map(|h| &lengths[h.edge().idx()]);
-        let lf = l.map(Real::approx_f64);
-        sc.load(l);
+        sc.load(hs.map(|h| &lengths[h.edge().idx()]));
         for i in 0..3 {
-            // Corner opposite hs[i] is at the tail of hs[(i+2)%3], between sides i+1, i+2.
-            let (j, k) = ((i + 1) % 3, (i + 2) % 3);
-            let h = (0.5 / lf[j]) * (0.5 / lf[k]);
-            sc.step(i, h, &mut acc[mesh.tail(hs[k]).idx()]);
+            // Corner opposite hs[i] is at the tail of hs[(i+2)%3].
+            sc.step(i, &mut acc[mesh.tail(hs[(i + 2) % 3]).idx()]);
         }
     }
-    let mut half_pi = T::pi(first.ctx());
-    half_pi.mul_assign_f64(0.5);
+    let half_pi = T::pi(first.ctx()) * &first.lit(0.5);
     acc.iter()
         .map(|w| unwrap_quarter(&w.re, &w.im, w.quarter, &half_pi))
         .collect()

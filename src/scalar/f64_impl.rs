@@ -79,8 +79,8 @@ impl Real for f64 {
         53
     }
     #[inline]
-    fn mul_assign_f64(&mut self, y: f64) {
-        *self *= y;
+    fn ldexp_assign(&mut self, k: i32) {
+        *self *= super::pow2(k);
     }
     fn to_rational(&self) -> Option<rug::Rational> {
         rug::Rational::from_f64(*self)

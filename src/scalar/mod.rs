@@ -135,22 +135,26 @@ pub trait Real:
         self.lit(1.0)
     }
 
-    /// `self ← self · y` for an `f64` `y`, rounded once as a product in this backend
-    /// (correctly rounded for `f64` and [`Mpfr`], JMP17 DWTimesFP3 for [`Dd`] with relative
-    /// error ≤ 2u², proofs/B05; an enclosure for intervals). Exact when `y` is a power of
-    /// two and nothing overflows or underflows. The default multiplies by `self.lit(y)`.
+    /// `self ← self · 2ᵏ` for `|k| ≤ 1000`: exact (no rounding) unless the result leaves
+    /// the normal range of the backend. The default multiplies by `self.lit(2ᵏ)`.
     ///
     /// ```
     /// use penner::scalar::{Dd, Real};
     /// let mut x = Dd::from_f64(3.0);
-    /// x.mul_assign_f64(0.5);
+    /// x.ldexp_assign(-1);
     /// assert_eq!(x.approx_f64(), 1.5);
     /// ```
-    fn mul_assign_f64(&mut self, y: f64) {
-        let f = self.lit(y);
+    fn ldexp_assign(&mut self, k: i32) {
+        let f = self.lit(pow2(k));
         *self *= &f;
     }
 
     /// Exact conversion to a rational, or `None` when the value is not finite.
     fn to_rational(&self) -> Option<rug::Rational>;
+}
+
+/// `2ᵏ` as an `f64`, for `|k| ≤ 1000` (clamped to the normal exponent range).
+#[inline]
+pub(crate) fn pow2(k: i32) -> f64 {
+    f64::from_bits(((i64::from(k.clamp(-1022, 1023)) + 1023) as u64) << 52)
 }

@@ -192,9 +192,9 @@ impl Real for Mpfr {
     fn approx_f64(&self) -> f64 {
         self.0.to_f64()
     }
-    /// `mpfr_mul_d`: correctly rounded, no allocation.
-    fn mul_assign_f64(&mut self, y: f64) {
-        self.0 *= y;
+    /// `mpfr_mul_2si`: exact, no allocation.
+    fn ldexp_assign(&mut self, k: i32) {
+        self.0 <<= k;
     }
     fn unit_roundoff(ctx: Precision) -> f64 {
         (-(f64::from(ctx.0))).exp2()

@@ -287,10 +287,12 @@ impl Real for Dd {
     fn approx_f64(&self) -> f64 {
         self.hi + self.lo
     }
-    /// JMP17 Algorithm 9 (DWTimesFP3), ≤ 2u². proof: B05
+    /// Both parts times `2ᵏ`: exact while `lo` stays normal.
     #[inline]
-    fn mul_assign_f64(&mut self, y: f64) {
-        *self = arith::mul_f64(*self, y);
+    fn ldexp_assign(&mut self, k: i32) {
+        let f = super::pow2(k);
+        self.hi *= f;
+        self.lo *= f;
     }
     fn unit_roundoff((): ()) -> f64 {
         (-104.0_f64).exp2()
