@@ -26,10 +26,31 @@ pub(crate) fn fast_two_sum(a: f64, b: f64) -> (f64, f64) {
 }
 
 /// `a · b = p + e` exactly, with `p = RN(a · b)`, via one FMA. proof: B02
+#[cfg(target_feature = "fma")]
 #[inline]
 pub(crate) fn two_prod(a: f64, b: f64) -> (f64, f64) {
     let p = a * b;
     (p, a.mul_add(b, -p))
+}
+
+/// `a · b = p + e` exactly, with `p = RN(a · b)`, by Dekker's product with Veltkamp's
+/// splitting: the same `(p, e)` as the FMA form (both are exact), without the library call
+/// that `f64::mul_add` becomes when the target lacks hardware FMA. Needs
+/// `|a|, |b| < 2⁹⁹⁶` besides B02's hypotheses. proof: B02
+#[cfg(not(target_feature = "fma"))]
+#[inline]
+pub(crate) fn two_prod(a: f64, b: f64) -> (f64, f64) {
+    /// Veltkamp's constant `2²⁷ + 1`: splits a binary64 into two 26-bit halves.
+    const SPLIT: f64 = 134_217_729.0;
+    let split = |x: f64| {
+        let c = SPLIT * x;
+        let h = c - (c - x);
+        (h, x - h)
+    };
+    let p = a * b;
+    let (ah, al) = split(a);
+    let (bh, bl) = split(b);
+    (p, ((ah * bh - p) + ah * bl + al * bh) + al * bl)
 }
 
 /// JMP17 Algorithm 4 (DWPlusFP): `x + y` for a double-word `x` and a float `y`, relative
