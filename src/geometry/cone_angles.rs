@@ -24,10 +24,11 @@ use crate::scalar::Real;
 /// ```
 #[inline]
 pub fn quadrant(re: f64, im: f64) -> i64 {
-    // Argument in [π, 2π); then the second half of its half turn. Bitwise operators keep
-    // this free of branches (the quadrants of a running product are unpredictable).
-    let lower = (im < 0.0) | ((im == 0.0) & (re < 0.0));
-    let second = (lower & (re >= 0.0)) | (!lower & (re <= 0.0));
+    // Argument in [π, 2π); then the second half of its half turn. Bitwise operators on
+    // integers keep this free of branches (the quadrants of a running product are unpredictable).
+    let bit = u8::from;
+    let lower = bit(im < 0.0) | (bit(im == 0.0) & bit(re < 0.0));
+    let second = (lower & bit(re >= 0.0)) | ((1 ^ lower) & bit(re <= 0.0));
     2 * i64::from(lower) + i64::from(second)
 }
 

@@ -122,12 +122,10 @@ fn steps(count: usize, lo: f64, hi: f64, seed: u64) -> Vec<(f64, f64)> {
     while out.len() < count {
         let phi = rng.gen_range(-40.0..40.0);
         // Half of the steps hug the window ends.
-        let delta = if rng.gen_bool(0.5) {
-            rng.gen_range(lo..hi)
-        } else if rng.gen_bool(0.5) {
-            lo + rng.gen_range(0.0..1e-6)
-        } else {
-            hi - rng.gen_range(1e-12..1e-6)
+        let delta = match rng.gen_range(0..4) {
+            0 => lo + rng.gen_range(0.0..1e-6),
+            1 => hi - rng.gen_range(1e-12..1e-6),
+            _ => rng.gen_range(lo..hi),
         };
         if !near(phi) && !near(phi + delta) {
             out.push((phi, delta));
@@ -235,7 +233,11 @@ fn b15_winding_recovered_with_flat_and_needle_corners() {
         let l: Vec<Mpfr> = len.iter().map(|&x| Mpfr::from_f64(x, p128)).collect();
         let m = cone_angles(&mesh, &l);
         for v in 0..refs.len() {
-            let e = [err(&f[v], &refs[v]), err(&d[v], &refs[v]), err(&m[v], &refs[v])];
+            let e = [
+                err(&f[v], &refs[v]),
+                err(&d[v], &refs[v]),
+                err(&m[v], &refs[v]),
+            ];
             assert!(
                 e.iter().all(|&x| x < 1e-5),
                 "vertex {v} of {alpha:?}: errors {e:?}"
@@ -262,7 +264,12 @@ fn b15_negative_control_wrong_quarter_is_rejected() {
     assert!(err(&right, &refs[0]) <= 2.0 * bound);
     let wrong = unwrap_quarter(&re, &im, m + 4, &half_pi);
     assert!(err(&wrong, &refs[0]) > 6.0, "a lost turn was not detected");
-    assert!(err(&unwrap_angle(&re, &im, good.approx_f64() + 2.0 * PI), &refs[0]) > 6.0);
+    assert!(
+        err(
+            &unwrap_angle(&re, &im, good.approx_f64() + 2.0 * PI),
+            &refs[0]
+        ) > 6.0
+    );
 }
 
 #[test]
