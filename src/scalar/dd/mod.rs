@@ -35,7 +35,8 @@ use std::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
 ///
 /// About 106 significand bits; the exponent range is that of `f64` (results near the
 /// underflow threshold lose the `lo` part). Arithmetic follows JMP17 with FMA
-/// (MATH.md §9, proofs B01–B09); the functions have measured bounds (proofs B10–B14).
+/// (MATH.md §9, proofs B01–B09, division B17); the functions have measured bounds (proofs
+/// B10–B14, reduction mod π/2 for large arguments B18).
 ///
 /// ```
 /// use penner::scalar::{Dd, Real};
