@@ -50,8 +50,8 @@ use super::flips::{
 };
 use crate::mesh::{Edge, Mesh};
 use crate::predicates::delaunay::{
-    check_length, filter_f64_in_range, in_filter_range, DelaunayError, EnclosureQuad, Quad,
-    QuadEdges, RationalQuad, RealQuad,
+    check_length, f64_exact, filter_f64_in_range, in_filter_range, DelaunayError, EnclosureQuad,
+    Quad, QuadEdges, RationalQuad, RealQuad,
 };
 use crate::predicates::ladder::{decide, Ladder, SignPredicate};
 use crate::scalar::{Certified, Interval, Mpfr, Precision, Real, Sign, Stage};
@@ -296,9 +296,7 @@ fn check_all<T: Real>(mesh: &Mesh, lengths: &[T]) -> Result<bool, DelaunayError>
     }
     // Fast path for 53-bit backends: every image finite and positive (the test of
     // `check_length`); otherwise find the offending edge.
-    let f53 = lengths
-        .first()
-        .is_some_and(|l| T::precision_bits(l.ctx()) == 53);
+    let f53 = lengths.first().is_some_and(|l| f64_exact::<T>(l.ctx()));
     if f53 && lengths.iter().all(|l| in_filter_range(l.approx_f64())) {
         return Ok(true);
     }

@@ -257,12 +257,20 @@ pub fn edge_delaunay_sign<T: Real>(
     Ok(EdgeDelaunay::Interior(decide(&RealQuad(quad), ladder)))
 }
 
+/// Whether values of `T` at `ctx` are binary64 numbers as read by `approx_f64` (53-bit
+/// point values; inside the f64 exponent range they are exact), the precondition of the
+/// f64 filter's fast input path (proof: B61).
+#[inline]
+pub(crate) fn f64_exact<T: Real>(ctx: T::Ctx) -> bool {
+    T::precision_bits(ctx) == 53 && T::is_point()
+}
+
 /// Check that `l` is finite and positive (exactly, via its rational value when it is not
 /// an `f64`-range 53-bit number).
 #[inline]
 pub fn check_length<T: Real>(edge: Edge, l: &T) -> Result<(), DelaunayError> {
     let x = l.approx_f64();
-    if T::precision_bits(l.ctx()) == 53 && x.is_finite() && x > 0.0 {
+    if f64_exact::<T>(l.ctx()) && x.is_finite() && x > 0.0 {
         return Ok(());
     }
     match l.to_rational() {
@@ -389,7 +397,7 @@ impl<T: Real> SignPredicate for RealQuad<'_, T> {
     #[allow(clippy::inline_always)] // hot path of the flip loop (measured)
     #[inline(always)]
     fn filter(&self) -> Option<Sign> {
-        if T::precision_bits(self.0.ij.ctx()) != 53 {
+        if !f64_exact::<T>(self.0.ij.ctx()) {
             return None;
         }
         // 53-bit values in the f64 range are f64 numbers exactly; others fail the range

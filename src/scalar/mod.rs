@@ -151,6 +151,14 @@ pub trait Real:
 
     /// Exact conversion to a rational, or `None` when the value is not finite.
     fn to_rational(&self) -> Option<rug::Rational>;
+
+    /// Whether a value is one number rather than an enclosure, so that with 53 significand
+    /// bits [`Real::approx_f64`] returns it exactly (inside the binary64 exponent range).
+    /// `false` for [`Interval`], whose `approx_f64` is a midpoint: f64 filters must not
+    /// read it as the value.
+    fn is_point() -> bool {
+        true
+    }
 }
 
 /// `2ᵏ` as an `f64`, for `|k| ≤ 1000` (clamped to the normal exponent range).

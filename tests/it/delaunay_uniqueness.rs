@@ -56,3 +56,53 @@ fn t22_flip_orders_reach_the_same_triangulation_on_random_surfaces_of_genus_0_to
     }
     assert!(flipped > 0 && controls > 0, "{flipped} {controls}");
 }
+
+/// The f64 filter reads 53-bit values through `approx_f64`; for an enclosure that is a
+/// midpoint, not the value. A wide `Interval<f64>` length must therefore not be decided by
+/// the filter (here it is refused as a length that is not one number), while point
+/// intervals — exact numbers — are decided as their `f64` values are.
+#[test]
+fn b61_filter_never_reads_an_enclosure_midpoint_as_a_length() {
+    use penner::predicates::delaunay::{edge_delaunay_sign, EdgeDelaunay};
+    use penner::predicates::ladder::Ladder;
+    use penner::scalar::{Certified, Interval, Sign};
+    let m = Mesh::from_faces(4, &[[0, 1, 2], [0, 2, 3]]).expect("two triangles");
+    let diag = m
+        .edges()
+        .find(|&e| !m.is_boundary_edge(e))
+        .expect("one interior edge");
+    let side = m
+        .edges()
+        .find(|&e| m.is_boundary_edge(e))
+        .expect("a boundary edge");
+    // A thin rhombus: the diagonal 1.9 is far from Delaunay (D < 0) at sides 1.
+    let lengths = |wide: bool| -> Vec<Interval<f64>> {
+        m.edges()
+            .map(|e| {
+                if e == diag {
+                    Interval::point(1.9)
+                } else if wide && e == side {
+                    Interval::new(0.5, 1.5)
+                } else {
+                    Interval::point(1.0)
+                }
+            })
+            .collect()
+    };
+    let exact = edge_delaunay_sign(&m, &lengths(false), diag, &Ladder::default());
+    assert!(
+        matches!(
+            exact,
+            Ok(EdgeDelaunay::Interior(Certified::Known {
+                value: Sign::Negative,
+                ..
+            }))
+        ),
+        "{exact:?}"
+    );
+    let wide = edge_delaunay_sign(&m, &lengths(true), diag, &Ladder::default());
+    assert!(
+        wide.is_err(),
+        "a wide enclosure was read as a number: {wide:?}"
+    );
+}

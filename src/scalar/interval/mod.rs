@@ -496,6 +496,10 @@ impl<B: IntervalBound> Real for Interval<B> {
     fn ctx(&self) -> B::Ctx {
         self.lo.ctx()
     }
+    /// An enclosure, not a number: its `approx_f64` is a midpoint.
+    fn is_point() -> bool {
+        false
+    }
     fn backend_name(ctx: B::Ctx) -> String {
         format!("interval-{}", B::backend_name(ctx))
     }
