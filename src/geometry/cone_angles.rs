@@ -222,6 +222,10 @@ fn exponent(x: f64) -> i32 {
 /// the error is that of a product of unit complex numbers, comparable to the per-corner
 /// sum (proof: B16).
 ///
+/// For enclosure types ([`Real::is_point`] false, e.g. `Interval<Mpfr>`) the result is
+/// [`cone_angles_per_corner`]: the quarter count reads signs through `approx_f64`, which
+/// for an enclosure is a midpoint, while a sum of enclosed corner angles is rigorous.
+///
 /// Lengths violating the triangle inequality give NaN (f64) — callers validate lengths
 /// first (see `predicates`). Lengths must lie within about 2^±250, so that the
 /// unnormalized directions (modulus `4bc`) and their products with the running product
@@ -241,6 +245,11 @@ pub fn cone_angles<T: Real>(mesh: &Mesh, lengths: &[T]) -> Vec<T> {
         mesh.n_edges(),
         "cone_angles: one length per edge is required"
     );
+    if !T::is_point() {
+        // Enclosures: the quarter count would follow midpoints (B15, Limits); the sum of
+        // enclosed corner angles in (0, π) is rigorous and needs no count.
+        return cone_angles_per_corner(mesh, lengths);
+    }
     let Some(first) = lengths.first() else {
         return Vec::new();
     };

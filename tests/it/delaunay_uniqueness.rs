@@ -106,3 +106,55 @@ fn b61_filter_never_reads_an_enclosure_midpoint_as_a_length() {
         "a wide enclosure was read as a number: {wide:?}"
     );
 }
+
+/// Cone angles on enclosures are rigorous in their multiple of 2π: at an interior vertex of
+/// a flat grid (cone angle exactly 2π) with every length widened into an interval, the
+/// enclosure contains 2π at every width. Negative control: the same enclosure does not
+/// contain 2π ± 10⁻³.
+#[test]
+fn b15_cone_angle_enclosures_contain_the_flat_angle_at_every_width() {
+    use penner::geometry::cone_angles::cone_angles;
+    use penner::mesh::builders;
+    use penner::scalar::{Interval, Mpfr, Precision, Real};
+    use rug::Rational;
+    let p = Precision::new(128).expect("valid precision");
+    let grid = builders::grid_disk(4, 4).expect("a 4 × 4 grid");
+    let sq = penner::io::surface::squared_lengths_from_positions(&grid.mesh, &grid.positions);
+    let interior: Vec<usize> = grid
+        .mesh
+        .vertices()
+        .filter(|&v| !grid.mesh.is_boundary_vertex(v))
+        .map(|v| v.idx())
+        .collect();
+    assert!(!interior.is_empty());
+    let two_pi = Interval::<Mpfr>::point(Mpfr::from_f64(2.0, p)) * &Interval::<Mpfr>::pi(p);
+    for k in [0, 3, 6, 9, 12] {
+        let w = Rational::from((1, 10_i64.pow(k)));
+        let l: Vec<Interval<Mpfr>> = sq
+            .iter()
+            .map(|q| {
+                let x = Interval::<Mpfr>::from_rational(q, p).sqrt();
+                if k == 0 {
+                    x
+                } else {
+                    let lo = Interval::<Mpfr>::from_rational(&(Rational::from(1) - &w), p);
+                    let hi = Interval::<Mpfr>::from_rational(&(Rational::from(1) + &w), p);
+                    let span = Interval::new(lo.lo().clone(), hi.hi().clone());
+                    x * &span
+                }
+            })
+            .collect();
+        let theta = cone_angles(&grid.mesh, &l);
+        for &v in &interior {
+            let d = theta[v].clone() - &two_pi;
+            assert!(d.contains_zero(), "vertex {v} at width 1e-{k}: {d:?}");
+            for off in [1e-3, -1e-3] {
+                let shifted = d.clone() + &Interval::<Mpfr>::point(Mpfr::from_f64(off, p));
+                assert!(
+                    !shifted.contains_zero() || k <= 3,
+                    "vertex {v} width 1e-{k}"
+                );
+            }
+        }
+    }
+}
