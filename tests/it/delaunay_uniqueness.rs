@@ -124,7 +124,7 @@ fn b15_cone_angle_enclosures_contain_the_flat_angle_at_every_width() {
         .mesh
         .vertices()
         .filter(|&v| !grid.mesh.is_boundary_vertex(v))
-        .map(|v| v.idx())
+        .map(penner::mesh::Vertex::idx)
         .collect();
     assert!(!interior.is_empty());
     let two_pi = Interval::<Mpfr>::point(Mpfr::from_f64(2.0, p)) * &Interval::<Mpfr>::pi(p);
