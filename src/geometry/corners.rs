@@ -16,19 +16,26 @@ use crate::scalar::Real;
 /// assert!((sum - std::f64::consts::PI).abs() < 1e-15);
 /// ```
 pub fn halfedge_angles<T: Real>(mesh: &Mesh, lengths: &[T]) -> Vec<T> {
+    per_corner(mesh, lengths, corner_angle)
+}
+
+/// `f(ℓ_ij, ℓ_jk, ℓ_ki)` for every face half-edge `h = i→j` of face `ijk` (a function of
+/// the corner at `k` opposite `h`), zero for boundary half-edges, which have no corner.
+pub(crate) fn per_corner<T: Real>(
+    mesh: &Mesh,
+    lengths: &[T],
+    f: impl Fn(&T, &T, &T) -> T,
+) -> Vec<T> {
     let Some(l0) = lengths.first() else {
         return Vec::new();
     };
+    let len = |h: crate::mesh::HalfEdge| &lengths[h.edge().idx()];
     mesh.halfedges()
         .map(|h| {
             if mesh.is_boundary_halfedge(h) {
                 l0.zero_like()
             } else {
-                corner_angle(
-                    &lengths[h.edge().idx()],
-                    &lengths[mesh.next(h).edge().idx()],
-                    &lengths[mesh.prev(h).edge().idx()],
-                )
+                f(len(h), len(mesh.next(h)), len(mesh.prev(h)))
             }
         })
         .collect()

@@ -1,35 +1,14 @@
 //! Cotangents of corner angles and cotan edge weights (notes §1.3.3, Eq. 5; MATH.md §3).
 
 use super::triangle::cot_opposite;
-use crate::mesh::{HalfEdge, Mesh};
+use crate::mesh::Mesh;
 use crate::scalar::Real;
-
-/// Length of the edge under half-edge `h`.
-fn len<'a, T>(mesh: &Mesh, lengths: &'a [T], h: HalfEdge) -> &'a T {
-    let _ = mesh;
-    &lengths[h.edge().idx()]
-}
 
 /// Per half-edge: `cot α` of the corner opposite `h` in its face (`α_k^{ij}` for
 /// `h = i→j` in face `ijk`), by [`cot_opposite`]; zero for boundary half-edges, which have
 /// no corner.
 pub fn halfedge_cotans<T: Real>(mesh: &Mesh, lengths: &[T]) -> Vec<T> {
-    let Some(l0) = lengths.first() else {
-        return Vec::new();
-    };
-    mesh.halfedges()
-        .map(|h| {
-            if mesh.is_boundary_halfedge(h) {
-                l0.zero_like()
-            } else {
-                cot_opposite(
-                    len(mesh, lengths, h),
-                    len(mesh, lengths, mesh.next(h)),
-                    len(mesh, lengths, mesh.prev(h)),
-                )
-            }
-        })
-        .collect()
+    super::corners::per_corner(mesh, lengths, cot_opposite)
 }
 
 /// Cotan weights per edge: `w_ij = ½(cot α_k^{ij} + cot α_l^{ij})` on interior edges and

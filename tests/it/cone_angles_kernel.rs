@@ -308,40 +308,28 @@ fn b16_measured_errors_of_kernel_and_per_corner_sum() {
         eprintln!("b16 {name}: kernel {fm:.3} n·u, per-corner {sm:.3} n·u");
         fm
     };
-    let l: Vec<f64> = len.clone();
     let rel = |e: f64, v: usize, u: f64| e / (val[v] as f64 * u);
-    let f = cone_angles(&mesh, &l);
-    let s = cone_angles_per_corner(&mesh, &l);
-    let u = f64::unit_roundoff(());
-    let fe: Vec<f64> = f
-        .iter()
-        .zip(&refs)
-        .enumerate()
-        .map(|(v, (x, r))| rel(err(x, r), v, u))
-        .collect();
-    let se: Vec<f64> = s
-        .iter()
-        .zip(&refs)
-        .enumerate()
-        .map(|(v, (x, r))| rel(err(x, r), v, u))
-        .collect();
+    // Errors of the kernel and of the per-corner sum at one backend, in units of n·u.
+    let errors = |f: Vec<f64>, s: Vec<f64>, u: f64| -> (Vec<f64>, Vec<f64>) {
+        let scaled =
+            |x: &[f64]| -> Vec<f64> { x.iter().enumerate().map(|(v, &e)| rel(e, v, u)).collect() };
+        (scaled(&f), scaled(&s))
+    };
+    let l: Vec<f64> = len.clone();
+    let (f, s) = (cone_angles(&mesh, &l), cone_angles_per_corner(&mesh, &l));
+    let (fe, se) = errors(
+        f.iter().zip(&refs).map(|(x, r)| err(x, r)).collect(),
+        s.iter().zip(&refs).map(|(x, r)| err(x, r)).collect(),
+        f64::unit_roundoff(()),
+    );
     let m64 = report("f64", &fe, &se);
     let l: Vec<Dd> = len.iter().map(|&x| Dd::from_f64(x)).collect();
-    let f = cone_angles(&mesh, &l);
-    let s = cone_angles_per_corner(&mesh, &l);
-    let u = Dd::unit_roundoff(());
-    let fe: Vec<f64> = f
-        .iter()
-        .zip(&refs)
-        .enumerate()
-        .map(|(v, (x, r))| rel(err(x, r), v, u))
-        .collect();
-    let se: Vec<f64> = s
-        .iter()
-        .zip(&refs)
-        .enumerate()
-        .map(|(v, (x, r))| rel(err(x, r), v, u))
-        .collect();
+    let (f, s) = (cone_angles(&mesh, &l), cone_angles_per_corner(&mesh, &l));
+    let (fe, se) = errors(
+        f.iter().zip(&refs).map(|(x, r)| err(x, r)).collect(),
+        s.iter().zip(&refs).map(|(x, r)| err(x, r)).collect(),
+        Dd::unit_roundoff(()),
+    );
     let mdd = report("dd", &fe, &se);
     assert!(m64 <= 16.0 && mdd <= 16.0);
 }
