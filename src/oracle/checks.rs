@@ -47,13 +47,13 @@ fn exact_lengths(case: &Surface) -> Option<&Vec<Rational>> {
 }
 
 /// The case's metric scaled conformally by [`scale_factors`] (MATH.md Eq. 10).
-fn scaled(case: &Surface) -> Metric {
+pub(crate) fn scaled(case: &Surface) -> Metric {
     case.metric
         .scaled(&case.mesh, &scale_factors(case.mesh.n_vertices()))
 }
 
 /// The lengths of another metric on the case's mesh, in backend `T` ([`Surface::lengths`]).
-fn lengths_of<T: Real>(case: &Surface, m: &Metric, ctx: T::Ctx) -> Vec<T> {
+pub(crate) fn lengths_of<T: Real>(case: &Surface, m: &Metric, ctx: T::Ctx) -> Vec<T> {
     Surface {
         name: String::new(),
         mesh: case.mesh.clone(),

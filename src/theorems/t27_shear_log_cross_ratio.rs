@@ -12,7 +12,23 @@ use crate::scalar::{Mpfr, Real};
 
 /// Compare shear (from Penner coordinates) with the log cross ratio on every interior edge.
 pub fn check_shear_log_cross_ratio(mesh: &Mesh, lengths: &[Mpfr], settings: &Settings) -> Verdict {
-    if lengths.len() != mesh.n_edges() || lengths.is_empty() {
+    verify_shear_log_cross_ratio(mesh, lengths, lengths, settings)
+}
+
+/// The comparison of T27 with the two sides taken from possibly different metrics: the
+/// shear `s_ij` from the Penner coordinates of `shear_lengths`, the cross ratio `c_ij` from
+/// `ratio_lengths` (the theorem is the case of one metric), with the tolerance of B64.
+pub fn verify_shear_log_cross_ratio(
+    mesh: &Mesh,
+    shear_lengths: &[Mpfr],
+    ratio_lengths: &[Mpfr],
+    settings: &Settings,
+) -> Verdict {
+    let lengths = shear_lengths;
+    if lengths.len() != mesh.n_edges()
+        || ratio_lengths.len() != mesh.n_edges()
+        || lengths.is_empty()
+    {
         return Verdict::NotApplicable {
             reason: "one length per edge is required".into(),
         };
@@ -28,7 +44,8 @@ pub fn check_shear_log_cross_ratio(mesh: &Mesh, lengths: &[Mpfr], settings: &Set
         let lam = |x: &Mpfr| x.ln() * &x.lit(2.0);
         let two_s = lam(l.jk) - &lam(l.ki) + &lam(l.il) - &lam(l.lj);
         let s = two_s / &l.ij.lit(2.0);
-        let c = (l.il.clone() * l.jk) / &(l.ki.clone() * l.lj);
+        let r = q.lengths(ratio_lengths);
+        let c = (r.il.clone() * r.jk) / &(r.ki.clone() * r.lj);
         let log_c = c.ln();
         let diff = (s - &log_c).abs().approx_f64();
         let sum_abs: f64 = [l.jk, l.ki, l.il, l.lj]

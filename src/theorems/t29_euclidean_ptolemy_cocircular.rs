@@ -20,6 +20,31 @@ pub fn check_euclidean_equals_ptolemy_iff_cocircular<T: Real>(
     lengths: &[T],
     settings: &Settings,
 ) -> Verdict {
+    let signs: Vec<Option<Sign>> = mesh
+        .edges()
+        .map(|e| {
+            let q = QuadEdges::of(mesh, e)?;
+            decide(&RealQuad(q.lengths(lengths)), &settings.ladder).value()
+        })
+        .collect();
+    verify_cocircularity_signs(mesh, lengths, &signs, settings)
+}
+
+/// The comparison of T29 against given signs of `D`, one per edge (`None`: undecided;
+/// ignored on edges without a quadrilateral): where the sign is zero the enclosures of the
+/// Euclidean and Ptolemy lengths must intersect, elsewhere the Ptolemy one must lie strictly
+/// above. The theorem is the case of the certified signs of the same lengths.
+pub fn verify_cocircularity_signs<T: Real>(
+    mesh: &Mesh,
+    lengths: &[T],
+    signs: &[Option<Sign>],
+    settings: &Settings,
+) -> Verdict {
+    if signs.len() != mesh.n_edges() || lengths.len() != mesh.n_edges() {
+        return Verdict::NotApplicable {
+            reason: "one length and one sign per edge are required".into(),
+        };
+    }
     let mut witnesses = Vec::new();
     let mut undecided = Vec::new();
     for e in mesh.edges() {
@@ -27,7 +52,7 @@ pub fn check_euclidean_equals_ptolemy_iff_cocircular<T: Real>(
             continue;
         };
         let quad = q.lengths(lengths);
-        let Some(sign) = decide(&RealQuad(quad), &settings.ladder).value() else {
+        let Some(sign) = signs[e.idx()] else {
             undecided.push(Witness {
                 element: e.to_string(),
                 detail: "sign of D undecided".into(),

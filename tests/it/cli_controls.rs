@@ -138,3 +138,68 @@ fn negative_controls_refuse_an_unknown_id() {
     assert!(text(&out.stderr).contains("T99"));
     assert!(failure_files(&d).is_empty());
 }
+
+/// The two-triangle sphere and the one-vertex torus with lengths 4, 5, 6 (JSON).
+const SPHERE_JSON: &str =
+    r#"{"vertices": 3, "faces": [[0, 1, 2], [0, 2, 1]], "lengths": ["4", "5", "6"]}"#;
+const TORUS_JSON: &str = r#"{"vertices": 1, "faces": [[0, 0, 0], [0, 0, 0]],
+  "gluing": [[[0, 0], [1, 0]], [[0, 1], [1, 1]], [[0, 2], [1, 2]]], "lengths": ["4", "5", "6"]}"#;
+
+/// Run every control on `file` in `dir`: exit 0, every control line either rejected or not
+/// applicable, one failure file per rejecting control, each replayed as "still fails".
+/// Returns the IDs rejected.
+fn all_controls_fail_and_replay(dir: &Path, file: &str, body: &str) -> Vec<String> {
+    let p = write(dir, file, body.as_bytes());
+    let out = penner(&["check", &p.display().to_string(), "--negative-controls"]);
+    let stdout = text(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{stdout}\n{}",
+        text(&out.stderr)
+    );
+    let mut rejected = Vec::new();
+    for line in stdout.lines().filter(|l| l.contains("-NC (")) {
+        assert!(
+            line.contains("rejected as expected") || line.contains("not applicable"),
+            "{line}"
+        );
+        if line.contains("rejected as expected") {
+            rejected.push(line.split_whitespace().next().unwrap().to_string());
+        }
+    }
+    let files = failure_files(dir);
+    assert_eq!(files.len(), rejected.len(), "{files:?} vs {rejected:?}");
+    for n in &files {
+        let r = penner(&["replay", &dir.join(n).display().to_string()]);
+        let o = text(&r.stdout);
+        assert_eq!(r.status.code(), Some(1), "{n}: {o}");
+        assert!(
+            o.contains("-NC at ") && o.contains("still fails"),
+            "{n}: {o}"
+        );
+    }
+    rejected
+}
+
+#[test]
+fn every_applicable_control_fails_and_replays_on_a_grid_and_the_three_edge_surfaces() {
+    let grid = all_controls_fail_and_replay(&scratch("controls-all-grid"), "grid.obj", &grid_obj());
+    for id in [
+        "T01-NC", "T03-NC", "T04-NC", "T05-NC", "T07-NC", "T15-NC", "T16-NC", "T17-NC", "T20-NC",
+        "T21-NC", "T22-NC", "T23-NC", "T27-NC", "T29-NC",
+    ] {
+        assert!(
+            grid.iter().any(|x| x == id),
+            "{id} not rejected on the grid: {grid:?}"
+        );
+    }
+    let sphere =
+        all_controls_fail_and_replay(&scratch("controls-all-sphere"), "s.json", SPHERE_JSON);
+    assert!(sphere.iter().any(|x| x == "T18-NC"), "{sphere:?}");
+    let torus = all_controls_fail_and_replay(&scratch("controls-all-torus"), "t.json", TORUS_JSON);
+    assert!(
+        torus.iter().any(|x| x == "T19-NC") && torus.iter().any(|x| x == "T28-NC"),
+        "{torus:?}"
+    );
+}

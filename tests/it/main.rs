@@ -4,6 +4,7 @@ mod claims;
 mod cli;
 mod cli_controls;
 mod cone_angles_kernel;
+mod controls;
 mod definition_two;
 mod delaunay;
 mod delaunay_flips;
