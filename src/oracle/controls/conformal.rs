@@ -67,7 +67,8 @@ fn t15_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
 }
 
 /// T16-NC (exact): the cross ratios of the metric against those of its conformal scaling
-/// by [`scale_factors`] with the first interior edge's value then scaled by 101/100.
+/// by [`scale_factors`] with the first interior edge's value then scaled by 101/100 (the
+/// cross ratios of the edges whose quadrilaterals have that side move; compared in ℚ).
 fn t16_nc(case: &Surface, prec: Prec, _s: &Settings) -> Option<Verdict> {
     if prec != Prec::Exact {
         return None;
@@ -216,7 +217,8 @@ fn t20_nc(case: &Surface, prec: Prec, _s: &Settings) -> Option<Verdict> {
 
 /// T35-NC (exact): Definition 2 against the second metric of T35's entry (scaled, then
 /// Ptolemy-flipped across the first interior edge) with that edge's length scaled by
-/// 101/100.
+/// 101/100 (compared in ℚ). Not applicable on the two-triangle sphere, where every metric
+/// is equivalent.
 fn t35_nc(case: &Surface, prec: Prec, _s: &Settings) -> Option<Verdict> {
     if prec != Prec::Exact {
         return None;

@@ -209,7 +209,9 @@ fn t28_nc(case: &Surface, prec: Prec, _s: &Settings) -> Option<Verdict> {
         return None;
     }
     let Metric::Lengths(l) = &case.metric else {
-        return None;
+        return Some(not_applicable(
+            "T28 is exact and needs rational lengths (Ptolemy flips of square roots leave ℚ)",
+        ));
     };
     if is_two_triangle_sphere(&case.mesh) {
         return Some(not_applicable(TRIVIAL_CROSS_RATIOS));
@@ -246,7 +248,7 @@ pub fn controls() -> Vec<Check> {
     vec![
         Check {
             id: "T21-NC",
-            title: "control: Delaunay result, one edge flipped back",
+            title: "control: non-Delaunay input or one edge flipped",
             run: t21_nc,
         },
         Check {

@@ -21,8 +21,9 @@ use crate::theorems::{
     Verdict,
 };
 
-/// T01-NC: Gauss–Bonnet compared with the curvature of vertex 0 raised by 1/1000 (the
-/// tolerance, B01–B03 and B40, is below 10⁻¹⁰ on surfaces of a few thousand faces).
+/// T01-NC: Gauss–Bonnet compared with the curvature of vertex 0 raised by 1/1000. The
+/// tolerance (B42, from B40 and B41) grows like the number of corners times 16u: at `f64`
+/// it stays below 10⁻⁷ up to a million faces, far below the 10⁻³ shift.
 fn t01_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
     at_precision!(prec, case, |l: T| {
         let mut k = curvature(&case.mesh, &l);
@@ -84,8 +85,9 @@ fn t03_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
     })
 }
 
-/// T04-NC: T04 on the planar layout with the squared length of its first interior edge
-/// scaled by 101/100 (no longer flat at the edge's ends).
+/// T04-NC: T04 on the planar layout with the value (length or squared length) of its first
+/// interior edge scaled by 101/100: the angle sums at the edge's ends move by about 10⁻²
+/// rad, far above the B43 tolerances (a few hundred units of roundoff).
 fn t04_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
     if !case.positions.as_deref().is_some_and(coplanar) {
         return Some(not_applicable("T04's control needs a planar layout"));
@@ -98,8 +100,9 @@ fn t04_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
     t04(&bent, prec, s)
 }
 
-/// T05-NC: the cotan Laplacian with one off-diagonal entry of row 0 raised by 1/1000
-/// (symmetry and zero row sums broken).
+/// T05-NC: the cotan Laplacian with one off-diagonal entry of row 0 raised by 1/1000:
+/// symmetry (compared exactly) and the zero row sum of row 0 (tolerance B41 over the row, a
+/// few units of roundoff times the entries) both break.
 fn t05_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
     at_precision!(prec, case, |l: T| {
         let mut lap = cotan_laplacian(&case.mesh, &l);
