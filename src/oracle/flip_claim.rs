@@ -22,10 +22,11 @@
 //!
 //! **Ties.** A tie is certified only where all five lengths of a quadrilateral are exact
 //! (rational lengths or rational squared lengths); on enclosed lengths `D = 0` cannot be
-//! separated from a small `D ≠ 0` and the answer is `undecided`. When our triangulation has
-//! certified ties and the claimed one is not the same (or is the same with other lengths),
-//! the claimed one may be another Delaunay triangulation differing by tie flips: this build
-//! does not search tie flips and answers `undecided`, listing the tie edges.
+//! separated from a small `D ≠ 0` and the answer is `undecided`. A flip whose sign is
+//! certified `Zero` takes its new length by Ptolemy's theorem (exact where possible). When
+//! our triangulation has certified ties, the other Delaunay triangulations are reached by
+//! tie flips: [`super::tie_search`] searches them (proof: B82) and answers `holds` on a
+//! match, `refuted` only after a complete search, `undecided` past its bounds.
 //!
 //! **Lengths.** Compared per edge under every relabeling found: exactly where our length
 //! is exact (rational, or a rational square compared by squaring), otherwise by enclosures
@@ -36,6 +37,7 @@
 use super::certify::{Answer, ClaimVerdict};
 use super::claim::Claim;
 use super::relabel::{first_extra_edge, isomorphisms, Relabeling};
+use super::tie_search::{search, tie_length, Search};
 use crate::algorithms::flip_to_delaunay::{
     flip_to_delaunay, flip_to_delaunay_exact, rational_bits, FlipKind, FlipOptions,
 };
@@ -54,10 +56,10 @@ use std::cmp::Ordering;
 
 /// Bit size (numerator + denominator) past which exact Ptolemy lengths are replaced by
 /// enclosures, both in the proposing run and in the replay.
-const EXACT_GUARD_BITS: u64 = 4096;
+pub(super) const EXACT_GUARD_BITS: u64 = 4096;
 
 /// At most this many relabelings are compared (symmetries fixing every vertex).
-const MAX_RELABELINGS: usize = 64;
+pub(super) const MAX_RELABELINGS: usize = 64;
 
 /// The outward-rounded MPFR enclosure of the replay (proof: B62).
 type Enclosure = Interval<Mpfr>;
@@ -74,27 +76,27 @@ fn positive(x: &Enclosure) -> bool {
 
 /// A length in the replay: exact, the square root of an exact rational, or an enclosure.
 #[derive(Clone, Debug)]
-enum Len {
+pub(super) enum Len {
     Exact(Rational),
     Root(Rational),
     Enclosed(Enclosure),
 }
 
 impl Len {
-    fn enclose(&self, bits: u32) -> Option<Enclosure> {
+    pub(super) fn enclose(&self, bits: u32) -> Option<Enclosure> {
         match self {
             Len::Exact(q) => from_q(q, bits),
             Len::Root(s) => valid(from_q(s, bits)?.sqrt()),
             Len::Enclosed(e) => Some(e.clone()),
         }
     }
-    fn exact(&self) -> Option<&Rational> {
+    pub(super) fn exact(&self) -> Option<&Rational> {
         match self {
             Len::Exact(q) => Some(q),
             _ => None,
         }
     }
-    fn exact_square(&self) -> Option<Rational> {
+    pub(super) fn exact_square(&self) -> Option<Rational> {
         match self {
             Len::Exact(q) => Some(Rational::from(q * q)),
             Len::Root(s) => Some(s.clone()),
@@ -127,20 +129,20 @@ fn sign(lens: &[Len], q: Quad<Edge>, bits: u32) -> Option<Sign> {
 }
 
 /// Our certified Delaunay triangulation.
-struct Ours {
-    mesh: Mesh,
-    lens: Vec<Len>,
+pub(super) struct Ours {
+    pub(super) mesh: Mesh,
+    pub(super) lens: Vec<Len>,
     /// Interior edges with `D = 0` certified.
-    ties: Vec<Edge>,
+    pub(super) ties: Vec<Edge>,
 }
 
 /// Why a precision did not suffice.
-struct Open {
-    reason: String,
+pub(super) struct Open {
+    pub(super) reason: String,
     witnesses: Vec<Witness>,
 }
 
-fn edge_name(mesh: &Mesh, e: Edge) -> String {
+pub(super) fn edge_name(mesh: &Mesh, e: Edge) -> String {
     let h = e.halfedge();
     format!("v{}–v{}", mesh.tail(h).0, mesh.tip(h).0)
 }
@@ -148,7 +150,7 @@ fn edge_name(mesh: &Mesh, e: Edge) -> String {
 /// The length of the new diagonal after flipping the quadrilateral with lengths `quad`:
 /// exact for Ptolemy flips of exact lengths (below the bit guard), otherwise an
 /// outward-rounded enclosure (proof: B80); `None` when it cannot be enclosed as positive.
-fn new_length(quad: Quad<&Len>, ptolemy: bool, bits: u32) -> Option<Len> {
+pub(super) fn new_length(quad: Quad<&Len>, ptolemy: bool, bits: u32) -> Option<Len> {
     if ptolemy {
         if let [Some(a), Some(b), Some(c), Some(d), Some(e)] = quad.to_array().map(Len::exact) {
             let l = ptolemy_length_exact(Quad {
@@ -210,8 +212,9 @@ fn replay(surface: &Surface, sequence: &[Edge], ptolemy: bool, bits: u32) -> Res
                 e,
             ));
         };
-        match sign(&lens, q.edges, bits) {
-            Some(Sign::Negative | Sign::Zero) => {}
+        let tie = match sign(&lens, q.edges, bits) {
+            Some(Sign::Zero) => true,
+            Some(Sign::Negative) => false,
             Some(Sign::Positive) => {
                 return Err(open(
                     format!("flip {n} of the proposed sequence is of an edge certified strictly Delaunay (rounding in the proposing run at {bits} bits)"),
@@ -226,8 +229,13 @@ fn replay(surface: &Surface, sequence: &[Edge], ptolemy: bool, bits: u32) -> Res
                     e,
                 ))
             }
-        }
-        let new = new_length(q.lengths(&lens), ptolemy, bits);
+        };
+        // A tie flip's length by Ptolemy's theorem, exact where possible (proof: B82).
+        let new = if tie {
+            tie_length(q.lengths(&lens), ptolemy, bits)
+        } else {
+            new_length(q.lengths(&lens), ptolemy, bits)
+        };
         let Some(new) = new else {
             return Err(open(
                 format!("the new length of flip {n} is not enclosed at {bits} bits"),
@@ -248,7 +256,7 @@ fn replay(surface: &Surface, sequence: &[Edge], ptolemy: bool, bits: u32) -> Res
 }
 
 /// Certify the end of a replay: every interior edge Delaunay, ties collected.
-fn finish(mesh: Mesh, lens: Vec<Len>, bits: u32) -> Result<Ours, Open> {
+pub(super) fn finish(mesh: Mesh, lens: Vec<Len>, bits: u32) -> Result<Ours, Open> {
     let mut ties = Vec::new();
     let mut undecided = Vec::new();
     for e in mesh.edges() {
@@ -370,13 +378,19 @@ fn midpoint_abs(x: &Enclosure, c: &Rational, bits: u32) -> f64 {
 }
 
 /// The verdict of one relabeling: per claimed edge, in the result's edge order.
-struct Compared {
-    verdict: ClaimVerdict,
-    witnesses: Vec<Witness>,
-    max_discrepancy: Option<f64>,
+pub(super) struct Compared {
+    pub(super) verdict: ClaimVerdict,
+    pub(super) witnesses: Vec<Witness>,
+    pub(super) max_discrepancy: Option<f64>,
 }
 
-fn compare(result: &Surface, ours: &Ours, rel: &Relabeling, eps: &Rational, bits: u32) -> Compared {
+pub(super) fn compare(
+    result: &Surface,
+    ours: &Ours,
+    rel: &Relabeling,
+    eps: &Rational,
+    bits: u32,
+) -> Compared {
     let squared = matches!(result.metric, Metric::SquaredLengths(_));
     let values = result.metric.values();
     let mut outside = Vec::new();
@@ -544,17 +558,58 @@ pub fn delaunay_flip(claim: &Claim, ptolemy: bool, result: &Surface, eps: &Ratio
                 continue;
             }
         };
+        if !ours.ties.is_empty() {
+            // proof: B82
+            match search(result, &ours, ptolemy, eps, bits) {
+                Search::Holds { max_discrepancy } => {
+                    return answer(
+                        claim,
+                        ClaimVerdict::Holds,
+                        bits,
+                        max_discrepancy,
+                        Vec::new(),
+                    )
+                }
+                Search::Refuted {
+                    max_discrepancy,
+                    witnesses,
+                } => {
+                    return answer(
+                        claim,
+                        ClaimVerdict::Refuted,
+                        bits,
+                        max_discrepancy,
+                        witnesses,
+                    )
+                }
+                Search::Undecided {
+                    max_discrepancy,
+                    mut witnesses,
+                    retry,
+                } => {
+                    witnesses.extend(tie_witnesses(
+                        &ours,
+                        "the claim may be a Delaunay triangulation that the tie-flip search did not settle",
+                    ));
+                    if !retry {
+                        return answer(
+                            claim,
+                            ClaimVerdict::Undecided,
+                            bits,
+                            max_discrepancy,
+                            witnesses,
+                        );
+                    }
+                    last = Some((ClaimVerdict::Undecided, max_discrepancy, witnesses));
+                    bits = bits.saturating_mul(2);
+                    continue;
+                }
+            }
+        }
         let rels = isomorphisms(&result.mesh, &ours.mesh, MAX_RELABELINGS);
         if rels.is_empty() {
-            if ours.ties.is_empty() {
-                let w = combinatorial_witness(result, &ours);
-                return answer(claim, ClaimVerdict::Refuted, bits, None, vec![w]);
-            }
-            let w = tie_witnesses(
-                &ours,
-                "the claimed triangulation differs from the computed one and may differ by tie flips, which this build does not search",
-            );
-            return answer(claim, ClaimVerdict::Undecided, bits, None, w);
+            let w = combinatorial_witness(result, &ours);
+            return answer(claim, ClaimVerdict::Refuted, bits, None, vec![w]);
         }
         let compared: Vec<Compared> = rels
             .iter()
@@ -575,14 +630,7 @@ pub fn delaunay_flip(claim: &Claim, ptolemy: bool, result: &Surface, eps: &Ratio
         if !any_open {
             let first = compared.into_iter().next();
             let (d, w) = first.map_or((None, Vec::new()), |c| (c.max_discrepancy, c.witnesses));
-            if ours.ties.is_empty() {
-                return answer(claim, ClaimVerdict::Refuted, bits, d, w);
-            }
-            let w = tie_witnesses(
-                &ours,
-                "the claimed lengths differ from the computed ones, and the claim may be another Delaunay triangulation differing by tie flips, which this build does not search",
-            );
-            return answer(claim, ClaimVerdict::Undecided, bits, d, w);
+            return answer(claim, ClaimVerdict::Refuted, bits, d, w);
         }
         let open = compared
             .into_iter()

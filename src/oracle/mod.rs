@@ -21,6 +21,7 @@ pub mod controls;
 pub use crate::mesh::relabel;
 pub mod report;
 pub mod shrink;
+pub mod tie_search;
 
 pub use crate::io::{Metric, Surface};
 pub use case::MetricOps;

@@ -199,29 +199,44 @@ fn b80_certify_delaunay_flip_euclidean_needs_a_positive_epsilon() {
 }
 
 #[test]
-fn b80_certify_delaunay_flip_at_a_tie_is_undecided_or_holds() {
+fn b82_certify_delaunay_flip_at_a_tie_holds_for_either_diagonal() {
     let d = scratch("claims-tie");
-    // Unit square with diagonal √2 (squared lengths): the diagonal is an exact tie.
+    // Unit square with diagonal √2 (squared lengths): the diagonal is an exact tie, and
+    // both diagonals give Delaunay triangulations (proofs/B82).
     let square = json!({"vertices": 4, "faces": [[0,1,2],[0,2,3]], "squared_lengths": ["1","1","2","1","1"]});
-    let (code, a, _) = certify(
+    let other = |diag: &str| json!({"vertices": 4, "faces": [[0,1,3],[1,2,3]], "squared_lengths": ["1", diag, "1", "1", "1"]});
+    for (name, result, code, verdict) in [
+        ("same.json", square.clone(), 0, "holds"),
+        ("other.json", other("2"), 0, "holds"),
+        // Negative control: the other diagonal with squared length 3.
+        ("wrong.json", other("3"), 1, "refuted"),
+    ] {
+        let (c, a, _) = certify(
+            &d,
+            name,
+            &flip_claim("euclidean", square.clone(), result, None),
+        );
+        assert_eq!(
+            (c, a["verdict"].as_str()),
+            (Some(code), Some(verdict)),
+            "{name}: {a}"
+        );
+        assert_eq!(a["certified"], true, "{name}: {a}");
+    }
+    // A cyclic kite on the unit circle, i = (−1, 0), j = (1, 0), k = (0, 1),
+    // l = (1/2, −√3/2): squared sides 2, 2, 3, 1 and diagonal 4 (a tie), but the other
+    // diagonal has squared length 2 + √3, not rational: its tie cannot be certified and
+    // the search is incomplete.
+    let kite = json!({"vertices": 4, "faces": [[0,1,2],[1,0,3]], "squared_lengths": ["4","2","2","3","1"]});
+    let flipped = json!({"vertices": 4, "faces": [[3,2,0],[2,3,1]],
+        "squared_lengths": ["3732050807568877/1000000000000000", "2", "3", "1", "2"]});
+    let (c, a, _) = certify(
         &d,
-        "same.json",
-        &flip_claim("euclidean", square.clone(), square.clone(), None),
+        "kite.json",
+        &flip_claim("euclidean", kite.clone(), flipped, Some("1e-12")),
     );
     assert_eq!(
-        (code, a["verdict"].as_str()),
-        (Some(0), Some("holds")),
-        "{a}"
-    );
-    // The other diagonal is Delaunay too; this build does not search tie flips.
-    let other = json!({"vertices": 4, "faces": [[0,1,3],[1,2,3]], "squared_lengths": ["1","2","1","1","1"]});
-    let (code, a, _) = certify(
-        &d,
-        "other.json",
-        &flip_claim("euclidean", square, other, None),
-    );
-    assert_eq!(
-        (code, a["verdict"].as_str()),
+        (c, a["verdict"].as_str()),
         (Some(2), Some("undecided")),
         "{a}"
     );
@@ -229,9 +244,16 @@ fn b80_certify_delaunay_flip_at_a_tie_is_undecided_or_holds() {
         a["witnesses"][0]["detail"]
             .as_str()
             .unwrap()
-            .contains("tie"),
+            .contains("not certified"),
         "{a}"
     );
+    // Negative control: the kite itself holds.
+    let (c, a, _) = certify(
+        &d,
+        "kite-same.json",
+        &flip_claim("euclidean", kite.clone(), kite, None),
+    );
+    assert_eq!((c, a["verdict"].as_str()), (Some(0), Some("holds")), "{a}");
 }
 
 #[test]

@@ -33,3 +33,4 @@ mod theorems_certified;
 mod theorems_fixed;
 mod theorems_random;
 mod tidy;
+mod tie_claims;
