@@ -1,7 +1,8 @@
 // Using penner as an oracle from C++17 (no dependencies).
 //
-// Writes a claim about a unit tetrahedron, runs `penner certify` on it, and reads the
-// verdict from the JSON answer and the exit code. Usage:
+// Writes claims about a unit tetrahedron (cone angles) and about a unit square (flipping to
+// intrinsic Delaunay), runs `penner certify` on each, and reads the verdict from the JSON
+// answer and the exit code. Usage:
 //
 //     g++ -std=c++17 -O2 -o cpp_client examples/oracle/cpp_client.cpp
 //     ./cpp_client path/to/penner
@@ -69,6 +70,26 @@ const char* kSurface =
     R"({"vertices": 4, "faces": [[0,1,2],[0,2,3],[0,3,1],[1,3,2]],)"
     R"( "lengths": ["1","1","1","1","1","1"]})";
 
+// A unit square split by the diagonal 0-2 (squared lengths, edges in order of first
+// appearance: 01, 12, 20, 23, 30). Its four corners are cocircular, so the diagonal is a
+// tie (D = 0): both diagonals give Delaunay triangulations.
+const char* kSquare =
+    R"({"vertices": 4, "faces": [[0,1,2],[0,2,3]], "squared_lengths": ["1","1","2","1","1"]})";
+
+// The same square split by the other diagonal 1-3 (edges 01, 13, 30, 12, 23), whose
+// squared length is `diagonal`.
+std::string other_diagonal(const std::string& diagonal) {
+    return R"({"vertices": 4, "faces": [[0,1,3],[1,2,3]], "squared_lengths": ["1",")" + diagonal +
+           R"(","1","1","1"]})";
+}
+
+// A `delaunay_flip` claim: flipping kSquare to intrinsic Delaunay with Euclidean flips
+// gives `result` (up to renumbering of edges and faces; vertices keep their ids).
+std::string flip_claim(const std::string& result) {
+    return std::string(R"({"penner_claim": 1, "kind": "delaunay_flip", "flips": "euclidean", "surface": )") +
+           kSquare + R"(, "result": )" + result + "}";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -88,6 +109,8 @@ int main(int argc, char** argv) {
          std::string(R"({"penner_claim": 1, "kind": "cone_angles", "surface": )") + kSurface +
              R"(, "angles": [3.0, 3.0, 3.0, 3.0], "epsilon": "0.1"})",
          "refuted", 1},
+        {"square, other diagonal (a tie flip)", flip_claim(other_diagonal("2")), "holds", 0},
+        {"square, other diagonal of squared length 3", flip_claim(other_diagonal("3")), "refuted", 1},
         {"malformed claim", R"({"penner_claim": 1, "kind": "cone_angles"})", "bad_input", 3},
     };
     int failures = 0;
