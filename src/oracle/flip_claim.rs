@@ -558,6 +558,13 @@ pub fn delaunay_flip(claim: &Claim, ptolemy: bool, result: &Surface, eps: &Ratio
                 continue;
             }
         };
+        let (r, o) = (&result.mesh, &ours.mesh);
+        if (r.n_vertices(), r.n_edges(), r.n_faces()) != (o.n_vertices(), o.n_edges(), o.n_faces())
+        {
+            // Flips keep the counts: no Delaunay triangulation has the result's (T02).
+            let w = combinatorial_witness(result, &ours);
+            return answer(claim, ClaimVerdict::Refuted, bits, None, vec![w]);
+        }
         if !ours.ties.is_empty() {
             // proof: B82
             match search(result, &ours, ptolemy, eps, bits) {

@@ -137,6 +137,13 @@ fn b82_claim_that_is_not_delaunay_is_refuted_after_a_complete_search() {
         "{w:?}"
     );
     assert!(w.detail.contains("searched completely"), "{w:?}");
+    // A result with other counts (one unit square only) is no flip of the rectangle.
+    let a = claim("euclidean", rect.clone(), grid(1, 1, |_, _| true));
+    assert_eq!(verdict(&a), (ClaimVerdict::Refuted, true), "{a:?}");
+    assert_eq!(
+        a.counterexample.map(|w| w.element).as_deref(),
+        Some("result")
+    );
     // Negative control: a Delaunay triangulation of the same rectangle holds.
     let a = claim("euclidean", rect, grid(2, 1, |x, _| x == 1));
     assert_eq!(verdict(&a), (ClaimVerdict::Holds, true), "{a:?}");
