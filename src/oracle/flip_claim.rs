@@ -538,6 +538,40 @@ fn combinatorial_witness(result: &Surface, ours: &Ours) -> Witness {
     }
 }
 
+/// The answer when our triangulation has ties, from the tie-flip search (proof: B82);
+/// `Err` with the open comparison when more precision may decide it.
+fn at_ties(
+    claim: &Claim,
+    result: &Surface,
+    ours: &Ours,
+    ptolemy: bool,
+    eps: &Rational,
+    bits: u32,
+) -> Result<Answer, (ClaimVerdict, Option<f64>, Vec<Witness>)> {
+    let (verdict, d, witnesses) = match search(result, ours, ptolemy, eps, bits) {
+        Search::Holds { max_discrepancy } => (ClaimVerdict::Holds, max_discrepancy, Vec::new()),
+        Search::Refuted {
+            max_discrepancy,
+            witnesses,
+        } => (ClaimVerdict::Refuted, max_discrepancy, witnesses),
+        Search::Undecided {
+            max_discrepancy,
+            mut witnesses,
+            retry,
+        } => {
+            witnesses.extend(tie_witnesses(
+                ours,
+                "the claim may be a Delaunay triangulation that the tie-flip search did not settle",
+            ));
+            if retry {
+                return Err((ClaimVerdict::Undecided, max_discrepancy, witnesses));
+            }
+            (ClaimVerdict::Undecided, max_discrepancy, witnesses)
+        }
+    };
+    Ok(answer(claim, verdict, bits, d, witnesses))
+}
+
 /// Answer a `delaunay_flip` claim (module documentation).
 pub fn delaunay_flip(claim: &Claim, ptolemy: bool, result: &Surface, eps: &Rational) -> Answer {
     let mut bits = super::certify::START_BITS;
@@ -566,48 +600,10 @@ pub fn delaunay_flip(claim: &Claim, ptolemy: bool, result: &Surface, eps: &Ratio
             return answer(claim, ClaimVerdict::Refuted, bits, None, vec![w]);
         }
         if !ours.ties.is_empty() {
-            // proof: B82
-            match search(result, &ours, ptolemy, eps, bits) {
-                Search::Holds { max_discrepancy } => {
-                    return answer(
-                        claim,
-                        ClaimVerdict::Holds,
-                        bits,
-                        max_discrepancy,
-                        Vec::new(),
-                    )
-                }
-                Search::Refuted {
-                    max_discrepancy,
-                    witnesses,
-                } => {
-                    return answer(
-                        claim,
-                        ClaimVerdict::Refuted,
-                        bits,
-                        max_discrepancy,
-                        witnesses,
-                    )
-                }
-                Search::Undecided {
-                    max_discrepancy,
-                    mut witnesses,
-                    retry,
-                } => {
-                    witnesses.extend(tie_witnesses(
-                        &ours,
-                        "the claim may be a Delaunay triangulation that the tie-flip search did not settle",
-                    ));
-                    if !retry {
-                        return answer(
-                            claim,
-                            ClaimVerdict::Undecided,
-                            bits,
-                            max_discrepancy,
-                            witnesses,
-                        );
-                    }
-                    last = Some((ClaimVerdict::Undecided, max_discrepancy, witnesses));
+            match at_ties(claim, result, &ours, ptolemy, eps, bits) {
+                Ok(a) => return a,
+                Err(open) => {
+                    last = Some(open);
                     bits = bits.saturating_mul(2);
                     continue;
                 }
