@@ -2,6 +2,7 @@
 //! a failing check lists *all* failing elements.
 
 pub mod bounds;
+pub mod inputs;
 pub mod report;
 pub mod verdict;
 

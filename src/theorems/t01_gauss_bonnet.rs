@@ -11,6 +11,7 @@
 //! - `pub fn verify_gauss_bonnet_certified<B: IntervalBound>(mesh: &Mesh, curvature: &[Interval<B>]) -> Verdict`.
 
 use super::bounds::{corner_angle_error, eps, sum_error};
+use super::inputs::count_mismatch;
 use super::report::{check_lengths, Tally};
 use super::verdict::{Settings, Verdict};
 use crate::geometry::curvature::{curvature, gauss_bonnet_target};
@@ -88,14 +89,13 @@ pub fn verify_gauss_bonnet<T: Real>(
     if let Some(v) = check_lengths(mesh, lengths) {
         return v;
     }
-    if curvature.len() != mesh.n_vertices() {
-        return Verdict::NotApplicable {
-            reason: format!(
-                "{} curvatures given for {} vertices",
-                curvature.len(),
-                mesh.n_vertices()
-            ),
-        };
+    if let Some(v) = count_mismatch(
+        curvature.len(),
+        "curvatures given",
+        mesh.n_vertices(),
+        "vertices",
+    ) {
+        return v;
     }
     let ctx = lengths[0].ctx();
     let mut total = lengths[0].zero_like();
@@ -164,14 +164,13 @@ pub fn verify_gauss_bonnet_certified<B: IntervalBound>(
             reason: "no vertices".to_string(),
         };
     };
-    if curvature.len() != mesh.n_vertices() {
-        return Verdict::NotApplicable {
-            reason: format!(
-                "{} curvatures given for {} vertices",
-                curvature.len(),
-                mesh.n_vertices()
-            ),
-        };
+    if let Some(v) = count_mismatch(
+        curvature.len(),
+        "curvatures given",
+        mesh.n_vertices(),
+        "vertices",
+    ) {
+        return v;
     }
     let ctx = k0.ctx();
     let mut total = k0.zero_like();

@@ -7,8 +7,8 @@
 //! Hypotheses: `mesh` connected (a disconnected surface may carry one scale per component,
 //! which this check reports as a failure: that is the negative control).
 
-use super::bounds::{corner_angle_error, eps, SAFETY};
-use super::report::{check_lengths, Tally};
+use super::bounds::{corner_angle_error, SAFETY};
+use super::inputs::two_metrics;
 use super::verdict::{Settings, Verdict};
 use crate::geometry::corners::halfedge_angles;
 use crate::mesh::Mesh;
@@ -26,16 +26,15 @@ pub fn check_equal_angles_imply_scale<T: Real>(
     lt: &[T],
     settings: &Settings,
 ) -> Verdict {
-    if let Some(v) = check_lengths(mesh, l).or_else(|| check_lengths(mesh, lt)) {
-        return v;
-    }
-    let ctx = l[0].ctx();
-    let e = eps::<T>(ctx);
-    let bits = T::precision_bits(ctx);
+    let p = match two_metrics(mesh, l, lt) {
+        Ok(p) => p,
+        Err(v) => return v,
+    };
+    let e = p.eps;
     let a = halfedge_angles(mesh, l);
     let at = halfedge_angles(mesh, lt);
     let la = |x: &[T], h: crate::mesh::HalfEdge| x[h.edge().idx()].approx_f64();
-    let mut angles = Tally::new(false, bits);
+    let mut angles = p.tally();
     for h in mesh.halfedges() {
         if mesh.is_boundary_halfedge(h) {
             continue;
@@ -62,7 +61,7 @@ pub fn check_equal_angles_imply_scale<T: Real>(
     }
     let ratio: Vec<T> = l.iter().zip(lt).map(|(x, y)| y.clone() / x).collect();
     let r0 = ratio[0].approx_f64().abs();
-    let mut tally = Tally::new(false, bits);
+    let mut tally = p.tally();
     for edge in mesh.edges() {
         let d = ratio[edge.idx()].clone() - &ratio[0];
         let re = ratio[edge.idx()].approx_f64().abs();

@@ -9,11 +9,12 @@
 //! - `pub fn check_lemma1_exact(mesh: &Mesh, l: &[Rational], lt: &[Rational]) -> Verdict`
 //! - `pub fn verify_lemma1_exact(mesh: &Mesh, l: &[Rational], lt: &[Rational], corner_exp_u: &[Option<Rational>]) -> Verdict`
 
-use super::bounds::{eps, SAFETY};
-use super::report::{check_lengths, check_rational_lengths, Tally};
+use super::bounds::SAFETY;
+use super::inputs::{count_mismatch, two_metrics, two_rational_metrics};
+use super::report::Tally;
 use super::verdict::{Settings, Verdict};
 use crate::geometry::scaling::{reconstruct_scale_factors, reconstruct_scale_factors_exact};
-use crate::mesh::Mesh;
+use crate::mesh::{HalfEdge, Mesh};
 use crate::scalar::Real;
 use rug::Rational;
 
@@ -28,7 +29,7 @@ use rug::Rational;
 /// assert!(v.holds());
 /// ```
 pub fn check_lemma1<T: Real>(mesh: &Mesh, l: &[T], lt: &[T], settings: &Settings) -> Verdict {
-    if let Some(v) = check_lengths(mesh, l).or_else(|| check_lengths(mesh, lt)) {
+    if let Err(v) = two_metrics(mesh, l, lt) {
         return v;
     }
     let r = reconstruct_scale_factors(mesh, l, lt);
@@ -46,47 +47,31 @@ pub fn verify_lemma1<T: Real>(
     corner_exp_u: &[Option<T>],
     settings: &Settings,
 ) -> Verdict {
-    if let Some(v) = check_lengths(mesh, l).or_else(|| check_lengths(mesh, lt)) {
-        return v;
-    }
-    if corner_exp_u.len() != mesh.n_halfedges() {
-        return Verdict::NotApplicable {
-            reason: format!(
-                "{} corner factors for {} half-edges",
-                corner_exp_u.len(),
-                mesh.n_halfedges()
-            ),
-        };
-    }
-    let ctx = l[0].ctx();
-    let e = eps::<T>(ctx);
-    let mut tally = Tally::new(false, T::precision_bits(ctx));
-    for h in mesh.halfedges() {
-        if mesh.is_boundary_halfedge(h) {
-            continue;
-        }
-        let (Some(xa), Some(xb)) = (&corner_exp_u[h.idx()], &corner_exp_u[mesh.next(h).idx()])
-        else {
-            tally.fail(format!("{h}"), "missing corner factor", f64::NAN);
-            continue;
-        };
-        let le = &l[h.edge().idx()];
-        let lte = &lt[h.edge().idx()];
-        let lhs = xa.clone() * xb * le * le;
-        let rhs = lte.clone() * lte;
-        let d = lhs.clone() - &rhs;
-        let tol = settings.slack
-            * SAFETY
-            * e
-            * (13.0 * lhs.approx_f64().abs() + rhs.approx_f64().abs() + d.approx_f64().abs());
-        tally.within(format!("{h}"), "e^{u_a} e^{u_b} ℓ_ab² − ℓ̃_ab²", &d, tol);
-    }
-    tally.verdict()
+    let p = match two_metrics(mesh, l, lt) {
+        Ok(p) => p,
+        Err(v) => return v,
+    };
+    compare_corner_pairs(
+        mesh,
+        [l, lt],
+        corner_exp_u,
+        p.tally(),
+        |tally, h, [xa, xb, le, lte]| {
+            let lhs = xa.clone() * xb * le * le;
+            let rhs = lte.clone() * lte;
+            let d = lhs.clone() - &rhs;
+            let tol = settings.slack
+                * SAFETY
+                * p.eps
+                * (13.0 * lhs.approx_f64().abs() + rhs.approx_f64().abs() + d.approx_f64().abs());
+            tally.within(format!("{h}"), "e^{u_a} e^{u_b} ℓ_ab² − ℓ̃_ab²", &d, tol);
+        },
+    )
 }
 
 /// T15, exact in ℚ for rational lengths (certified).
 pub fn check_lemma1_exact(mesh: &Mesh, l: &[Rational], lt: &[Rational]) -> Verdict {
-    if let Some(v) = check_rational_lengths(mesh, l).or_else(|| check_rational_lengths(mesh, lt)) {
+    if let Some(v) = two_rational_metrics(mesh, l, lt) {
         return v;
     }
     let r = reconstruct_scale_factors_exact(mesh, l, lt);
@@ -100,15 +85,47 @@ pub fn verify_lemma1_exact(
     lt: &[Rational],
     corner_exp_u: &[Option<Rational>],
 ) -> Verdict {
-    if let Some(v) = check_rational_lengths(mesh, l).or_else(|| check_rational_lengths(mesh, lt)) {
+    if let Some(v) = two_rational_metrics(mesh, l, lt) {
         return v;
     }
-    if corner_exp_u.len() != mesh.n_halfedges() {
-        return Verdict::NotApplicable {
-            reason: "one corner factor per half-edge expected".to_string(),
-        };
+    let tally = Tally::new(true, 0);
+    compare_corner_pairs(
+        mesh,
+        [l, lt],
+        corner_exp_u,
+        tally,
+        |tally, h, [xa, xb, le, lte]| {
+            let lhs = Rational::from(xa * xb) * le * le;
+            let rhs = Rational::from(lte * lte);
+            if lhs != rhs {
+                let d = lhs - rhs;
+                tally.fail(format!("{h}"), "e^{u_a} e^{u_b} ℓ_ab² ≠ ℓ̃_ab²", d.to_f64());
+            }
+        },
+    )
+}
+
+/// The loop shared by [`verify_lemma1`] and [`verify_lemma1_exact`]: for every face
+/// half-edge `h = a→b`, `compare` records the comparison of edge `h.edge()` given
+/// `[x_a, x_b, ℓ_ab, ℓ̃_ab]`: the factors `x_a = corner_exp_u[h]` and
+/// `x_b = corner_exp_u[next(h)]` (the corner of `b` in the same face) and the edge's two
+/// lengths from `[l, lt]` (already validated, one per edge); a missing factor is a failure
+/// at `h`. `NotApplicable` unless there is one entry per half-edge.
+fn compare_corner_pairs<X>(
+    mesh: &Mesh,
+    [l, lt]: [&[X]; 2],
+    corner_exp_u: &[Option<X>],
+    mut tally: Tally,
+    mut compare: impl FnMut(&mut Tally, HalfEdge, [&X; 4]),
+) -> Verdict {
+    if let Some(v) = count_mismatch(
+        corner_exp_u.len(),
+        "corner factors",
+        mesh.n_halfedges(),
+        "half-edges",
+    ) {
+        return v;
     }
-    let mut tally = Tally::new(true, 0);
     for h in mesh.halfedges() {
         if mesh.is_boundary_halfedge(h) {
             continue;
@@ -118,14 +135,8 @@ pub fn verify_lemma1_exact(
             tally.fail(format!("{h}"), "missing corner factor", f64::NAN);
             continue;
         };
-        let le = &l[h.edge().idx()];
-        let lte = &lt[h.edge().idx()];
-        let lhs = Rational::from(xa * xb) * le * le;
-        let rhs = Rational::from(lte * lte);
-        if lhs != rhs {
-            let d = lhs - rhs;
-            tally.fail(format!("{h}"), "e^{u_a} e^{u_b} ℓ_ab² ≠ ℓ̃_ab²", d.to_f64());
-        }
+        let e = h.edge().idx();
+        compare(&mut tally, h, [xa, xb, &l[e], &lt[e]]);
     }
     tally.verdict()
 }

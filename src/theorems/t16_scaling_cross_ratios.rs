@@ -7,6 +7,7 @@
 //! - `pub fn verify_equal_cross_ratios_exact(mesh: &Mesh, l: &[Rational], lt: &[Rational]) -> Verdict`
 
 use super::bounds::{eps, scale_factor_rel_error, SAFETY};
+use super::inputs::{count_mismatch, two_metrics, two_rational_metrics};
 use super::report::{check_lengths, check_rational_lengths, Tally};
 use super::verdict::{Settings, Verdict};
 use crate::geometry::cross_ratio::{
@@ -36,14 +37,8 @@ pub fn check_scaling_preserves_cross_ratios<T: Real>(
     if let Some(v) = check_lengths(mesh, l) {
         return v;
     }
-    if u.len() != mesh.n_vertices() {
-        return Verdict::NotApplicable {
-            reason: format!(
-                "{} scale factors for {} vertices",
-                u.len(),
-                mesh.n_vertices()
-            ),
-        };
+    if let Some(v) = count_mismatch(u.len(), "scale factors", mesh.n_vertices(), "vertices") {
+        return v;
     }
     let e = eps::<T>(l[0].ctx());
     let lt = conformal_scaling(mesh, l, u);
@@ -69,19 +64,19 @@ pub fn verify_equal_cross_ratios<T: Real>(
     lt_rel_err: &[f64],
     settings: &Settings,
 ) -> Verdict {
-    if let Some(v) = check_lengths(mesh, l).or_else(|| check_lengths(mesh, lt)) {
-        return v;
-    }
+    let p = match two_metrics(mesh, l, lt) {
+        Ok(p) => p,
+        Err(v) => return v,
+    };
     if l_rel_err.len() != l.len() || lt_rel_err.len() != lt.len() {
         return Verdict::NotApplicable {
             reason: "one relative error per edge expected".to_string(),
         };
     }
-    let ctx = l[0].ctx();
-    let e = eps::<T>(ctx);
+    let e = p.eps;
     let c = length_cross_ratios(mesh, l);
     let ct = length_cross_ratios(mesh, lt);
-    let mut tally = Tally::new(false, T::precision_bits(ctx));
+    let mut tally = p.tally();
     for edge in mesh.edges() {
         let (Some(a), Some(b), Some(hs)) = (
             &c[edge.idx()],
@@ -112,14 +107,8 @@ pub fn check_scaling_preserves_cross_ratios_exact(
     if let Some(v) = check_rational_lengths(mesh, l) {
         return v;
     }
-    if s.len() != mesh.n_vertices() {
-        return Verdict::NotApplicable {
-            reason: format!(
-                "{} scale factors for {} vertices",
-                s.len(),
-                mesh.n_vertices()
-            ),
-        };
+    if let Some(v) = count_mismatch(s.len(), "scale factors", mesh.n_vertices(), "vertices") {
+        return v;
     }
     let lt = conformal_scaling_exact(mesh, l, s);
     verify_equal_cross_ratios_exact(mesh, l, &lt)
@@ -128,7 +117,7 @@ pub fn check_scaling_preserves_cross_ratios_exact(
 /// Exact comparison `c̃_e = c_e` in ℚ on every interior edge (witnesses `e…`). Also valid on
 /// squared lengths, where it compares squared cross ratios.
 pub fn verify_equal_cross_ratios_exact(mesh: &Mesh, l: &[Rational], lt: &[Rational]) -> Verdict {
-    if let Some(v) = check_rational_lengths(mesh, l).or_else(|| check_rational_lengths(mesh, lt)) {
+    if let Some(v) = two_rational_metrics(mesh, l, lt) {
         return v;
     }
     let mut tally = Tally::new(true, 0);

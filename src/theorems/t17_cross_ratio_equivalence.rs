@@ -7,14 +7,15 @@
 //! - `pub fn check_conformal_equivalence<T: Real>(mesh: &Mesh, l: &[T], lt: &[T], settings: &Settings) -> Verdict`
 //! - `pub fn check_conformal_equivalence_exact(mesh: &Mesh, l: &[Rational], lt: &[Rational]) -> Verdict`
 
-use super::bounds::{eps, SAFETY};
-use super::report::{check_lengths, check_rational_lengths, Tally};
+use super::bounds::SAFETY;
+use super::inputs::{two_metrics, two_rational_metrics};
+use super::report::Tally;
 use super::t15_lemma1::{verify_lemma1, verify_lemma1_exact};
 use super::verdict::{Settings, Verdict};
 use crate::geometry::scaling::{
     reconstruct_scale_factors, reconstruct_scale_factors_exact, Reconstruction,
 };
-use crate::mesh::Mesh;
+use crate::mesh::{HalfEdge, Mesh};
 use crate::scalar::Real;
 use rug::Rational;
 
@@ -32,8 +33,23 @@ fn vertex_values<T: Clone>(mesh: &Mesh, r: &Reconstruction<T>) -> Vec<Option<T>>
         .collect()
 }
 
+/// Every corner `h` with a Lemma 1 factor `x` whose vertex has a representative corner
+/// `rep ≠ h` with a factor `x_rep`, as `(h, rep, x, x_rep)`: the pairs T17 compares (the
+/// representative itself is equal to itself and skipped).
+fn corners_and_representatives<'a, T>(
+    mesh: &'a Mesh,
+    r: &'a Reconstruction<T>,
+) -> impl Iterator<Item = (HalfEdge, HalfEdge, &'a T, &'a T)> + 'a {
+    mesh.halfedges().filter_map(move |h| {
+        let x = r.corner_exp_u[h.idx()].as_ref()?;
+        let rep = r.representative[mesh.tail(h).idx()]?;
+        let xr = r.corner_exp_u[rep.idx()].as_ref()?;
+        (rep != h).then_some((h, rep, x, xr))
+    })
+}
+
 /// Element name of the corner of `h`: `v3@f2`.
-fn corner_name(mesh: &Mesh, h: crate::mesh::HalfEdge) -> String {
+fn corner_name(mesh: &Mesh, h: HalfEdge) -> String {
     match mesh.face(h) {
         Some(f) => format!("{}@{f}", mesh.tail(h)),
         None => format!("{}", mesh.tail(h)),
@@ -62,26 +78,14 @@ pub fn check_conformal_equivalence<T: Real>(
     lt: &[T],
     settings: &Settings,
 ) -> Verdict {
-    if let Some(v) = check_lengths(mesh, l).or_else(|| check_lengths(mesh, lt)) {
-        return v;
-    }
-    let ctx = l[0].ctx();
-    let e = eps::<T>(ctx);
+    let p = match two_metrics(mesh, l, lt) {
+        Ok(p) => p,
+        Err(v) => return v,
+    };
+    let e = p.eps;
     let r = reconstruct_scale_factors(mesh, l, lt);
-    let mut tally = Tally::new(false, T::precision_bits(ctx));
-    for h in mesh.halfedges() {
-        let (Some(x), Some(rep)) = (
-            &r.corner_exp_u[h.idx()],
-            r.representative[mesh.tail(h).idx()],
-        ) else {
-            continue;
-        };
-        if rep == h {
-            continue;
-        }
-        let Some(xr) = &r.corner_exp_u[rep.idx()] else {
-            continue;
-        };
+    let mut tally = p.tally();
+    for (h, rep, x, xr) in corners_and_representatives(mesh, &r) {
         let d = x.clone() - xr;
         let tol = settings.slack
             * SAFETY
@@ -103,30 +107,22 @@ pub fn check_conformal_equivalence<T: Real>(
 
 /// T17, exact in ℚ for rational lengths (certified).
 pub fn check_conformal_equivalence_exact(mesh: &Mesh, l: &[Rational], lt: &[Rational]) -> Verdict {
-    if let Some(v) = check_rational_lengths(mesh, l).or_else(|| check_rational_lengths(mesh, lt)) {
+    if let Some(v) = two_rational_metrics(mesh, l, lt) {
         return v;
     }
     let r = reconstruct_scale_factors_exact(mesh, l, lt);
     let mut tally = Tally::new(true, 0);
-    for h in mesh.halfedges() {
-        let (Some(x), Some(rep)) = (
-            &r.corner_exp_u[h.idx()],
-            r.representative[mesh.tail(h).idx()],
-        ) else {
-            continue;
-        };
-        if let Some(xr) = &r.corner_exp_u[rep.idx()] {
-            if x != xr {
-                let d = Rational::from(x - xr).to_f64();
-                tally.fail(
-                    corner_name(mesh, h),
-                    format!(
-                        "Lemma 1 factor differs from the corner {}",
-                        corner_name(mesh, rep)
-                    ),
-                    d,
-                );
-            }
+    for (h, rep, x, xr) in corners_and_representatives(mesh, &r) {
+        if x != xr {
+            let d = Rational::from(x - xr).to_f64();
+            tally.fail(
+                corner_name(mesh, h),
+                format!(
+                    "Lemma 1 factor differs from the corner {}",
+                    corner_name(mesh, rep)
+                ),
+                d,
+            );
         }
     }
     let scaled = verify_lemma1_exact(mesh, l, lt, &vertex_values(mesh, &r));

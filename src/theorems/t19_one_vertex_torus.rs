@@ -10,8 +10,9 @@
 //! disagree. On a surface with more vertices (the negative control) a non-uniform conformal
 //! scaling is equivalent but not uniform, and the check fails.
 
-use super::bounds::{eps, SAFETY};
-use super::report::{check_lengths, check_rational_lengths, Tally};
+use super::bounds::SAFETY;
+use super::inputs::{two_metrics, two_rational_metrics};
+use super::report::Tally;
 use super::t17_cross_ratio_equivalence::{
     check_conformal_equivalence, check_conformal_equivalence_exact,
 };
@@ -69,13 +70,13 @@ pub fn check_equivalent_iff_uniform_scale<T: Real>(
     lt: &[T],
     settings: &Settings,
 ) -> Verdict {
-    if let Some(v) = check_lengths(mesh, l).or_else(|| check_lengths(mesh, lt)) {
-        return v;
-    }
-    let ctx = l[0].ctx();
-    let e = eps::<T>(ctx);
+    let p = match two_metrics(mesh, l, lt) {
+        Ok(p) => p,
+        Err(v) => return v,
+    };
+    let e = p.eps;
     let r: Vec<T> = l.iter().zip(lt).map(|(a, b)| b.clone() / a).collect();
-    let mut tally = Tally::new(false, T::precision_bits(ctx));
+    let mut tally = p.tally();
     for (k, rk) in r.iter().enumerate() {
         let d = rk.clone() - &r[0];
         let tol = settings.slack
@@ -97,7 +98,7 @@ pub fn check_equivalent_iff_uniform_scale_exact(
     l: &[Rational],
     lt: &[Rational],
 ) -> Verdict {
-    if let Some(v) = check_rational_lengths(mesh, l).or_else(|| check_rational_lengths(mesh, lt)) {
+    if let Some(v) = two_rational_metrics(mesh, l, lt) {
         return v;
     }
     let r: Vec<Rational> = l
