@@ -19,6 +19,7 @@ mod mesh_core;
 mod mesh_enumeration;
 mod meshgen;
 mod oracle;
+mod planar_gen;
 mod predicates_planar;
 mod registry_extra;
 mod scalar_dd;

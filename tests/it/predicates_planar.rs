@@ -3,6 +3,7 @@
 //! num-rational, with different expansions); the filters decide most random cases; a
 //! filter with a too-small bound contradicts the exact sign (negative control).
 
+use crate::planar_gen::{adversarial_quad, adversarial_triple, pow10, pt, q, qf};
 use crate::support::cases;
 use malachite::rational::Rational as MQ;
 use num_rational::BigRational as NQ;
@@ -15,7 +16,7 @@ use penner::scalar::exact::Field;
 use penner::scalar::{Certified, Precision, Sign, Stage};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use rug::{Integer, Rational};
+use rug::Rational;
 
 fn mq(q: &Rational) -> MQ {
     MQ::from_rug(q)
@@ -109,72 +110,6 @@ fn check<P: SignPredicate>(p: &P, want: Sign, what: &dyn Fn() -> String, stages:
     stages.add(&c);
 }
 
-fn q(n: i64, d: i64) -> Rational {
-    Rational::from((n, d))
-}
-
-fn qf(x: f64) -> Rational {
-    Rational::from_f64(x).expect("finite")
-}
-
-fn pow10(e: i32) -> Rational {
-    let p = Rational::from(Integer::from(Integer::u_pow_u(10, e.unsigned_abs())));
-    if e >= 0 {
-        p
-    } else {
-        p.recip()
-    }
-}
-
-/// A random coordinate: f64 in [−1, 1], a random fraction, or a small grid value.
-fn coord(rng: &mut ChaCha8Rng, kind: u32) -> Rational {
-    match kind {
-        0 => qf(rng.gen_range(-1.0..1.0)),
-        1 => q(rng.gen_range(-1000..1000), rng.gen_range(1..1000)),
-        _ => q(rng.gen_range(-3..=3), 1 << 30),
-    }
-}
-
-fn pt(rng: &mut ChaCha8Rng, kind: u32) -> Point {
-    [coord(rng, kind), coord(rng, kind)]
-}
-
-/// Scale a point by `s` exactly.
-fn scale(p: &Point, s: &Rational) -> Point {
-    [Rational::from(&p[0] * s), Rational::from(&p[1] * s)]
-}
-
-/// Round a point's coordinates to f64 (a nearly-degenerate image of a degenerate input).
-fn round(p: &Point) -> Point {
-    [qf(p[0].to_f64()), qf(p[1].to_f64())]
-}
-
-/// Adversarial triples: collinear (exact or rounded to f64), extreme scale, tiny grid.
-fn adversarial_triple(rng: &mut ChaCha8Rng) -> [Point; 3] {
-    let a = pt(rng, 1);
-    let b = pt(rng, 1);
-    let t = q(rng.gen_range(-5..5), rng.gen_range(1..7));
-    let c = [
-        (&a[0] + (&t * Rational::from(&b[0] - &a[0]))),
-        (&a[1] + (&t * Rational::from(&b[1] - &a[1]))),
-    ];
-    let mut tri = [a, b, c];
-    match rng.gen_range(0..4) {
-        0 => {}
-        1 => tri = tri.map(|p| round(&p)),
-        2 => {
-            let s = pow10(rng.gen_range(-150..=150));
-            tri = tri.map(|p| round(&scale(&p, &s)));
-        }
-        _ => {
-            // Perturb one coordinate by a tiny amount.
-            let eps = q(rng.gen_range(-2..=2), 1) * pow10(-rng.gen_range(10..40));
-            tri[2][1] += eps;
-        }
-    }
-    tri
-}
-
 #[test]
 fn b25_orient2d_certified_sign_never_contradicts_exact_sign() {
     let mut rng = ChaCha8Rng::seed_from_u64(101);
@@ -212,34 +147,6 @@ fn b25_orient2d_certified_sign_never_contradicts_exact_sign() {
         adversarial.exact + adversarial.interval > n / 4,
         "{adversarial:?}"
     );
-}
-
-/// Four points, three on a rational circle; `d` on, near or off it.
-fn adversarial_quad(rng: &mut ChaCha8Rng) -> [Point; 4] {
-    // Rational points on the circle of centre (cx, cy) and radius r: (1−t²)/(1+t²), 2t/(1+t²).
-    let centre = pt(rng, 1);
-    let r = q(rng.gen_range(1..100), rng.gen_range(1..100));
-    let on = |t: Rational| -> Point {
-        let den = 1 + Rational::from(&t * &t);
-        let x = (1 - Rational::from(&t * &t)) / &den;
-        let y = (2 * t) / den;
-        [
-            (&centre[0] + Rational::from(&r * &x)),
-            (&centre[1] + Rational::from(&r * &y)),
-        ]
-    };
-    let mut ts = || q(rng.gen_range(-50..50), rng.gen_range(1..20));
-    let mut quad = [on(ts()), on(ts()), on(ts()), on(ts())];
-    match rng.gen_range(0..4) {
-        0 => {}
-        1 => quad = quad.map(|p| round(&p)),
-        2 => {
-            let s = pow10(rng.gen_range(-60..=60));
-            quad = quad.map(|p| round(&scale(&p, &s)));
-        }
-        _ => quad[3][0] += pow10(-rng.gen_range(10..40)),
-    }
-    quad
 }
 
 #[test]
@@ -455,77 +362,4 @@ fn b23_b24_b25_b26_filter_constants_cover_the_error_lemma() {
             "{name}: constant {have:e} is needlessly loose"
         );
     }
-}
-
-/// Timing of the certified predicates (run with `cargo test --test it predicate_timing --
-/// --ignored --nocapture`): ns per call on random inputs and on adversarial inputs,
-/// construction (rational → f64 conversion) included.
-#[test]
-#[ignore = "timing, not a check"]
-fn predicate_timing() {
-    let mut rng = ChaCha8Rng::seed_from_u64(106);
-    let n = 20_000;
-    let random: Vec<[Point; 4]> = (0..n)
-        .map(|_| std::array::from_fn(|_| pt(&mut rng, 0)))
-        .collect();
-    let adv3: Vec<[Point; 3]> = (0..n).map(|_| adversarial_triple(&mut rng)).collect();
-    let adv4: Vec<[Point; 4]> = (0..n).map(|_| adversarial_quad(&mut rng)).collect();
-    let l = Ladder::default();
-    let time = |name: &str, f: &dyn Fn() -> usize| {
-        let t = std::time::Instant::now();
-        let k = f();
-        eprintln!(
-            "{name}: {:.0} ns/call ({k} positive)",
-            t.elapsed().as_nanos() as f64 / f64::from(n)
-        );
-    };
-    let pos = |c: Certified<Sign>| usize::from(c.value() == Some(Sign::Positive));
-    time("orient2d random", &|| {
-        random
-            .iter()
-            .map(|p| pos(decide(&Orient2d::new(&p[0], &p[1], &p[2]), &l)))
-            .sum()
-    });
-    time("orient2d adversarial", &|| {
-        adv3.iter()
-            .map(|p| pos(decide(&Orient2d::new(&p[0], &p[1], &p[2]), &l)))
-            .sum()
-    });
-    time("orient2d exact only", &|| {
-        random
-            .iter()
-            .map(|p| {
-                usize::from(
-                    Orient2d::new(&p[0], &p[1], &p[2])
-                        .exact_value()
-                        .cmp0()
-                        .is_gt(),
-                )
-            })
-            .sum()
-    });
-    time("incircle random", &|| {
-        random
-            .iter()
-            .map(|p| pos(decide(&InCircle::new(&p[0], &p[1], &p[2], &p[3]), &l)))
-            .sum()
-    });
-    time("incircle adversarial", &|| {
-        adv4.iter()
-            .map(|p| pos(decide(&InCircle::new(&p[0], &p[1], &p[2], &p[3]), &l)))
-            .sum()
-    });
-    time("incircle exact only", &|| {
-        random
-            .iter()
-            .map(|p| {
-                usize::from(
-                    InCircle::new(&p[0], &p[1], &p[2], &p[3])
-                        .exact_value()
-                        .cmp0()
-                        .is_gt(),
-                )
-            })
-            .sum()
-    });
 }

@@ -28,71 +28,8 @@ pub const LN2_PARTS: [f64; 3] = [
     f64::from_bits(0x3c7abc9e3b39803f),
     f64::from_bits(0x3907b57a079a1934),
 ];
-/// 1/n! for n = 0, …, 14.
-pub const INV_FACT: [Dd; 15] = [
-    Dd {
-        hi: f64::from_bits(0x3ff0000000000000),
-        lo: f64::from_bits(0x0000000000000000),
-    },
-    Dd {
-        hi: f64::from_bits(0x3ff0000000000000),
-        lo: f64::from_bits(0x0000000000000000),
-    },
-    Dd {
-        hi: f64::from_bits(0x3fe0000000000000),
-        lo: f64::from_bits(0x0000000000000000),
-    },
-    Dd {
-        hi: f64::from_bits(0x3fc5555555555555),
-        lo: f64::from_bits(0x3c65555555555555),
-    },
-    Dd {
-        hi: f64::from_bits(0x3fa5555555555555),
-        lo: f64::from_bits(0x3c45555555555555),
-    },
-    Dd {
-        hi: f64::from_bits(0x3f81111111111111),
-        lo: f64::from_bits(0x3c01111111111111),
-    },
-    Dd {
-        hi: f64::from_bits(0x3f56c16c16c16c17),
-        lo: f64::from_bits(0xbbef49f49f49f49f),
-    },
-    Dd {
-        hi: f64::from_bits(0x3f2a01a01a01a01a),
-        lo: f64::from_bits(0x3b6a01a01a01a01a),
-    },
-    Dd {
-        hi: f64::from_bits(0x3efa01a01a01a01a),
-        lo: f64::from_bits(0x3b3a01a01a01a01a),
-    },
-    Dd {
-        hi: f64::from_bits(0x3ec71de3a556c734),
-        lo: f64::from_bits(0xbb6c154f8ddc6c00),
-    },
-    Dd {
-        hi: f64::from_bits(0x3e927e4fb7789f5c),
-        lo: f64::from_bits(0x3b3cbbc05b4fa99a),
-    },
-    Dd {
-        hi: f64::from_bits(0x3e5ae64567f544e4),
-        lo: f64::from_bits(0xbafc062e06d1f209),
-    },
-    Dd {
-        hi: f64::from_bits(0x3e21eed8eff8d898),
-        lo: f64::from_bits(0xbac2aec959e14c06),
-    },
-    Dd {
-        hi: f64::from_bits(0x3de6124613a86d09),
-        lo: f64::from_bits(0x3a8f28e0cc748ebe),
-    },
-    Dd {
-        hi: f64::from_bits(0x3da93974a8c07c9d),
-        lo: f64::from_bits(0x3a305d6f8a2efd1f),
-    },
-];
-/// 1/n! for n = 0, …, 31 (sine and cosine series).
-pub const INV_FACT_TRIG: [Dd; 32] = [
+/// 1/n! for n = 0, …, 31 (exponential, sine and cosine series).
+pub const INV_FACT: [Dd; 32] = [
     Dd {
         hi: f64::from_bits(0x3ff0000000000000),
         lo: f64::from_bits(0x0000000000000000),

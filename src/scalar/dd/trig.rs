@@ -11,7 +11,7 @@
 //! `acos(x) = atan2(√((1 − x)(1 + x)), x)`, accurate near ±1. proof: B14
 
 use super::arith::{add, add_f64, div, mul, mul_f64, sqrt, two_prod};
-use super::consts::{ATAN_TABLE, INV_FACT_TRIG, INV_ODD, PI, PI_2, PI_2_PARTS, TWO_OVER_PI};
+use super::consts::{ATAN_TABLE, INV_FACT, INV_ODD, PI, PI_2, PI_2_PARTS, TWO_OVER_PI};
 use super::reduce::reduce_payne_hanek;
 use super::Dd;
 
@@ -47,7 +47,7 @@ fn sin_series(r: Dd) -> Dd {
     let s = mul(r, r);
     let n = (SIN_DEGREE - 1) / 2;
     let coef = |i: usize| {
-        let c = INV_FACT_TRIG[2 * i + 1];
+        let c = INV_FACT[2 * i + 1];
         if i % 2 == 0 {
             c
         } else {
@@ -66,7 +66,7 @@ fn cos_series(r: Dd) -> Dd {
     let s = mul(r, r);
     let n = COS_DEGREE / 2;
     let coef = |i: usize| {
-        let c = INV_FACT_TRIG[2 * i];
+        let c = INV_FACT[2 * i];
         if i % 2 == 0 {
             c
         } else {
