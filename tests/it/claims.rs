@@ -6,7 +6,8 @@
 //! Eq. 18), the Euclidean one is 2·√(1 − (19/20)²) = √(39/100), and the cotan weight of
 //! an equilateral edge is ½(2·cot 60°) = 1/√3.
 
-use crate::cli::{certify, scratch, tetrahedron_json};
+use crate::cli::tetrahedron_json;
+use crate::support::{certify_expecting, counterexample, scratch};
 use penner::io::json::to_value;
 use penner::mesh::relabel::isomorphisms;
 use penner::mesh::Mesh;
@@ -110,45 +111,36 @@ fn b80_delaunay_flip_on_the_one_vertex_torus_compares_loops_by_gluing() {
 fn b80_certify_delaunay_flip_ptolemy_holds_and_refuted_with_exit_codes() {
     let d = scratch("claims-ptolemy");
     let result = |diag: &str| json!({"vertices": 4, "faces": [[0,1,3],[1,2,3]], "lengths": ["1", diag, "1", "1", "1"]});
-    let (code, a, _) = certify(
+    let (a, _) = certify_expecting(
         &d,
         "holds.json",
         &flip_claim("ptolemy", rhombus(), result("20/19"), None),
-    );
-    assert_eq!(
-        (code, a["verdict"].as_str()),
-        (Some(0), Some("holds")),
-        "{a}"
+        0,
+        "holds",
     );
     assert_eq!(
         (a["certified"].as_bool(), a["id"].as_str()),
         (Some(true), Some("flip"))
     );
     // Wrong length: refuted at the new diagonal, named in the result's edge order.
-    let (code, a, _) = certify(
+    let (a, _) = certify_expecting(
         &d,
         "len.json",
         &flip_claim("ptolemy", rhombus(), result("21/19"), None),
-    );
-    assert_eq!(
-        (code, a["verdict"].as_str()),
-        (Some(1), Some("refuted")),
-        "{a}"
+        1,
+        "refuted",
     );
     assert_eq!(
         a["counterexample"]["element"], "result edge 1 (v1–v3)",
         "{a}"
     );
     // Wrong triangulation (the input itself): refuted at the non-Delaunay diagonal.
-    let (code, a, _) = certify(
+    let (a, _) = certify_expecting(
         &d,
         "tri.json",
         &flip_claim("ptolemy", rhombus(), rhombus(), None),
-    );
-    assert_eq!(
-        (code, a["verdict"].as_str()),
-        (Some(1), Some("refuted")),
-        "{a}"
+        1,
+        "refuted",
     );
     assert_eq!(
         a["counterexample"]["element"], "result edge 2 (v0–v2)",
@@ -163,38 +155,29 @@ fn b80_certify_delaunay_flip_euclidean_needs_a_positive_epsilon() {
     // enclosures (undecided), a tiny ε decides it.
     let result = json!({"vertices": 4, "faces": [[0,1,3],[1,2,3]],
         "squared_lengths": ["1", "39/100", "1", "1", "1"]});
-    let (code, a, _) = certify(
+    let (a, _) = certify_expecting(
         &d,
         "e0.json",
         &flip_claim("euclidean", rhombus(), result.clone(), None),
-    );
-    assert_eq!(
-        (code, a["verdict"].as_str()),
-        (Some(2), Some("undecided")),
-        "{a}"
+        2,
+        "undecided",
     );
     assert_eq!(a["certified"], false);
-    let (code, a, _) = certify(
+    certify_expecting(
         &d,
         "e.json",
         &flip_claim("euclidean", rhombus(), result, Some("1e-40")),
-    );
-    assert_eq!(
-        (code, a["verdict"].as_str()),
-        (Some(0), Some("holds")),
-        "{a}"
+        0,
+        "holds",
     );
     // Negative control: the Ptolemy length 20/19 is not the Euclidean one (by ≈ 0.43).
     let ptolemy = json!({"vertices": 4, "faces": [[0,1,3],[1,2,3]], "lengths": ["1", "20/19", "1", "1", "1"]});
-    let (code, a, _) = certify(
+    certify_expecting(
         &d,
         "p.json",
         &flip_claim("euclidean", rhombus(), ptolemy, Some("1e-3")),
-    );
-    assert_eq!(
-        (code, a["verdict"].as_str()),
-        (Some(1), Some("refuted")),
-        "{a}"
+        1,
+        "refuted",
     );
 }
 
@@ -211,15 +194,12 @@ fn b82_certify_delaunay_flip_at_a_tie_holds_for_either_diagonal() {
         // Negative control: the other diagonal with squared length 3.
         ("wrong.json", other("3"), 1, "refuted"),
     ] {
-        let (c, a, _) = certify(
+        let (a, _) = certify_expecting(
             &d,
             name,
             &flip_claim("euclidean", square.clone(), result, None),
-        );
-        assert_eq!(
-            (c, a["verdict"].as_str()),
-            (Some(code), Some(verdict)),
-            "{name}: {a}"
+            code,
+            verdict,
         );
         assert_eq!(a["certified"], true, "{name}: {a}");
     }
@@ -230,15 +210,12 @@ fn b82_certify_delaunay_flip_at_a_tie_holds_for_either_diagonal() {
     let kite = json!({"vertices": 4, "faces": [[0,1,2],[1,0,3]], "squared_lengths": ["4","2","2","3","1"]});
     let flipped = json!({"vertices": 4, "faces": [[3,2,0],[2,3,1]],
         "squared_lengths": ["3732050807568877/1000000000000000", "2", "3", "1", "2"]});
-    let (c, a, _) = certify(
+    let (a, _) = certify_expecting(
         &d,
         "kite.json",
         &flip_claim("euclidean", kite.clone(), flipped, Some("1e-12")),
-    );
-    assert_eq!(
-        (c, a["verdict"].as_str()),
-        (Some(2), Some("undecided")),
-        "{a}"
+        2,
+        "undecided",
     );
     assert!(
         a["witnesses"][0]["detail"]
@@ -248,12 +225,13 @@ fn b82_certify_delaunay_flip_at_a_tie_holds_for_either_diagonal() {
         "{a}"
     );
     // Negative control: the kite itself holds.
-    let (c, a, _) = certify(
+    certify_expecting(
         &d,
         "kite-same.json",
         &flip_claim("euclidean", kite.clone(), kite, None),
+        0,
+        "holds",
     );
-    assert_eq!((c, a["verdict"].as_str()), (Some(0), Some("holds")), "{a}");
 }
 
 #[test]
@@ -280,12 +258,7 @@ fn certify_delaunay_flip_bad_input_exit_3() {
         ),
     ];
     for (name, c, mention) in cases {
-        let (code, a, err) = certify(&d, name, &c);
-        assert_eq!(
-            (code, a["verdict"].as_str()),
-            (Some(3), Some("bad_input")),
-            "{name}: {a}"
-        );
+        let (_, err) = certify_expecting(&d, name, &c, 3, "bad_input");
         assert!(err.contains(mention), "{name}: {err}");
     }
 }
@@ -297,43 +270,29 @@ fn certify_cotan_laplacian_holds_refuted_undecided_bad_input() {
         json!({"penner_claim": 1, "kind": "cotan_laplacian", "surface": tetrahedron_json(),
                "weights": w, "epsilon": eps})
     };
-    let (code, a, _) = certify(&d, "holds.json", &claim(vec![INV_SQRT3; 6], "1e-45"));
-    assert_eq!(
-        (code, a["verdict"].as_str()),
-        (Some(0), Some("holds")),
-        "{a}"
+    certify_expecting(
+        &d,
+        "holds.json",
+        &claim(vec![INV_SQRT3; 6], "1e-45"),
+        0,
+        "holds",
     );
     // The 50-digit decimal is ≈ 3.1e-51 from 1/√3; at 128 bits (≈ 38 digits) an ε that
     // close to the true difference cannot be settled either way.
     let mut close = claim(vec![INV_SQRT3; 6], "3.1239813976735e-51");
     close["max_bits"] = json!(128);
-    let (code, a, _) = certify(&d, "close.json", &close);
-    assert_eq!(
-        (code, a["verdict"].as_str()),
-        (Some(2), Some("undecided")),
-        "{a}"
-    );
+    certify_expecting(&d, "close.json", &close, 2, "undecided");
     // One weight off by ≈ 2.6e-3 > ε.
     let mut w = vec![INV_SQRT3; 6];
     w[4] = "0.58";
-    let (code, a, _) = certify(&d, "refuted.json", &claim(w, "1e-3"));
-    assert_eq!(
-        (code, a["verdict"].as_str()),
-        (Some(1), Some("refuted")),
-        "{a}"
-    );
-    assert!(
-        a["counterexample"]["element"]
-            .as_str()
-            .unwrap()
-            .starts_with("edge 4 "),
-        "{a}"
-    );
-    let (code, a, err) = certify(&d, "count.json", &claim(vec![INV_SQRT3; 5], "1e-3"));
-    assert_eq!(
-        (code, a["verdict"].as_str()),
-        (Some(3), Some("bad_input")),
-        "{a}"
+    let (a, _) = certify_expecting(&d, "refuted.json", &claim(w, "1e-3"), 1, "refuted");
+    assert!(counterexample(&a).starts_with("edge 4 "), "{a}");
+    let (_, err) = certify_expecting(
+        &d,
+        "count.json",
+        &claim(vec![INV_SQRT3; 5], "1e-3"),
+        3,
+        "bad_input",
     );
     assert!(err.contains("weights"), "{err}");
 }

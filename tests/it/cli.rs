@@ -2,58 +2,9 @@
 //! give one clear message naming the file (and line or element) and exit code 3 — never a
 //! panic or a backtrace.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-const BIN: &str = env!("CARGO_BIN_EXE_penner");
-
-/// A scratch directory unique to one test.
-pub(crate) fn scratch(test: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("penner-it-cli-{}-{test}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).expect("scratch dir");
-    d
-}
-
-pub(crate) fn penner(args: &[&str]) -> Output {
-    Command::new(BIN)
-        .args(args)
-        .env_remove("RUST_BACKTRACE")
-        .output()
-        .expect("run penner")
-}
-
-pub(crate) fn text(b: &[u8]) -> String {
-    String::from_utf8_lossy(b).into_owned()
-}
-
-/// Assert a clean refusal: exit code `code`, a message on stderr containing every string
-/// in `mentions`, and no sign of a panic.
-pub(crate) fn assert_refused(out: &Output, code: i32, mentions: &[&str]) {
-    let err = text(&out.stderr);
-    assert_eq!(
-        out.status.code(),
-        Some(code),
-        "exit code; stderr: {err}; stdout: {}",
-        text(&out.stdout)
-    );
-    assert!(!err.trim().is_empty(), "no message on stderr");
-    for m in mentions {
-        assert!(err.contains(m), "stderr does not mention {m:?}: {err}");
-    }
-    for bad in [
-        "panicked",
-        "RUST_BACKTRACE",
-        "internal error",
-        "stack backtrace",
-    ] {
-        assert!(!err.contains(bad), "stderr shows a panic: {err}");
-    }
-    assert!(
-        err.lines().filter(|l| !l.trim().is_empty()).count() <= 5,
-        "message should be short, got: {err}"
-    );
-}
+use crate::support::{
+    assert_refused, certify_expecting, counterexample, penner, scratch, text, write,
+};
 
 /// A tetrahedron with unit edges in the surface JSON format.
 const TETRAHEDRON: &str = r#"{
@@ -61,12 +12,6 @@ const TETRAHEDRON: &str = r#"{
   "faces": [[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]],
   "lengths": ["1", "1", "1", "1", "1", "1"]
 }"#;
-
-pub(crate) fn write(dir: &Path, name: &str, contents: &[u8]) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, contents).expect("write input");
-    p
-}
 
 #[test]
 fn report_on_the_built_in_corpus_runs_and_holds() {
@@ -207,24 +152,6 @@ fn hostile_json_is_refused_cleanly() {
     }
 }
 
-/// Run `penner certify` on a claim; return the exit code and the parsed answer.
-pub(crate) fn certify(
-    dir: &Path,
-    name: &str,
-    claim: &serde_json::Value,
-) -> (Option<i32>, serde_json::Value, String) {
-    let p = write(dir, name, claim.to_string().as_bytes());
-    let out = penner(&["certify", &p.display().to_string()]);
-    let answer = serde_json::from_slice(&out.stdout).unwrap_or_else(|e| {
-        panic!(
-            "answer is not JSON ({e}): {}\nstderr: {}",
-            text(&out.stdout),
-            text(&out.stderr)
-        )
-    });
-    (out.status.code(), answer, text(&out.stderr))
-}
-
 pub(crate) fn tetrahedron_json() -> serde_json::Value {
     serde_json::from_str(TETRAHEDRON).unwrap()
 }
@@ -240,30 +167,34 @@ fn certify_cone_angles_holds_refuted_and_bad_input() {
         serde_json::json!({"penner_claim": 1, "id": "t", "kind": "cone_angles",
             "surface": tetrahedron_json(), "angles": angles, "epsilon": eps})
     };
-    let (code, a, _) = certify(
+    let (a, _) = certify_expecting(
         &d,
         "holds.json",
         &claim(serde_json::json!([pi, pi, pi, pi]), "1e-40"),
+        0,
+        "holds",
     );
-    assert_eq!(code, Some(0), "{a}");
-    assert_eq!(a["verdict"], "holds");
     assert_eq!(a["certified"], true);
     assert_eq!(a["id"], "t");
     // Off by 1e-47 at vertex 3, epsilon 1e-48: refuted, counterexample v3, needs > 128 bits.
     let off = "3.14159265358979323846264338327950288419716939938510";
-    let (code, a, _) = certify(
+    let (a, _) = certify_expecting(
         &d,
         "refuted.json",
         &claim(serde_json::json!([pi, pi, pi, off]), "1e-48"),
+        1,
+        "refuted",
     );
-    assert_eq!(code, Some(1), "{a}");
-    assert_eq!(a["verdict"], "refuted");
     assert_eq!(a["counterexample"]["element"], "v3");
     assert!(a["precision_bits"].as_u64().unwrap() > 128, "{a}");
     // Wrong count of angles: bad input, with a JSON answer and a message naming the field.
-    let (code, a, err) = certify(&d, "count.json", &claim(serde_json::json!([pi]), "1e-9"));
-    assert_eq!(code, Some(3));
-    assert_eq!(a["verdict"], "bad_input");
+    let (_, err) = certify_expecting(
+        &d,
+        "count.json",
+        &claim(serde_json::json!([pi]), "1e-9"),
+        3,
+        "bad_input",
+    );
     assert!(
         err.contains("angles") && err.contains("count.json"),
         "{err}"
@@ -281,33 +212,20 @@ fn certify_conformal_equivalence_holds_refuted_and_undecided_at_a_tie() {
             "surface": tet, "target": target, "u": u, "epsilon": eps})
     };
     let u = serde_json::json!([TWO_LN_2, TWO_LN_2, TWO_LN_2, TWO_LN_2]);
-    let (code, a, _) = certify(&d, "holds.json", &claim(&four, u, "1e-45"));
-    assert_eq!(
-        (code, a["verdict"].as_str()),
-        (Some(0), Some("holds")),
-        "{a}"
-    );
+    certify_expecting(&d, "holds.json", &claim(&four, u, "1e-45"), 0, "holds");
     // Negative control: u_2 off by 1e-6; the edges at vertex 2 are refuted.
     let u = serde_json::json!([TWO_LN_2, TWO_LN_2, "1.386295", TWO_LN_2]);
-    let (code, a, _) = certify(&d, "refuted.json", &claim(&four, u, "1e-9"));
-    assert_eq!(
-        (code, a["verdict"].as_str()),
-        (Some(1), Some("refuted")),
-        "{a}"
-    );
+    let (a, _) = certify_expecting(&d, "refuted.json", &claim(&four, u, "1e-9"), 1, "refuted");
     let el = a["counterexample"]["element"].as_str().unwrap();
     assert!(el.contains("v2"), "{el}");
     assert_eq!(a["witnesses"].as_array().unwrap().len(), 3, "{a}");
     // An exact tie (residual exactly 0 = epsilon) cannot be settled by enclosures.
-    let (code, a, _) = certify(
+    let (a, _) = certify_expecting(
         &d,
         "tie.json",
         &claim(&tet, serde_json::json!([0, 0, 0, 0]), "0"),
-    );
-    assert_eq!(
-        (code, a["verdict"].as_str()),
-        (Some(2), Some("undecided")),
-        "{a}"
+        2,
+        "undecided",
     );
     assert_eq!(a["certified"], false);
 }
@@ -350,9 +268,7 @@ fn certify_refuses_hostile_claims() {
         ),
     ];
     for (name, claim, mention) in cases {
-        let (code, a, err) = certify(&d, name, &claim);
-        assert_eq!(code, Some(3), "{name}: {a}");
-        assert_eq!(a["verdict"], "bad_input");
+        let (_, err) = certify_expecting(&d, name, &claim, 3, "bad_input");
         assert!(err.contains(mention) && err.contains(name), "{name}: {err}");
         assert!(!err.contains("panicked"), "{err}");
     }
@@ -539,26 +455,17 @@ fn certify_intrinsic_delaunay_exactly() {
             "surface": {"vertices": 4, "faces": [[0,1,2],[0,2,3]], "lengths": l}})
     };
     // Unit rhombus with diagonal 1.9 (obtuse opposite angles): refuted at the diagonal.
-    let (code, a, _) = certify(&d, "thin.json", &claim(["1", "1", "19/10", "1", "1"]));
-    assert_eq!(
-        (code, a["verdict"].as_str()),
-        (Some(1), Some("refuted")),
-        "{a}"
+    let (a, _) = certify_expecting(
+        &d,
+        "thin.json",
+        &claim(["1", "1", "19/10", "1", "1"]),
+        1,
+        "refuted",
     );
-    assert!(
-        a["counterexample"]["element"]
-            .as_str()
-            .unwrap()
-            .starts_with("edge 2"),
-        "{a}"
-    );
+    assert!(counterexample(&a).starts_with("edge 2"), "{a}");
     // The unit square with diagonal √2 given as squared lengths: an exact tie, Delaunay.
     let square = serde_json::json!({"penner_claim": 1, "kind": "intrinsic_delaunay",
         "surface": {"vertices": 4, "faces": [[0,1,2],[0,2,3]], "squared_lengths": ["1","1","2","1","1"]}});
-    let (code, a, _) = certify(&d, "square.json", &square);
-    assert_eq!(
-        (code, a["verdict"].as_str(), a["certified"].as_bool()),
-        (Some(0), Some("holds"), Some(true)),
-        "{a}"
-    );
+    let (a, _) = certify_expecting(&d, "square.json", &square, 0, "holds");
+    assert_eq!(a["certified"].as_bool(), Some(true), "{a}");
 }

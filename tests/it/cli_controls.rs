@@ -2,7 +2,7 @@
 //! failure file is written for each (never over an existing file), and `penner replay`
 //! reproduces each failure.
 
-use crate::cli::{penner, scratch, text, write};
+use crate::support::{penner, scratch, text, write};
 use std::fmt::Write as _;
 use std::path::Path;
 

@@ -8,10 +8,10 @@ use penner::algorithms::naive::naive_p;
 use penner::mesh::{Edge, Mesh};
 use penner::predicates::delaunay::{
     delaunay_sign_squared, edge_delaunay_sign_scaled, enclose_p, filter_f64, EdgeDelaunay, Quad,
-    RationalQuad, RealQuad,
+    QuadEdges, RationalQuad, RealQuad,
 };
 use penner::predicates::directed::enclose_f64;
-use penner::predicates::ladder::{decide, Ladder};
+use penner::predicates::ladder::{decide, Ladder, SignPredicate};
 use penner::scalar::{Certified, Dd, Mpfr, Precision, Real, Sign, Stage};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -38,8 +38,7 @@ pub fn oracle(q: [&MRational; 5]) -> Sign {
 }
 
 pub fn oracle_f64(q: [f64; 5]) -> Sign {
-    let m = q.map(|x| MRational::try_from(x).unwrap());
-    oracle([&m[0], &m[1], &m[2], &m[3], &m[4]])
+    oracle_of(&q.map(|x| MRational::try_from(x).unwrap()))
 }
 
 fn quad(q: [f64; 5]) -> Quad<f64> {
@@ -50,6 +49,49 @@ fn quad(q: [f64; 5]) -> Quad<f64> {
         il: q[3],
         lj: q[4],
     }
+}
+
+/// The five lengths `[ij, jk, ki, il, lj]` of `s` (at least five) as a quadrilateral.
+fn quad_of<T>(s: &[T]) -> Quad<&T> {
+    Quad {
+        ij: &s[0],
+        jk: &s[1],
+        ki: &s[2],
+        il: &s[3],
+        lj: &s[4],
+    }
+}
+
+/// The exact values of point-valued lengths, in malachite.
+pub fn exact_values<T: Real>(xs: &[T]) -> Vec<MRational> {
+    xs.iter().map(|x| to_m(&x.to_rational().unwrap())).collect()
+}
+
+/// Interior edges the malachite oracle finds not Delaunay (D < 0): an independent
+/// re-check of a flip result.
+pub fn oracle_non_delaunay(mesh: &Mesh, lengths: &[MRational]) -> Vec<Edge> {
+    mesh.edges()
+        .filter(|&e| {
+            QuadEdges::of(mesh, e)
+                .is_some_and(|q| oracle(q.lengths(lengths).to_array()) == Sign::Negative)
+        })
+        .collect()
+}
+
+/// [`oracle`] on five malachite lengths `[ij, jk, ki, il, lj]`.
+fn oracle_of(m: &[MRational]) -> Sign {
+    oracle([&m[0], &m[1], &m[2], &m[3], &m[4]])
+}
+
+/// The sign the default ladder certifies for `p` (`None` if undecided).
+fn ladder_sign<P: SignPredicate>(p: &P) -> Option<Sign> {
+    decide(p, &Ladder::default()).value()
+}
+
+/// The default ladder on f64 lengths `[ij, jk, ki, il, lj]`.
+fn ladder_f64(q: [f64; 5]) -> Certified<Sign> {
+    let qq = quad(q);
+    decide(&RealQuad(qq.as_refs()), &Ladder::default())
 }
 
 fn dist(p: [f64; 2], q: [f64; 2]) -> f64 {
@@ -114,9 +156,7 @@ fn b61_filter_never_contradicts_exact_oracle() {
             decided += 1;
             assert_eq!(s, exact, "filter contradicts exact arithmetic on {q:?}");
         }
-        let qq = quad(q);
-        let c = decide(&RealQuad(qq.as_refs()), &Ladder::default());
-        assert_eq!(c.value(), Some(exact), "ladder on {q:?}");
+        assert_eq!(ladder_f64(q).value(), Some(exact), "ladder on {q:?}");
     }
     // The filter decides most inputs (else it would be useless), not all (near ties).
     assert!(
@@ -151,9 +191,7 @@ fn b61_negative_control_naive_f64_sign_contradicts_exact() {
     );
     // ... while the certified predicate agrees on every one of them.
     for (q, _, exact) in &wrong {
-        let qq = quad(*q);
-        let r = RealQuad(qq.as_refs());
-        assert_eq!(decide(&r, &Ladder::default()).value(), Some(*exact));
+        assert_eq!(ladder_f64(*q).value(), Some(*exact));
     }
 }
 
@@ -203,6 +241,20 @@ fn orient(a: [i64; 2], b: [i64; 2], c: [i64; 2]) -> i64 {
     (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
 }
 
+/// Four random lattice points `i, j, k, l` in `[−range, range]²`, kept (`Some`) when they
+/// form a quadrilateral with `ijk` counter-clockwise and `l` on the other side of `ij`.
+fn lattice_quad(rng: &mut ChaCha8Rng, range: i64) -> Option<[[i64; 2]; 4]> {
+    let p: [[i64; 2]; 4] =
+        std::array::from_fn(|_| [rng.gen_range(-range..=range), rng.gen_range(-range..=range)]);
+    let [i, j, k, l] = p;
+    (orient(i, j, k) > 0 && orient(i, j, l) < 0).then_some(p)
+}
+
+/// Squared distance of two lattice points.
+fn sq(a: [i64; 2], b: [i64; 2]) -> Rational {
+    Rational::from((a[0] - b[0]).pow(2) + (a[1] - b[1]).pow(2))
+}
+
 #[test]
 fn b63_squared_length_sign_matches_integer_incircle() {
     let mut rng = ChaCha8Rng::seed_from_u64(64);
@@ -210,23 +262,13 @@ fn b63_squared_length_sign_matches_integer_incircle() {
     let target = cases(3_000, 100_000);
     while n < target {
         let range = if n % 3 == 0 { 3 } else { 1000 };
-        let p: [[i64; 2]; 4] =
-            std::array::from_fn(|_| [rng.gen_range(-range..=range), rng.gen_range(-range..=range)]);
-        let [i, j, k, l] = p;
-        if orient(i, j, k) <= 0 || orient(i, j, l) >= 0 {
+        let Some(p) = lattice_quad(&mut rng, range) else {
             continue;
-        }
+        };
+        let [i, j, k, l] = p;
         n += 1;
-        let sq =
-            |a: [i64; 2], b: [i64; 2]| Rational::from((a[0] - b[0]).pow(2) + (a[1] - b[1]).pow(2));
         let s = [sq(i, j), sq(j, k), sq(k, i), sq(i, l), sq(l, j)];
-        let got = delaunay_sign_squared(Quad {
-            ij: &s[0],
-            jk: &s[1],
-            ki: &s[2],
-            il: &s[3],
-            lj: &s[4],
-        });
+        let got = delaunay_sign_squared(quad_of(&s));
         let expected = Sign::of_ordering(0.cmp(&incircle(i, j, k, l)));
         assert_eq!(got, expected, "{p:?}");
         zeros += usize::from(got == Sign::Zero);
@@ -241,22 +283,11 @@ fn b63_negative_control_squared_sign_of_wrong_quad_differs() {
     let mut rng = ChaCha8Rng::seed_from_u64(65);
     let mut disagreements = 0;
     for _ in 0..500 {
-        let p: [[i64; 2]; 4] =
-            std::array::from_fn(|_| [rng.gen_range(-50..=50), rng.gen_range(-50..=50)]);
-        let [i, j, k, l] = p;
-        if orient(i, j, k) <= 0 || orient(i, j, l) >= 0 {
+        let Some([i, j, k, l]) = lattice_quad(&mut rng, 50) else {
             continue;
-        }
-        let sq =
-            |a: [i64; 2], b: [i64; 2]| Rational::from((a[0] - b[0]).pow(2) + (a[1] - b[1]).pow(2));
+        };
         let s = [sq(i, j), sq(l, j), sq(k, i), sq(i, l), sq(j, k)];
-        let got = delaunay_sign_squared(Quad {
-            ij: &s[0],
-            jk: &s[1],
-            ki: &s[2],
-            il: &s[3],
-            lj: &s[4],
-        });
+        let got = delaunay_sign_squared(quad_of(&s));
         disagreements += usize::from(got != Sign::of_ordering(0.cmp(&incircle(i, j, k, l))));
     }
     assert!(disagreements > 0);
@@ -273,15 +304,8 @@ fn perturbations_1e15_to_1e40_decided_correctly_at_mpfr_and_exact() {
             let diag = Rational::from(5) * (Rational::from(1) + &eps);
             // Exact rung on rationals.
             let l = [diag.clone(), 4.into(), 3.into(), 4.into(), 3.into()];
-            let r = RationalQuad(Quad {
-                ij: &l[0],
-                jk: &l[1],
-                ki: &l[2],
-                il: &l[3],
-                lj: &l[4],
-            });
-            let ml = l.each_ref().map(to_m);
-            let expected = oracle([&ml[0], &ml[1], &ml[2], &ml[3], &ml[4]]);
+            let r = RationalQuad(quad_of(&l));
+            let expected = oracle_of(&l.each_ref().map(to_m));
             assert_eq!(
                 expected,
                 if sign > 0 {
@@ -290,45 +314,18 @@ fn perturbations_1e15_to_1e40_decided_correctly_at_mpfr_and_exact() {
                     Sign::Positive
                 }
             );
-            assert_eq!(
-                decide(&r, &Ladder::default()).value(),
-                Some(expected),
-                "k={k}"
-            );
+            assert_eq!(ladder_sign(&r), Some(expected), "k={k}");
             // MPFR lengths at 256 bits (the rounded diagonal still carries the perturbation).
             let m: Vec<Mpfr> = l.iter().map(|x| Mpfr::from_rational(x, p)).collect();
-            let rq = RealQuad(Quad {
-                ij: &m[0],
-                jk: &m[1],
-                ki: &m[2],
-                il: &m[3],
-                lj: &m[4],
-            });
-            let exact_of_rounded = {
-                let q = m
-                    .iter()
-                    .map(|x| to_m(&x.to_rational().unwrap()))
-                    .collect::<Vec<_>>();
-                oracle([&q[0], &q[1], &q[2], &q[3], &q[4]])
-            };
+            let rq = RealQuad(quad_of(&m));
+            let exact_of_rounded = oracle_of(&exact_values(&m));
             assert_eq!(exact_of_rounded, expected);
-            assert_eq!(
-                decide(&rq, &Ladder::default()).value(),
-                Some(expected),
-                "k={k}"
-            );
+            assert_eq!(ladder_sign(&rq), Some(expected), "k={k}");
         }
     }
     // Unperturbed: exactly zero, decided (a point enclosure or the exact rung).
     let l: [Rational; 5] = [5.into(), 4.into(), 3.into(), 4.into(), 3.into()];
-    let r = RationalQuad(Quad {
-        ij: &l[0],
-        jk: &l[1],
-        ki: &l[2],
-        il: &l[3],
-        lj: &l[4],
-    });
-    assert_eq!(decide(&r, &Ladder::default()).value(), Some(Sign::Zero));
+    assert_eq!(ladder_sign(&RationalQuad(quad_of(&l))), Some(Sign::Zero));
 }
 
 #[test]
@@ -340,28 +337,22 @@ fn dd_lengths_decided_like_exact_oracle() {
         let d: Vec<Dd> = (0..5)
             .map(|k| <Dd as Real>::from_f64(q[k], ()) + <Dd as Real>::from_f64(tiny[k] * q[k], ()))
             .collect();
-        let r: Vec<MRational> = d.iter().map(|x| to_m(&x.to_rational().unwrap())).collect();
-        let expected = oracle([&r[0], &r[1], &r[2], &r[3], &r[4]]);
-        let rq = RealQuad(Quad {
-            ij: &d[0],
-            jk: &d[1],
-            ki: &d[2],
-            il: &d[3],
-            lj: &d[4],
-        });
-        assert_eq!(decide(&rq, &Ladder::default()).value(), Some(expected));
+        let expected = oracle_of(&exact_values(&d));
+        assert_eq!(ladder_sign(&RealQuad(quad_of(&d))), Some(expected));
     }
 }
 
-fn two_triangles() -> Mesh {
-    Mesh::from_faces(4, &[[0, 1, 2], [0, 2, 3]]).unwrap()
+/// The square 0-1-2-3 cut along the diagonal 0-2, and that (only interior) edge.
+fn two_triangles() -> (Mesh, Edge) {
+    let m = Mesh::from_faces(4, &[[0, 1, 2], [0, 2, 3]]).unwrap();
+    let diag = m.edges().find(|&e| !m.is_boundary_edge(e)).unwrap();
+    (m, diag)
 }
 
 #[test]
 fn scale_factors_up_to_800_do_not_overflow() {
     // Square 0-1-2-3 with diagonal 0-2: unit sides, diagonal √2 as f64.
-    let m = two_triangles();
-    let diag = m.edges().find(|&e| !m.is_boundary_edge(e)).unwrap();
+    let (m, diag) = two_triangles();
     let l: Vec<f64> = m
         .edges()
         .map(|e| if e == diag { 2f64.sqrt() } else { 1.0 })
@@ -381,7 +372,7 @@ fn scale_factors_up_to_800_do_not_overflow() {
             let half = Mpfr::from_f64(u[a], prec) + &Mpfr::from_f64(u[b], prec);
             (half / &Mpfr::from_f64(2.0, prec)).exp() * &Mpfr::from_f64(l[e.idx()], prec)
         };
-        let q = penner::predicates::delaunay::QuadEdges::of(&m, diag).unwrap();
+        let q = QuadEdges::of(&m, diag).unwrap();
         let [ij, jk, ki, il, lj] = q.edges.to_array().map(len);
         let kl = (ki.clone() * &lj + &(il.clone() * &jk)) / &ij;
         let d = kl * &(il.clone() * &ki + &(jk.clone() * &lj)) - &(ij * &(jk * &ki + &(il * &lj)));
@@ -401,7 +392,7 @@ fn scale_factors_up_to_800_do_not_overflow() {
     // Uniform u: scaling does not change the sign; the exact rung decides on base lengths.
     let u = vec![800.0; 4];
     let s = edge_delaunay_sign_scaled(&m, &l, &u, diag, &Ladder::default()).unwrap();
-    let q = penner::predicates::delaunay::QuadEdges::of(&m, diag).unwrap();
+    let q = QuadEdges::of(&m, diag).unwrap();
     let base = q.edges.to_array().map(|e| l[e.idx()]);
     assert_eq!(s.is_delaunay(), Some(oracle_f64(base) != Sign::Negative));
 }
@@ -413,17 +404,12 @@ fn lengths_from_1e_minus_150_to_1e150_keep_their_sign() {
         let q = adversarial_quad(&mut rng, i as u32 % 2);
         for k in (-150..=150).step_by(25) {
             let s = 2f64.powi(k * 10 / 3); // exact power of two: the sign is unchanged
-            let qs = q.map(|x| x * s);
-            let qq = quad(qs);
-            let r = RealQuad(qq.as_refs());
-            let c = decide(&r, &Ladder::default());
+            let c = ladder_f64(q.map(|x| x * s));
             assert_eq!(c.value(), Some(oracle_f64(q)), "scale 2^{}", k * 10 / 3);
         }
         // Decimal scales round the lengths; compare with the oracle of the rounded values.
         let qs = q.map(|x| x * 1e150);
-        let qq = quad(qs);
-        let r = RealQuad(qq.as_refs());
-        assert_eq!(decide(&r, &Ladder::default()).value(), Some(oracle_f64(qs)));
+        assert_eq!(ladder_f64(qs).value(), Some(oracle_f64(qs)));
     }
 }
 
@@ -437,10 +423,8 @@ fn filter_rescales_extreme_quads() {
     // Spanning more than 2^200 inside one quad: the filter declines, the ladder decides.
     let q = [1.0, 1.0, 1e-70, 1.0, 1.0];
     assert_eq!(filter_f64(q), None);
-    let qq = quad(q);
-    let r = RealQuad(qq.as_refs());
     assert_eq!(
-        decide(&r, &Ladder::default()),
+        ladder_f64(q),
         Certified::Known {
             value: oracle_f64(q),
             stage: Stage::Interval { bits: 128 }
@@ -450,8 +434,7 @@ fn filter_rescales_extreme_quads() {
 
 #[test]
 fn bad_lengths_are_typed_errors() {
-    let m = two_triangles();
-    let diag = m.edges().find(|&e| !m.is_boundary_edge(e)).unwrap();
+    let (m, diag) = two_triangles();
     for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
         let l: Vec<f64> = m
             .edges()

@@ -1,7 +1,7 @@
 //! Flips and flipping to Delaunay (T21–T23, T27–T29) at f64, Dd, MPFR and exact, each
 //! with a negative control; results re-checked with the malachite oracle.
 
-use crate::delaunay::{oracle, to_m};
+use crate::delaunay::{exact_values, oracle_non_delaunay, to_m};
 use crate::meshgen::{icosphere, planar_grid, random_tetrahedron, sheared_torus, Embedded};
 use crate::support::cases;
 use malachite::rational::Rational as MRational;
@@ -66,18 +66,6 @@ fn surfaces(seed: u64) -> Vec<(String, Mesh, Vec<f64>)> {
     out
 }
 
-/// Independent re-check: no edge with a negative D-form in malachite.
-fn oracle_non_delaunay(mesh: &Mesh, lengths: &[MRational]) -> Vec<Edge> {
-    mesh.edges()
-        .filter(|&e| {
-            QuadEdges::of(mesh, e).is_some_and(|q| {
-                let x = q.lengths(lengths);
-                oracle([x.ij, x.jk, x.ki, x.il, x.lj]) == Sign::Negative
-            })
-        })
-        .collect()
-}
-
 fn settings() -> Settings {
     Settings::default()
 }
@@ -130,18 +118,17 @@ fn t21_flipping_at_dd_and_mpfr() {
             let (mut m2, mut l2) = (m.clone(), dd.clone());
             let r = flip_to_delaunay(&mut m2, &mut l2, kind, &FlipOptions::default()).unwrap();
             assert!(r.all_certified_delaunay(), "{name} dd {kind:?} {r:?}");
-            let ex: Vec<MRational> = l2.iter().map(|x| to_m(&x.to_rational().unwrap())).collect();
+            let ex = exact_values(&l2);
             assert_eq!(oracle_non_delaunay(&m2, &ex), vec![]);
             let (mut m3, mut l3) = (m.clone(), mp.clone());
             let r = flip_to_delaunay(&mut m3, &mut l3, kind, &FlipOptions::default()).unwrap();
             assert!(r.all_certified_delaunay(), "{name} mpfr {kind:?} {r:?}");
-            let ex: Vec<MRational> = l3.iter().map(|x| to_m(&x.to_rational().unwrap())).collect();
+            let ex = exact_values(&l3);
             assert_eq!(oracle_non_delaunay(&m3, &ex), vec![]);
             // Negative control: the unflipped MPFR lengths are not Delaunay for the oracle
             // on the grid, sphere and torus.
             if name != "tetrahedron" && name != "one-vertex torus" {
-                let ex: Vec<MRational> =
-                    mp.iter().map(|x| to_m(&x.to_rational().unwrap())).collect();
+                let ex = exact_values(&mp);
                 assert!(!oracle_non_delaunay(&m, &ex).is_empty(), "{name}");
             }
         }
@@ -482,7 +469,7 @@ fn adversarial_fans_grids_and_slivers_terminate_certified() {
             let (mut m2, mut l2) = (m.clone(), l.clone());
             let r = flip_to_delaunay(&mut m2, &mut l2, kind, &FlipOptions::default()).unwrap();
             assert!(r.all_certified_delaunay(), "{n}-gon {kind:?}: {r:?}");
-            let ex: Vec<MRational> = l2.iter().map(|x| to_m(&x.to_rational().unwrap())).collect();
+            let ex = exact_values(&l2);
             assert_eq!(oracle_non_delaunay(&m2, &ex), vec![]);
         }
     }
@@ -520,7 +507,7 @@ fn adversarial_fans_grids_and_slivers_terminate_certified() {
             let (mut m3, mut l3) = (m.clone(), mp);
             let r = flip_to_delaunay(&mut m3, &mut l3, kind, &FlipOptions::default()).unwrap();
             assert!(!r.hit_cap && r.undecided.is_empty());
-            let ex: Vec<MRational> = l3.iter().map(|x| to_m(&x.to_rational().unwrap())).collect();
+            let ex = exact_values(&l3);
             assert_eq!(
                 oracle_non_delaunay(&m3, &ex),
                 r.refused,

@@ -3,7 +3,7 @@
 //! result is re-checked edge by edge with the malachite D-form oracle; the negative
 //! controls run the same oracle and the T21 check on the unflipped inputs.
 
-use crate::delaunay::{oracle, to_m};
+use crate::delaunay::{exact_values, oracle_non_delaunay};
 use crate::support::cases;
 use malachite::rational::Rational as MRational;
 use penner::algorithms::flip_to_delaunay::{
@@ -90,22 +90,6 @@ fn case(i: u64) -> Case {
     }
 }
 
-/// Interior edges the malachite oracle finds not Delaunay (D < 0).
-fn oracle_non_delaunay(mesh: &Mesh, lengths: &[MRational]) -> Vec<Edge> {
-    mesh.edges()
-        .filter(|&e| {
-            QuadEdges::of(mesh, e).is_some_and(|q| {
-                let x = q.lengths(lengths);
-                oracle([x.ij, x.jk, x.ki, x.il, x.lj]) == Sign::Negative
-            })
-        })
-        .collect()
-}
-
-fn oracle_of<T: Real>(l: &[T]) -> Vec<MRational> {
-    l.iter().map(|x| to_m(&x.to_rational().unwrap())).collect()
-}
-
 /// Flip at backend `T`, then assert: terminated, every edge certified, the oracle agrees,
 /// χ and the boundary are unchanged. Returns the flip count.
 fn flip_and_check<T: Real>(c: &Case, l: &[T], kind: FlipKind, what: &str) -> usize {
@@ -117,7 +101,7 @@ fn flip_and_check<T: Real>(c: &Case, l: &[T], kind: FlipKind, what: &str) -> usi
         c.name
     );
     assert_eq!(
-        oracle_non_delaunay(&m, &oracle_of(&l)),
+        oracle_non_delaunay(&m, &exact_values(&l)),
         vec![],
         "{} {what} {kind:?}",
         c.name
@@ -165,7 +149,7 @@ fn t21_genus_0_to_3_with_and_without_boundary_all_backends() {
         assert_eq!(oracle_non_delaunay(&m, &ex), vec![], "{} exact", c.name);
         // Negative control: the same oracle and the T21 check reject the unflipped input
         // whenever it is not Delaunay, naming every failing edge.
-        let before = oracle_non_delaunay(&c.mesh, &oracle_of(&f));
+        let before = oracle_non_delaunay(&c.mesh, &exact_values(&f));
         let v = check_all_edges_delaunay(&c.mesh, &f, &settings(), false, 0);
         if before.is_empty() {
             assert!(v.holds(), "{}", c.name);
@@ -240,7 +224,11 @@ fn b65_nudged_flips_are_certified_for_the_stored_lengths() {
         .unwrap();
         assert!(r.all_certified_delaunay(), "{l:?}: {r:?}");
         // The oracle agrees on the stored lengths, whatever happened.
-        assert_eq!(oracle_non_delaunay(&m2, &oracle_of(&l2)), vec![], "{l:?}");
+        assert_eq!(
+            oracle_non_delaunay(&m2, &exact_values(&l2)),
+            vec![],
+            "{l:?}"
+        );
         if r.flips == 0 {
             continue;
         }
@@ -266,7 +254,7 @@ fn b65_nudged_flips_are_certified_for_the_stored_lengths() {
         let mut bare = l2.clone();
         bare[diag.idx()] = rounded;
         assert_eq!(
-            oracle_non_delaunay(&m2, &oracle_of(&bare)),
+            oracle_non_delaunay(&m2, &exact_values(&bare)),
             vec![diag],
             "{l:?}"
         );
