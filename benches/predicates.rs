@@ -68,7 +68,7 @@ fn bench_rungs<const N: usize, P: SignPredicate>(
         .warm_up_time(Duration::from_millis(500))
         .measurement_time(Duration::from_secs(2));
     g.bench_function(BenchmarkId::new("filter", input), |b| {
-        b.iter(|| preds.iter().filter_map(|p| p.filter()).count())
+        b.iter(|| preds.iter().filter_map(SignPredicate::filter).count());
     });
     for bits in BITS {
         let prec = Precision::new(bits).expect("valid precision");
@@ -78,11 +78,11 @@ fn bench_rungs<const N: usize, P: SignPredicate>(
                     .iter()
                     .filter_map(|p| p.enclosure_sign(black_box(prec)))
                     .count()
-            })
+            });
         });
     }
     g.bench_function(BenchmarkId::new("exact", input), |b| {
-        b.iter(|| preds.iter().filter_map(|p| p.exact_sign()).count())
+        b.iter(|| preds.iter().filter_map(SignPredicate::exact_sign).count());
     });
     let ladder = Ladder::default();
     g.bench_function(BenchmarkId::new("ladder", input), |b| {
@@ -91,7 +91,7 @@ fn bench_rungs<const N: usize, P: SignPredicate>(
                 .iter()
                 .filter(|p| decide(&build(black_box(p)), &ladder).value().is_some())
                 .count()
-        })
+        });
     });
     g.finish();
 }

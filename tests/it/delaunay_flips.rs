@@ -12,7 +12,7 @@ use penner::algorithms::flips::{
     euclidean_length, flip_euclidean, flip_ptolemy, flip_ptolemy_exact,
 };
 use penner::algorithms::naive::flip_to_delaunay_naive;
-use penner::mesh::{Edge, FlipError, Mesh};
+use penner::mesh::{FlipError, Mesh};
 use penner::predicates::delaunay::{edge_delaunay_sign, EdgeDelaunay, QuadEdges};
 use penner::predicates::ladder::Ladder;
 use penner::scalar::{Dd, Mpfr, Precision, Real, Sign};

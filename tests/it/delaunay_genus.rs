@@ -3,15 +3,15 @@
 //! result is re-checked edge by edge with the malachite D-form oracle; the negative
 //! controls run the same oracle and the T21 check on the unflipped inputs.
 
-use crate::delaunay::{exact_values, oracle_non_delaunay};
+use crate::delaunay::{exact_values, oracle_non_delaunay, to_m};
 use crate::support::cases;
 use malachite::rational::Rational as MRational;
 use penner::algorithms::flip_to_delaunay::{
     flip_to_delaunay, flip_to_delaunay_exact, ExactLengths, FlipKind, FlipOptions, FlipReport,
 };
-use penner::mesh::{builders, Edge, Face, Mesh};
+use penner::mesh::{builders, Face, Mesh};
 use penner::predicates::delaunay::QuadEdges;
-use penner::scalar::{Dd, Mpfr, Precision, Real, Sign};
+use penner::scalar::{Dd, Mpfr, Precision, Real};
 use penner::theorems::t21_delaunay_flipping::check_all_edges_delaunay;
 use penner::theorems::{Settings, Verdict};
 use rand::{Rng, SeedableRng};
