@@ -89,12 +89,7 @@ pub fn verify_gauss_bonnet<T: Real>(
     if let Some(v) = check_lengths(mesh, lengths) {
         return v;
     }
-    if let Some(v) = count_mismatch(
-        curvature.len(),
-        "curvatures given",
-        mesh.n_vertices(),
-        "vertices",
-    ) {
+    if let Some(v) = curvature_count(mesh, curvature.len()) {
         return v;
     }
     let ctx = lengths[0].ctx();
@@ -107,6 +102,11 @@ pub fn verify_gauss_bonnet<T: Real>(
     let mut tally = Tally::new(false, T::precision_bits(ctx));
     tally.within("surface", "Σ K + Σ k − 2πχ", &err, tol);
     tally.verdict()
+}
+
+/// `NotApplicable` unless `n` curvatures are one per vertex.
+fn curvature_count(mesh: &Mesh, n: usize) -> Option<Verdict> {
+    count_mismatch(n, "curvatures given", mesh.n_vertices(), "vertices")
 }
 
 /// The slack exponent `c` of the certified width bound `2^(−p+c)` (proofs/B50):
@@ -164,12 +164,7 @@ pub fn verify_gauss_bonnet_certified<B: IntervalBound>(
             reason: "no vertices".to_string(),
         };
     };
-    if let Some(v) = count_mismatch(
-        curvature.len(),
-        "curvatures given",
-        mesh.n_vertices(),
-        "vertices",
-    ) {
+    if let Some(v) = curvature_count(mesh, curvature.len()) {
         return v;
     }
     let ctx = k0.ctx();

@@ -110,6 +110,21 @@ fn check<P: SignPredicate>(p: &P, want: Sign, what: &dyn Fn() -> String, stages:
     stages.add(&c);
 }
 
+/// Of `n` inputs of each kind, the filter decides at least 60% of the random ones (f64
+/// and fraction coordinates; grid points are often exactly degenerate and go further up)
+/// and more than a quarter of the adversarial ones climb to an enclosure or exact rung.
+fn assert_stage_shares(what: &str, n: usize, random: &Stages, adversarial: &Stages) {
+    eprintln!("{what} stages: random {random:?}, adversarial {adversarial:?}");
+    assert!(
+        random.filter * 10 >= n * 6,
+        "{what}: filter decided only {random:?}"
+    );
+    assert!(
+        adversarial.exact + adversarial.interval > n / 4,
+        "{what}: {adversarial:?}"
+    );
+}
+
 #[test]
 fn b25_orient2d_certified_sign_never_contradicts_exact_sign() {
     let mut rng = ChaCha8Rng::seed_from_u64(101);
@@ -135,18 +150,8 @@ fn b25_orient2d_certified_sign_never_contradicts_exact_sign() {
             &mut adversarial,
         );
     }
-    eprintln!("orient2d stages: random {random:?}, adversarial {adversarial:?}");
     assert_eq!(random.total(), n);
-    // Random f64 and fraction inputs are decided by the filter (grid points often are
-    // exactly collinear and go further up).
-    assert!(
-        random.filter * 10 >= n * 6,
-        "filter decided only {random:?}"
-    );
-    assert!(
-        adversarial.exact + adversarial.interval > n / 4,
-        "{adversarial:?}"
-    );
+    assert_stage_shares("orient2d", n, &random, &adversarial);
 }
 
 #[test]
@@ -171,15 +176,7 @@ fn b26_incircle_certified_sign_never_contradicts_exact_sign() {
         let want = oracle_incircle([&p[0], &p[1], &p[2], &p[3]]);
         check(&ic, want, &|| format!("{p:?}"), &mut adversarial);
     }
-    eprintln!("incircle stages: random {random:?}, adversarial {adversarial:?}");
-    assert!(
-        random.filter * 10 >= n * 6,
-        "filter decided only {random:?}"
-    );
-    assert!(
-        adversarial.exact + adversarial.interval > n / 4,
-        "{adversarial:?}"
-    );
+    assert_stage_shares("incircle", n, &random, &adversarial);
 }
 
 #[test]
