@@ -186,44 +186,67 @@ fn contains_ref<B: IntervalBound>(e: &Interval<B>, r: &(Rational, Rational)) -> 
 /// against one reference per sample point; returns (checked, invalid) counts.
 fn check_unary<B: IntervalBound>(ctxs: &[B::Ctx], seed: u64, n: usize) -> (usize, usize) {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let (mut checked, mut invalid) = (0, 0);
+    let mut counts = (0, 0);
     for (name, f, r, dom) in unary_ops::<B>() {
         for _ in 0..n {
             let (lo, hi) = gen_box(&mut rng, dom);
-            let refs: Vec<(f64, Option<(Rational, Rational)>)> = samples(lo, hi)
+            let refs: Vec<(f64, (Rational, Rational))> = samples(lo, hi)
                 .into_iter()
-                .map(|x| {
+                .filter_map(|x| {
                     let mut v = reference(x);
                     let o = r(&mut v, Round::Nearest);
-                    (x, ref_enclosure(&v, o))
+                    Some((x, ref_enclosure(&v, o)?))
                 })
                 .collect();
-            for &ctx in ctxs {
-                let e = f(&iv::<B>(lo, hi, ctx));
-                if !e.is_valid() {
-                    invalid += 1;
-                    continue;
-                }
-                for (x, rf) in &refs {
-                    let Some(rf) = rf else { continue };
-                    assert!(
-                        contains_ref(&e, rf),
-                        "{name} over [{lo:e}, {hi:e}] at {}: enclosure {e:?} misses f({x:e}) ∈ [{}, {}]",
-                        B::backend_name(ctx),
-                        rf.0.to_f64(),
-                        rf.1.to_f64()
-                    );
-                    checked += 1;
-                }
-            }
+            assert_encloses(
+                ctxs,
+                &refs,
+                |ctx| f(&iv::<B>(lo, hi, ctx)),
+                |ctx, e, x| {
+                    format!(
+                        "{name} over [{lo:e}, {hi:e}] at {}: enclosure {e:?} misses f({x:e})",
+                        B::backend_name(ctx)
+                    )
+                },
+                &mut counts,
+            );
         }
     }
-    (checked, invalid)
+    counts
+}
+
+/// At every context of `ctxs`, the enclosure `f(ctx)` is either invalid (counted in
+/// `counts.1`) or contains the reference enclosure of every sample point of `refs`
+/// (counted in `counts.0`); `what(ctx, e, point)` describes a miss.
+fn assert_encloses<B: IntervalBound, P>(
+    ctxs: &[B::Ctx],
+    refs: &[(P, (Rational, Rational))],
+    f: impl Fn(B::Ctx) -> Interval<B>,
+    what: impl Fn(B::Ctx, &Interval<B>, &P) -> String,
+    counts: &mut (usize, usize),
+) {
+    for &ctx in ctxs {
+        let e = f(ctx);
+        if !e.is_valid() {
+            counts.1 += 1;
+            continue;
+        }
+        for (point, rf) in refs {
+            assert!(
+                contains_ref(&e, rf),
+                "{} ∈ [{}, {}]",
+                what(ctx, &e, point),
+                rf.0.to_f64(),
+                rf.1.to_f64()
+            );
+            counts.0 += 1;
+        }
+    }
 }
 
 fn check_binary<B: IntervalBound>(ctxs: &[B::Ctx], seed: u64, n: usize) -> (usize, usize) {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let (mut checked, mut invalid) = (0, 0);
+    let mut counts = (0, 0);
     for (name, f, r) in binary_ops::<B>() {
         for i in 0..n {
             let (alo, ahi) = gen_box(&mut rng, Dom::Any);
@@ -247,30 +270,25 @@ fn check_binary<B: IntervalBound>(ctxs: &[B::Ctx], seed: u64, n: usize) -> (usiz
                     let mut v = reference(x);
                     let o = r(&mut v, &reference(y), Round::Nearest);
                     if let Some(rf) = ref_enclosure(&v, o) {
-                        refs.push((x, y, rf));
+                        refs.push(((x, y), rf));
                     }
                 }
             }
-            for &ctx in ctxs {
-                let e = f(&iv::<B>(alo, ahi, ctx), &iv::<B>(blo, bhi, ctx));
-                if !e.is_valid() {
-                    invalid += 1;
-                    continue;
-                }
-                for (x, y, rf) in &refs {
-                    assert!(
-                        contains_ref(&e, rf),
-                        "{name}([{alo:e},{ahi:e}], [{blo:e},{bhi:e}]) at {}: {e:?} misses the value at ({x:e},{y:e}) ∈ [{}, {}]",
-                        B::backend_name(ctx),
-                        rf.0.to_f64(),
-                        rf.1.to_f64()
-                    );
-                    checked += 1;
-                }
-            }
+            assert_encloses(
+                ctxs,
+                &refs,
+                |ctx| f(&iv::<B>(alo, ahi, ctx), &iv::<B>(blo, bhi, ctx)),
+                |ctx, e, (x, y)| {
+                    format!(
+                        "{name}([{alo:e},{ahi:e}], [{blo:e},{bhi:e}]) at {}: {e:?} misses the value at ({x:e},{y:e})",
+                        B::backend_name(ctx)
+                    )
+                },
+                &mut counts,
+            );
         }
     }
-    (checked, invalid)
+    counts
 }
 
 #[test]
