@@ -142,9 +142,19 @@ fn t16(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
 }
 
 fn t17(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
-    let lt = scaled(case);
+    t17_against(case, &scaled(case), prec, s)
+}
+
+/// T17 between the case's metric and a second metric `lt` of the same kind: exact in ℚ
+/// for rational lengths, else at `prec` (`None` for exact squared lengths).
+pub(crate) fn t17_against(
+    case: &Surface,
+    lt: &Metric,
+    prec: Prec,
+    s: &Settings,
+) -> Option<Verdict> {
     if prec == Prec::Exact {
-        let (Metric::Lengths(a), Metric::Lengths(b)) = (&case.metric, &lt) else {
+        let (Metric::Lengths(a), Metric::Lengths(b)) = (&case.metric, lt) else {
             return None;
         };
         return Some(
@@ -152,7 +162,7 @@ fn t17(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
         );
     }
     at_precision!(prec, case, |l: T| {
-        let ltt: Vec<T> = lengths_of(case, &lt, ctx_of(&l)?);
+        let ltt: Vec<T> = lengths_of(case, lt, ctx_of(&l)?);
         Some(t17_cross_ratio_equivalence::check_conformal_equivalence(
             &case.mesh, &l, &ltt, s,
         ))

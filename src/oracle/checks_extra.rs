@@ -79,6 +79,14 @@ pub fn t04(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
     ))
 }
 
+/// [`t07_map`] rounded to the backend of `ctx`.
+pub fn t07_map_at<T: Real>(n: usize, ctx: T::Ctx) -> Vec<[T; 2]> {
+    t07_map(n)
+        .iter()
+        .map(|z| [T::from_rational(&z[0], ctx), T::from_rational(&z[1], ctx)])
+        .collect()
+}
+
 /// The fixed map of T07: `f(v) = ((3v + 1) mod 7)/7 + i·((5v + 2) mod 11)/11`, irregular and
 /// exactly rational.
 pub fn t07_map(n: usize) -> Vec<[Rational; 2]> {
@@ -95,13 +103,9 @@ pub fn t07_map(n: usize) -> Vec<[Rational; 2]> {
 /// T07 (`E_C = E_D − A`) for the map [`t07_map`] on the case's metric; applies to every
 /// surface (the identity holds triangle by triangle).
 pub fn t07(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
-    let f = t07_map(case.mesh.n_vertices());
     at_precision!(prec, case, |l: T| {
         let ctx = l.first()?.ctx();
-        let ft: Vec<[T; 2]> = f
-            .iter()
-            .map(|z| [T::from_rational(&z[0], ctx), T::from_rational(&z[1], ctx)])
-            .collect();
+        let ft: Vec<[T; 2]> = t07_map_at(case.mesh.n_vertices(), ctx);
         Some(t07_conformal_energy::check_conformal_energy(
             &case.mesh, &l, &ft, s,
         ))

@@ -15,14 +15,14 @@ use crate::geometry::scaling::{reconstruct_scale_factors, reconstruct_scale_fact
 use crate::io::{Metric, Surface};
 use crate::mesh::builders;
 use crate::mesh::Mesh;
-use crate::oracle::checks::{lengths_of, scale_factors, scaled};
+use crate::oracle::checks::{lengths_of, scale_factors, scaled, t17_against};
 use crate::oracle::precision::Prec;
 use crate::oracle::registry::Check;
 use crate::scalar::Real;
 use crate::theorems::t18_two_triangle_sphere::is_two_triangle_sphere;
 use crate::theorems::{
-    t15_lemma1, t16_scaling_cross_ratios, t17_cross_ratio_equivalence, t18_two_triangle_sphere,
-    t19_one_vertex_torus, t20_mobius_cross_ratios, t35_definition_two, Settings, Verdict,
+    t15_lemma1, t16_scaling_cross_ratios, t18_two_triangle_sphere, t19_one_vertex_torus,
+    t20_mobius_cross_ratios, t35_definition_two, Settings, Verdict,
 };
 use rug::Rational;
 
@@ -101,21 +101,7 @@ fn t17_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
     let Some(e) = first_quad_side(case) else {
         return Some(not_applicable("T17's control needs an interior edge"));
     };
-    let lt = scaled_with_bump(case, e)?;
-    if prec == Prec::Exact {
-        let (Metric::Lengths(a), Metric::Lengths(b)) = (&case.metric, &lt) else {
-            return None;
-        };
-        return Some(
-            t17_cross_ratio_equivalence::check_conformal_equivalence_exact(&case.mesh, a, b),
-        );
-    }
-    at_precision!(prec, case, |l: T| {
-        let ltt: Vec<T> = lengths_of(case, &lt, l.first()?.ctx());
-        Some(t17_cross_ratio_equivalence::check_conformal_equivalence(
-            &case.mesh, &l, &ltt, s,
-        ))
-    })
+    t17_against(case, &scaled_with_bump(case, e)?, prec, s)
 }
 
 /// The case's three values moved onto `other` (another surface with three edges and two

@@ -11,7 +11,7 @@ use crate::geometry::energy::{cauchy_riemann_energy, dirichlet_energy, signed_ar
 use crate::geometry::laplacian::cotan_laplacian;
 use crate::io::{Metric, Surface};
 use crate::mesh::{Face, Mesh};
-use crate::oracle::checks_extra::{coplanar, t04, t07_map};
+use crate::oracle::checks_extra::{coplanar, t04, t07_map_at};
 use crate::oracle::precision::Prec;
 use crate::oracle::registry::Check;
 use crate::scalar::Real;
@@ -114,7 +114,7 @@ fn t05_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
     })
 }
 
-/// T07-NC: `E_D − A − E_CR` for the registry's map ([`t07_map`]) with the Dirichlet energy
+/// T07-NC: `E_D − A − E_CR` for the registry's map ([`t07_map_at`]) with the Dirichlet energy
 /// `E_D` scaled by 101/100. On a closed surface `A = 0` and `E_D = E_CR > 0` for this
 /// non-conformal map, so the difference is `E_D/100`, far above the B48 bound (a few
 /// hundred units of roundoff times the energies).
@@ -124,13 +124,9 @@ fn t07_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
             "one vertex: the map is constant and every energy is 0",
         ));
     }
-    let f = t07_map(case.mesh.n_vertices());
     at_precision!(prec, case, |l: T| {
         let ctx = l.first()?.ctx();
-        let ft: Vec<[T; 2]> = f
-            .iter()
-            .map(|z| [T::from_rational(&z[0], ctx), T::from_rational(&z[1], ctx)])
-            .collect();
+        let ft: Vec<[T; 2]> = t07_map_at(case.mesh.n_vertices(), ctx);
         let w = cotan_weights(&case.mesh, &l);
         let dirichlet = dirichlet_energy(&case.mesh, &w, &ft)?;
         let terms = EnergyTerms {
