@@ -9,17 +9,24 @@
 //! and the exact new diagonal is strictly Delaunay, the stored length is then shrunk by
 //! `4u` relative, at most [`MAX_NUDGES`] times (proof: B65; counted in
 //! [`FlipReport::nudged`]). If that does not certify it, the flip is undone
-//! and the edge reported in [`FlipReport::refused`]). After a flip the four sides of the
-//! quadrilateral are re-queued. When the list is empty every edge not listed in
+//! and the edge reported in [`FlipReport::refused`]. A Euclidean flip is also undone when its
+//! two new faces are not certified non-degenerate triangles for the stored lengths (proof:
+//! B66). After a flip the four sides of the quadrilateral are re-queued. When the list is empty every edge not listed in
 //! [`FlipReport::undecided`] or [`FlipReport::refused`] is certified Delaunay for the
 //! stored lengths (T21). A cap on the number of flips (default `64·E + 1024`) bounds the
 //! run even if rounding of new lengths were to create a cycle; hitting it is reported.
+//!
+//! While every stored length is a binary64 number in the filter's range (B61), the edge
+//! test and, when the edge is flipped, the new length, the test of the new edge and the
+//! triangle test run in one pass on values held in registers (`RealMetric::fast_step`);
+//! whatever that pass does not certify goes through the general path above.
 //!
 //! # What is certified
 //!
 //! Exactly this (proof: B65): for the lengths *returned* in the slice, every edge not
 //! listed in [`FlipReport::undecided`] or [`FlipReport::refused`] is Delaunay (`P ≥ 0`),
-//! unless [`FlipReport::hit_cap`] is set. The returned lengths are the input lengths on
+//! unless [`FlipReport::hit_cap`] is set, and after Euclidean flips every face created by a
+//! flip is a non-degenerate triangle (proof: B66). The returned lengths are the input lengths on
 //! edges never flipped; on a flipped edge they are the flip formula evaluated in the
 //! backend's arithmetic (so rounded in `f64`/`Dd`/`Mpfr`), and on the
 //! [`FlipReport::nudged`] flips that value shrunk by at most [`MAX_NUDGES`] steps
@@ -46,7 +53,7 @@
 
 pub use super::flips::FlipKind;
 use super::flips::{
-    euclidean_length, ptolemy_length, ptolemy_length_enclosure, ptolemy_length_exact,
+    euclidean_length, moderate_f64, ptolemy_length, ptolemy_length_enclosure, ptolemy_length_exact,
 };
 use crate::mesh::{Edge, Mesh};
 use crate::predicates::delaunay::{
@@ -54,6 +61,7 @@ use crate::predicates::delaunay::{
     Quad, QuadEdges, RationalQuad, RealQuad,
 };
 use crate::predicates::ladder::{decide, Ladder, SignPredicate};
+use crate::predicates::triangle::{strict_triangle_f64, strict_triangle_real};
 use crate::scalar::{Certified, Interval, Mpfr, Precision, Real, Sign, Stage};
 use rug::Rational;
 
@@ -116,7 +124,8 @@ pub struct FlipReport {
     /// Edges whose sign no rung could decide at the end (sorted).
     pub undecided: Vec<Edge>,
     /// Edges certified non-Delaunay whose flip was undone because the new diagonal could
-    /// not be certified Delaunay on its stored length (sorted).
+    /// not be certified Delaunay on its stored length, or (Euclidean flips) its two new
+    /// faces could not be certified non-degenerate triangles (sorted).
     pub refused: Vec<Edge>,
     /// Whether the flip cap stopped the run (then edges may remain unchecked).
     pub hit_cap: bool,
@@ -170,6 +179,28 @@ trait Metric {
     }
     /// Called after an accepted flip.
     fn accepted(&mut self, _flips: usize) {}
+    /// Whether the two triangles of the flipped quadrilateral `q.flipped()` are certified
+    /// non-degenerate triangles for the stored lengths (Euclidean flips only: Ptolemy
+    /// lengths need not satisfy the triangle inequality; proof: B66).
+    fn new_triangles_valid(&self, _q: &QuadEdges, _ladder: &Ladder) -> bool {
+        true
+    }
+    /// The whole test-and-flip step in one pass where a fast path applies: `Some(Kept)`
+    /// when the filter certifies `e` Delaunay, `Some(Flipped(old))` when it certifies `e`
+    /// non-Delaunay and the new length is stored, certified Delaunay and (Euclidean)
+    /// certified to form two non-degenerate triangles; `None` (nothing stored) sends the
+    /// edge to the general path.
+    fn fast_step(&mut self, _q: &QuadEdges) -> Option<FastStep<Self::Saved>> {
+        None
+    }
+}
+
+/// The outcome of [`Metric::fast_step`].
+enum FastStep<S> {
+    /// The edge is certified Delaunay by the filter.
+    Kept,
+    /// The edge was certified non-Delaunay and its new length stored (the old one kept).
+    Flipped(S),
 }
 
 /// Per-edge state of the driver, one byte per edge so that an edge test touches one
@@ -216,17 +247,37 @@ fn run<M: Metric>(mesh: &mut Mesh, m: &mut M, opts: &FlipOptions) -> FlipReport 
             state[e.idx()] = 0;
             continue;
         };
+        state[e.idx()] = 0;
+        if report.flips < cap {
+            match m.fast_step(&q) {
+                Some(FastStep::Kept) => {
+                    report.stages.filter += 1;
+                    continue;
+                }
+                Some(FastStep::Flipped(saved)) => {
+                    // The old edge and the new one, both by the filter.
+                    report.stages.filter += 2;
+                    if mesh.flip(e).is_ok() {
+                        accept(m, &q, &mut state, &mut stack, &mut report, opts);
+                    } else {
+                        // Cannot happen: `QuadEdges::of` succeeded, so `e` is flippable.
+                        m.restore(e, saved);
+                        state[e.idx()] = REFUSED;
+                        flags_set = true;
+                    }
+                    continue;
+                }
+                None => {}
+            }
+        }
         match certified_sign(m, q.edges, &opts.ladder, &mut report.stages) {
             None => {
                 state[e.idx()] = UNDECIDED;
                 flags_set = true;
                 continue;
             }
-            Some(Sign::Positive | Sign::Zero) => {
-                state[e.idx()] = 0;
-                continue;
-            }
-            Some(Sign::Negative) => state[e.idx()] = 0,
+            Some(Sign::Positive | Sign::Zero) => continue,
+            Some(Sign::Negative) => {}
         }
         if report.flips >= cap {
             report.hit_cap = true;
@@ -248,7 +299,7 @@ fn run<M: Metric>(mesh: &mut Mesh, m: &mut M, opts: &FlipOptions) -> FlipReport 
             }
         };
         report.nudged += usize::from(nudges > 0);
-        if !accepted || mesh.flip(e).is_err() {
+        if !accepted || !m.new_triangles_valid(&q, &opts.ladder) || mesh.flip(e).is_err() {
             // `mesh.flip` cannot fail here: `QuadEdges::of` succeeded, so the edge is
             // flippable; undo the length either way.
             m.restore(e, saved);
@@ -256,24 +307,39 @@ fn run<M: Metric>(mesh: &mut Mesh, m: &mut M, opts: &FlipOptions) -> FlipReport 
             flags_set = true;
             continue;
         }
-        report.flips += 1;
-        if opts.record {
-            report.sequence.push(e);
-        }
-        m.accepted(report.flips);
-        for side in [q.edges.jk, q.edges.ki, q.edges.il, q.edges.lj] {
-            let st = &mut state[side.idx()];
-            if *st & QUEUED == 0 {
-                *st |= QUEUED;
-                stack.push(side);
-            }
-        }
+        accept(m, &q, &mut state, &mut stack, &mut report, opts);
     }
     if flags_set {
         report.undecided = flagged(&state, UNDECIDED);
         report.refused = flagged(&state, REFUSED);
     }
     report
+}
+
+/// Book-keeping after the flip of `q.edge` was accepted: count and record it, tell the
+/// metric, and queue the four sides of the quadrilateral.
+#[allow(clippy::inline_always)] // hot path of the flip loop (measured)
+#[inline(always)]
+fn accept<M: Metric>(
+    m: &mut M,
+    q: &QuadEdges,
+    state: &mut [u8],
+    stack: &mut Vec<Edge>,
+    report: &mut FlipReport,
+    opts: &FlipOptions,
+) {
+    report.flips += 1;
+    if opts.record {
+        report.sequence.push(q.edge);
+    }
+    m.accepted(report.flips);
+    for side in [q.edges.jk, q.edges.ki, q.edges.il, q.edges.lj] {
+        let st = &mut state[side.idx()];
+        if *st & QUEUED == 0 {
+            *st |= QUEUED;
+            stack.push(side);
+        }
+    }
 }
 
 fn flagged(state: &[u8], flag: u8) -> Vec<Edge> {
@@ -360,6 +426,64 @@ impl<T: Real> Metric for RealMetric<'_, T> {
     fn restore(&mut self, e: Edge, old: T) {
         self.lengths[e.idx()] = old;
     }
+    fn new_triangles_valid(&self, q: &QuadEdges, ladder: &Ladder) -> bool {
+        if self.kind == FlipKind::Ptolemy {
+            return true;
+        }
+        // Faces `lki` and `klj` of the flipped quadrilateral (proof: B66).
+        let f = q.flipped().map(|e| &self.lengths[e.idx()]);
+        [[f.ij, f.jk, f.ki], [f.ij, f.il, f.lj]]
+            .iter()
+            .all(|&t| strict_triangle_real(t, ladder).value() == Some(true))
+    }
+    #[allow(clippy::inline_always)] // hot path of the flip loop (measured)
+    #[inline(always)]
+    fn fast_step(&mut self, q: &QuadEdges) -> Option<FastStep<T>> {
+        if !self.in_range {
+            return None;
+        }
+        // 53-bit values in the f64 range are f64 numbers exactly (proof: B61).
+        let l = q.edges.map(|e| self.lengths[e.idx()].approx_f64());
+        match filter_f64_in_range(l.to_array())? {
+            Sign::Positive | Sign::Zero => return Some(FastStep::Kept),
+            Sign::Negative => {}
+        }
+        let Quad {
+            ij: _,
+            jk: b,
+            ki: c,
+            il: d,
+            lj: e,
+        } = l;
+        // The same formulas as `flip_length`, in binary64: correctly rounded 53-bit
+        // arithmetic without overflow or underflow (lengths in 2^±100 for the Euclidean
+        // formula, 2^±200 for Ptolemy's) gives the same bits in every 53-bit backend.
+        let new = match self.kind {
+            FlipKind::Euclidean => {
+                if !l.to_array().into_iter().all(moderate_f64) {
+                    return None;
+                }
+                euclidean_length(l.as_refs())
+            }
+            FlipKind::Ptolemy => ptolemy_length(l.as_refs()),
+        };
+        if !in_filter_range(new) {
+            return None;
+        }
+        // The new edge `kl` in the roles `[kl, ki, il, lj, jk]` of `QuadEdges::flipped`.
+        if filter_f64_in_range([new, c, d, e, b]) != Some(Sign::Positive) {
+            return None;
+        }
+        // proof: B66 — faces `lki` and `klj` are non-degenerate for the stored lengths.
+        if self.kind == FlipKind::Euclidean
+            && !(strict_triangle_f64(new, c, d) && strict_triangle_f64(new, e, b))
+        {
+            return None;
+        }
+        let ctx = self.lengths[q.edge.idx()].ctx();
+        let old = std::mem::replace(&mut self.lengths[q.edge.idx()], T::from_f64(new, ctx));
+        Some(FastStep::Flipped(old))
+    }
     fn nudge(&mut self, e: Edge) -> bool {
         let l = &mut self.lengths[e.idx()];
         let u = T::unit_roundoff(l.ctx());
@@ -414,7 +538,7 @@ struct ExactMetric {
 impl ExactMetric {
     fn enclosure_precision(&self) -> Precision {
         // Enough to hold the guard-sized rationals tightly, at least 128 bits.
-        Precision::new((2 * self.guard_bits).clamp(128, 1 << 14))
+        Precision::new(self.guard_bits.saturating_mul(2).clamp(128, 1 << 14))
             .expect("128 to 16384 bits is within MPFR's precision range")
     }
 }

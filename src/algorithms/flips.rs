@@ -70,9 +70,7 @@ pub fn ptolemy_length_enclosure(q: Quad<&Interval<Mpfr>>) -> Option<Interval<Mpf
 /// NaN (`f64`): the caller refuses such a flip.
 #[inline]
 pub fn euclidean_length<T: Real>(q: Quad<&T>) -> T {
-    // Biased exponent in [923, 1123) ⇔ 2⁻¹⁰⁰ ≤ x < 2¹⁰⁰ for positive finite x.
-    let moderate = |x: &T| (x.approx_f64().to_bits() >> 52).wrapping_sub(923) < 200;
-    if q.to_array().iter().all(|x| moderate(x)) {
+    if q.to_array().iter().all(|x| moderate_f64(x.approx_f64())) {
         return euclidean_core([q.ij, q.jk, q.ki, q.il, q.lj].map(Clone::clone));
     }
     let a0 = q.ij.approx_f64();
@@ -83,6 +81,14 @@ pub fn euclidean_length<T: Real>(q: Quad<&T>) -> T {
         (q.ij.one_like(), q.ij.one_like())
     };
     euclidean_core(q.to_array().map(|x| x.clone() * &scale)) * &unscale
+}
+
+/// Whether `2⁻¹⁰⁰ ≤ x < 2¹⁰⁰`, the range in which [`euclidean_length`] needs no rescaling
+/// (every intermediate then lies within `2^±500`).
+#[inline]
+pub fn moderate_f64(x: f64) -> bool {
+    // Biased exponent in [923, 1123) ⇔ 2⁻¹⁰⁰ ≤ x < 2¹⁰⁰ for positive finite x.
+    (x.to_bits() >> 52).wrapping_sub(923) < 200
 }
 
 /// [`euclidean_length`] without rescaling.

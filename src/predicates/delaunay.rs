@@ -13,8 +13,10 @@
 //! meaningful when a triangle violates the triangle inequality (Ptolemy lengths).
 //!
 //! Rungs of the ladder ([`crate::predicates::ladder`]):
-//! 1. an `f64` filter `|P̂| > 2⁻⁵⁰·M̂ + 2⁻¹⁰⁰⁰` with `M` the sum of absolute terms, after an
-//!    exact power-of-two rescaling of the quadrilateral (proof: B61);
+//! 1. an `f64` filter on `P = K − N`, `K = de(b² + c²) + bc(d² + e²)`, `N = a²(de + bc)`
+//!    (both sums of positive terms): `N̂ < fl(K̂·(1 − 2⁻⁴⁹))` proves `P > 0` and the mirror
+//!    test proves `P < 0`, after an exact power-of-two rescaling of the quadrilateral
+//!    (proof: B61);
 //! 2. MPFR intervals with outward rounding (proof: B62);
 //! 3. exact rationals (every finite binary float is rational), or, for squared lengths,
 //!    the sign-exact form of [`delaunay_sign_squared`] (proof: B63).
@@ -285,9 +287,13 @@ pub fn check_length<T: Real>(edge: Edge, l: &T) -> Result<(), DelaunayError> {
 /// `2⁻²⁰⁰` and `2²⁰⁰`: the range in which the filter runs without rescaling.
 const SAFE_LO: f64 = 6.223015277861142e-61;
 const SAFE_HI: f64 = 1.6069380442589903e60;
-/// The relative error constant `8u = 2⁻⁵⁰` (proof: B61).
+/// `ρ = 1 − 2⁻⁴⁹ = 1 − 16u`: `N̂ < fl(K̂·ρ)` proves `N < K` (proof: B61).
+const FILTER_RHO: f64 = 1.0 - 1.0 / 562_949_953_421_312.0;
+/// The relative error constant `8u = 2⁻⁵⁰` of the filter on rounded rational inputs
+/// (proof: B61).
 const FILTER_REL: f64 = 8.881784197001252e-16;
-/// The absolute underflow allowance `2⁻¹⁰⁰⁰` (proof: B61).
+/// The absolute underflow allowance `2⁻¹⁰⁰⁰` of the filter on rounded rational inputs
+/// (proof: B61).
 const FILTER_ABS: f64 = 9.332636185032189e-302;
 
 /// Sign of `P` for five positive finite `f64` lengths, or `None` when the proven error
@@ -346,18 +352,16 @@ fn filter_rescaled(q: [f64; 5], lo: f64, hi: f64) -> Option<Sign> {
 #[allow(clippy::inline_always)] // hot path of the flip loop (measured)
 #[inline(always)]
 fn filter_core(a: f64, b: f64, c: f64, d: f64, e: f64) -> Option<Sign> {
-    let a2 = a * a;
+    // P = K − N with K = de(b² + c²) + bc(d² + e²) and N = a²(de + bc): two sums of
+    // positive terms, each computed to within a few units of rounding.
     let de = d * e;
     let bc = b * c;
-    let x = b * b + c * c - a2;
-    let y = d * d + e * e - a2;
-    let p = de * x + bc * y;
-    // proof: B61 — |P̂ − P| ≤ γ₆·M + 2⁻¹⁰⁷² < 2⁻⁵⁰·M̂ + 2⁻¹⁰⁰⁰.
-    let m = de * (b * b + c * c + a2) + bc * (d * d + e * e + a2);
-    let t = FILTER_REL * m + FILTER_ABS;
-    if p > t {
+    let k = de * (b * b + c * c) + bc * (d * d + e * e);
+    let n = (a * a) * (de + bc);
+    // proof: B61 — N̂ < fl(K̂·ρ) ⇒ N < K, and K̂ < fl(N̂·ρ) ⇒ K < N.
+    if n < k * FILTER_RHO {
         Some(Sign::Positive)
-    } else if p < -t {
+    } else if k < n * FILTER_RHO {
         Some(Sign::Negative)
     } else {
         None

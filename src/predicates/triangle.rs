@@ -1,12 +1,14 @@
-//! Certified triangle inequalities for rational side lengths and rational squared lengths.
+//! Certified triangle inequalities for rational side lengths, rational squared lengths and
+//! the stored lengths of any [`Real`] backend.
 //!
 //! Each predicate climbs the ladder ([`decide`]): an f64 filter with a proven error bound
 //! (proofs/B23, B24), MPFR interval enclosures (proofs/B20), and the exact value in
 //! `rug::Rational`.
 
+use super::delaunay::f64_exact;
 use super::filter::{self, Ring, U};
 use super::ladder::{decide, Ladder, SignPredicate};
-use crate::scalar::{Certified, Precision, Sign, Stage};
+use crate::scalar::{Certified, Precision, Real, Sign, Stage};
 use rug::Rational;
 
 /// Filter constant of [`TriangleSlack`]: `|v − fl(v)| ≤ 4u·(|a|+|b|+|c|)`, proofs/B23.
@@ -223,4 +225,45 @@ pub fn strict_triangle_sq(
         exact(c2),
         decide(&TriangleAreaSq::new(a2, b2, c2), ladder),
     ])
+}
+
+/// Whether `x < y + z` is proved by one rounded `f64` addition: for binary64 `x, y, z`,
+/// rounding to nearest is monotone, so `y + z ≤ x` would give `fl(y + z) ≤ fl(x) = x`;
+/// hence `x < fl(y + z)` implies `x < y + z` (proof: B66). `false` proves nothing.
+#[allow(clippy::inline_always)] // hot path of the flip loop (measured)
+#[inline(always)]
+pub fn shorter_than_sum_f64(x: f64, y: f64, z: f64) -> bool {
+    x < y + z
+}
+
+/// The three strict triangle inequalities of sides `a, b, c` (binary64): `a < fl(b + c)`
+/// and `fl(|b − c|) < a`, each proved by monotonicity of rounding to nearest as in
+/// [`shorter_than_sum_f64`] (`|b − c| ≥ a` would give `fl(|b − c|) ≥ a`); `false` proves
+/// nothing (proof: B66).
+#[allow(clippy::inline_always)] // hot path of the flip loop (measured)
+#[inline(always)]
+pub fn strict_triangle_f64(a: f64, b: f64, c: f64) -> bool {
+    shorter_than_sum_f64(a, b, c) & ((b - c).abs() < a)
+}
+
+/// Whether three lengths of any [`Real`] backend are the sides of a non-degenerate
+/// triangle (all three slacks `b + c − a > 0`, MATH.md §1), certified: first by
+/// [`strict_triangle_f64`] when the values are binary64 numbers exactly (53-bit point
+/// backends, normal range; proof: B66), then on their exact rational values through the
+/// ladder of [`strict_triangle`]. `Undecided` for values without a rational value
+/// (enclosures).
+pub fn strict_triangle_real<T: Real>(sides: [&T; 3], ladder: &Ladder) -> Certified<bool> {
+    if f64_exact::<T>(sides[0].ctx()) {
+        let [a, b, c] = sides.map(Real::approx_f64);
+        if a.is_normal() && b.is_normal() && c.is_normal() && strict_triangle_f64(a, b, c) {
+            return Certified::Known {
+                value: true,
+                stage: Stage::Filter,
+            };
+        }
+    }
+    match sides.map(Real::to_rational) {
+        [Some(a), Some(b), Some(c)] => strict_triangle(&a, &b, &c, ladder),
+        _ => Certified::Undecided { bits_tried: 0 },
+    }
 }
