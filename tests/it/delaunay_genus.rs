@@ -4,12 +4,13 @@
 //! controls run the same oracle and the T21 check on the unflipped inputs.
 
 use crate::delaunay::{exact_values, oracle_non_delaunay, to_m};
+use crate::delaunay_undecided::encloses;
 use crate::support::cases;
 use malachite::rational::Rational as MRational;
 use penner::algorithms::flip_to_delaunay::{
     flip_to_delaunay, flip_to_delaunay_exact, ExactLengths, FlipKind, FlipOptions, FlipReport,
 };
-use penner::mesh::{builders, Face, Mesh};
+use penner::mesh::{builders, Edge, Face, Mesh};
 use penner::predicates::delaunay::QuadEdges;
 use penner::scalar::{Dd, Mpfr, Precision, Real};
 use penner::theorems::t21_delaunay_flipping::check_all_edges_delaunay;
@@ -17,6 +18,7 @@ use penner::theorems::{Settings, Verdict};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rug::Rational;
+use std::str::FromStr;
 
 /// How the edge lengths of a test surface are drawn.
 #[derive(Clone, Copy, Debug)]
@@ -321,4 +323,178 @@ fn b61_flipping_commutes_with_power_of_two_scaling() {
         }
     }
     assert!(differs > 0, "naive f64 flipping never noticed the scale");
+}
+
+/// Replay `sequence` on `(mesh, lengths)` with Ptolemy flips computed in malachite (the
+/// combinatorial flip from the mesh, the length formula written out here): the exact
+/// lengths of the triangulation that sequence reaches.
+fn replay_exact(mesh: &Mesh, lengths: &[Rational], sequence: &[Edge]) -> (Mesh, Vec<MRational>) {
+    let mut m = mesh.clone();
+    let mut l: Vec<MRational> = lengths.iter().map(to_m).collect();
+    for &e in sequence {
+        let q = QuadEdges::of(&m, e).expect("a recorded flip is flippable");
+        let [ij, jk, ki, il, lj] = q.lengths(&l).to_array();
+        let kl = (ki * lj + il * jk) / ij;
+        m.flip(e).expect("a recorded flip is flippable");
+        l[e.idx()] = kl;
+    }
+    (m, l)
+}
+
+/// `q·(1 + 2⁻¹⁰⁰)`: a wrong length, far closer to the exact one than f64 rounding.
+fn off_by_2_pow_minus_100(q: &MRational) -> MRational {
+    let tiny = MRational::from_str("1/1267650600228229401496703205376").unwrap();
+    q * (MRational::from(1) + tiny)
+}
+
+/// What [`t21_exact_flipping_after_fallback_agrees_with_exact_arithmetic`] saw.
+#[derive(Debug, Default)]
+struct FallbackTally {
+    /// Guarded runs (each fell back).
+    fell_back: usize,
+    /// Of those, runs on enclosures from the start.
+    whole_run: usize,
+    /// Runs with every decision certified: the exact run, flip for flip.
+    identical: usize,
+    /// Runs with an undecided decision (a tie on enclosures).
+    with_undecided: usize,
+    /// Enclosures checked to contain the exact length.
+    enclosed: usize,
+    /// Of those, enclosures that reject the length off by 2⁻¹⁰⁰ relative.
+    wrong_rejected: usize,
+    /// Signs certified on the final enclosures, compared with the exact ones.
+    signs: usize,
+    /// Ties decided in ℚ before the fallback and not re-examined after it.
+    ties_before: usize,
+}
+
+/// The exact run of a case: ℚ all the way, from the same start with the same options.
+struct ExactRun {
+    report: FlipReport,
+    mesh: Mesh,
+    lengths: Vec<MRational>,
+}
+
+/// Run case `c` with `guard`, which the exact run `ex` passed, and check the fallback
+/// against exact arithmetic.
+fn check_fell_back_run(
+    c: &Case,
+    guard: u64,
+    opts: &FlipOptions,
+    ex: &ExactRun,
+    t: &mut FallbackTally,
+) {
+    use penner::predicates::delaunay::EnclosureQuad;
+    use penner::predicates::ladder::{decide, Ladder};
+    use penner::scalar::{Certified, Sign};
+    let what = format!("{} guard {guard}", c.name);
+    let mut mf = c.mesh.clone();
+    let (rf, outf) = flip_to_delaunay_exact(&mut mf, c.lengths.clone(), guard, opts).unwrap();
+    // The exact run passed this guard, so the guarded run must fall back.
+    let after = rf
+        .fell_back_after
+        .unwrap_or_else(|| panic!("{what}: no fallback ({rf:?})"));
+    t.fell_back += 1;
+    t.whole_run += usize::from(after == 0);
+    assert!(!rf.hit_cap, "{what}");
+    let ExactLengths::Enclosed(enc) = outf else {
+        panic!("{what}: fell back without enclosures")
+    };
+    // The exact lengths of the triangulation the guarded run reached.
+    let (mr, lr) = replay_exact(&c.mesh, &c.lengths, &rf.sequence);
+    assert_eq!(mr, mf, "{what}: the recorded flips");
+    for e in mf.edges() {
+        // Every returned enclosure contains the exact length ...
+        assert!(encloses(&enc[e.idx()], &lr[e.idx()]), "{what} {e}");
+        t.enclosed += 1;
+        // ... and is tight enough to reject a length wrong by 2⁻¹⁰⁰ relative (negative
+        // control of the containment check).
+        let wrong = off_by_2_pow_minus_100(&lr[e.idx()]);
+        assert!(!encloses(&enc[e.idx()], &wrong), "{what} {e}");
+        t.wrong_rejected += 1;
+    }
+    // Every sign the enclosures certify is the exact sign, and every edge the run reports
+    // certified is Delaunay in exact arithmetic.
+    let flagged: Vec<Edge> = rf.undecided.iter().chain(&rf.refused).copied().collect();
+    for e in mf.edges() {
+        let Some(q) = QuadEdges::of(&mf, e) else {
+            continue;
+        };
+        let exact = crate::delaunay::oracle(q.lengths(&lr).to_array());
+        match decide(&EnclosureQuad(q.lengths(&enc)), &Ladder::default()) {
+            Certified::Known { value, .. } => {
+                assert_eq!(value, exact, "{what} {e}");
+                t.signs += 1;
+            }
+            // Not decidable on the final enclosures: an exact tie (the enclosures are not
+            // too wide). Unless listed, it was decided (Zero) in ℚ before the fallback and
+            // its quadrilateral was not flipped since.
+            Certified::Undecided { .. } => {
+                assert_eq!(exact, Sign::Zero, "{what} {e}");
+                if !flagged.contains(&e) {
+                    assert!(after > 0 && rf.stages.exact > 0, "{what} {e}");
+                    t.ties_before += 1;
+                }
+            }
+        }
+        if !flagged.contains(&e) {
+            assert_ne!(exact, Sign::Negative, "{what} {e}");
+        }
+    }
+    if rf.stages.undecided == 0 && rf.refused.is_empty() {
+        // Every decision certified, so each equals the exact one: the same run.
+        assert_eq!(rf.sequence, ex.report.sequence, "{what}");
+        assert_eq!(rf.flips, ex.report.flips, "{what}");
+        assert_eq!(mf, ex.mesh, "{what}");
+        assert_eq!(lr, ex.lengths, "{what}");
+        t.identical += 1;
+    } else {
+        t.with_undecided += 1;
+    }
+}
+
+/// Exact Ptolemy flipping past its bit guard, against ℚ all the way: the fall-back happens
+/// (counted), its enclosures contain the exact lengths, its certified signs are the exact
+/// ones, and a run without undecided decisions is the exact run.
+#[test]
+fn t21_exact_flipping_after_fallback_agrees_with_exact_arithmetic() {
+    use penner::algorithms::flip_to_delaunay::rational_bits;
+    let mut t = FallbackTally::default();
+    for i in 0..cases(160, 4_000) as u64 {
+        let c = case(i);
+        let opts = FlipOptions {
+            record: true,
+            order_seed: (i % 2 == 1).then_some(i),
+            ..FlipOptions::default()
+        };
+        // The oracle run: ℚ all the way (no guard can be passed).
+        let mut me = c.mesh.clone();
+        let (re, oute) =
+            flip_to_delaunay_exact(&mut me, c.lengths.clone(), u64::MAX, &opts).unwrap();
+        assert!(re.all_certified_delaunay(), "{}", c.name);
+        let ExactLengths::Exact(le) = oute else {
+            panic!("{}: no fallback without a guard", c.name)
+        };
+        let start_bits = c.lengths.iter().map(rational_bits).max().unwrap();
+        if re.max_bits <= start_bits {
+            continue; // no flip grew a length: no guard falls between
+        }
+        let ex = ExactRun {
+            report: re,
+            mesh: me,
+            lengths: le.iter().map(to_m).collect(),
+        };
+        // A guard below the inputs (the whole run on enclosures) and one halfway through
+        // the growth (exact first, enclosures after some flip).
+        for guard in [start_bits - 1, start_bits.midpoint(ex.report.max_bits)] {
+            check_fell_back_run(&c, guard, &opts, &ex, &mut t);
+        }
+    }
+    assert!(t.fell_back > t.whole_run && t.whole_run > 0, "{t:?}");
+    assert!(t.identical > 0, "{t:?}");
+    assert!(
+        t.enclosed > 0 && t.wrong_rejected == t.enclosed && t.signs > 0,
+        "{t:?}"
+    );
+    eprintln!("{t:?}");
 }
