@@ -55,7 +55,7 @@ pub use super::flips::FlipKind;
 use super::flips::{
     euclidean_length, moderate_f64, ptolemy_length, ptolemy_length_enclosure, ptolemy_length_exact,
 };
-use crate::mesh::{Edge, Mesh};
+use crate::mesh::{Edge, Face, Mesh};
 use crate::predicates::delaunay::{
     check_length, f64_exact, filter_f64_in_range, in_filter_range, DelaunayError, EnclosureQuad,
     Quad, QuadEdges, RationalQuad, RealQuad,
@@ -159,7 +159,7 @@ pub enum FlipToDelaunayError {
 }
 
 /// Per-edge lengths together with how to decide and how to flip them.
-trait Metric {
+pub(super) trait Metric {
     /// The old length of a flipped edge, kept to undo the flip.
     type Saved;
     /// The first rung alone (a proven `f64` filter), `None` when it does not decide.
@@ -196,7 +196,7 @@ trait Metric {
 }
 
 /// The outcome of [`Metric::fast_step`].
-enum FastStep<S> {
+pub(super) enum FastStep<S> {
     /// The edge is certified Delaunay by the filter.
     Kept,
     /// The edge was certified non-Delaunay and its new length stored (the old one kept).
@@ -229,7 +229,7 @@ fn certified_sign<M: Metric>(
 }
 
 /// The driver shared by every length type.
-fn run<M: Metric>(mesh: &mut Mesh, m: &mut M, opts: &FlipOptions) -> FlipReport {
+pub(super) fn run<M: Metric>(mesh: &mut Mesh, m: &mut M, opts: &FlipOptions) -> FlipReport {
     let ne = mesh.n_edges();
     let cap = opts.max_flips.unwrap_or(64 * ne + 1024);
     let mut report = FlipReport::default();
@@ -380,6 +380,18 @@ fn check_all<T: Real>(mesh: &Mesh, lengths: &[T]) -> Result<bool, DelaunayError>
     Ok(false)
 }
 
+/// Refuse a metric on which Euclidean flips are meaningless: the first face that `strict`
+/// does not certify to be a non-degenerate triangle.
+pub(super) fn check_faces(
+    mesh: &Mesh,
+    strict: impl Fn(Face) -> Certified<bool>,
+) -> Result<(), DelaunayError> {
+    match mesh.faces().find(|&f| strict(f).value() != Some(true)) {
+        Some(face) => Err(DelaunayError::NotATriangle { face }),
+        None => Ok(()),
+    }
+}
+
 struct RealMetric<'a, T> {
     lengths: &'a mut [T],
     kind: FlipKind,
@@ -498,7 +510,9 @@ impl<T: Real> Metric for RealMetric<'_, T> {
 
 /// Flip `mesh` to an intrinsic Delaunay triangulation of the metric `lengths` (one per
 /// edge) with Euclidean or Ptolemy flips (T21). Works on closed surfaces and surfaces with
-/// boundary; boundary edges and self-folded edges are never flipped.
+/// boundary; boundary edges and self-folded edges are never flipped. Euclidean flips need
+/// a Euclidean metric: a face not certified to be a non-degenerate triangle is refused
+/// ([`DelaunayError::NotATriangle`]); Ptolemy flips accept any positive lengths.
 pub fn flip_to_delaunay<T: Real>(
     mesh: &mut Mesh,
     lengths: &mut [T],
@@ -506,6 +520,12 @@ pub fn flip_to_delaunay<T: Real>(
     opts: &FlipOptions,
 ) -> Result<FlipReport, FlipToDelaunayError> {
     let in_range = check_all(mesh, lengths)?;
+    if kind == FlipKind::Euclidean {
+        check_faces(mesh, |f| {
+            let [a, b, c] = mesh.face_halfedges(f).map(|h| &lengths[h.edge().idx()]);
+            strict_triangle_real([a, b, c], &opts.ladder)
+        })?;
+    }
     let mut m = RealMetric {
         lengths,
         kind,

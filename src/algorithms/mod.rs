@@ -3,9 +3,12 @@
 //! - [`flips`]: Euclidean and Ptolemy flips of one edge (MATH.md §5).
 //! - [`flip_to_delaunay`]: flip to an intrinsic Delaunay triangulation with certified
 //!   signs (T21).
+//! - [`flip_scaled`]: the same for conformally scaled metrics `e^{(u_i+u_j)/2}·ℓ_ij`, with
+//!   the exponent kept apart (no overflow for `|u|` up to 2²⁰).
 //! - [`naive`]: an uncertified `f64` baseline, for benchmarks and for showing where raw
 //!   floating-point decisions go wrong.
 
+pub mod flip_scaled;
 pub mod flip_to_delaunay;
 pub mod flips;
 pub mod naive;

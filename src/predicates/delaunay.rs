@@ -49,7 +49,7 @@
 
 use super::directed::scaled_length;
 use super::ladder::{decide, Ladder, SignPredicate};
-use crate::mesh::{Edge, HalfEdge, Mesh};
+use crate::mesh::{Edge, Face, HalfEdge, Mesh};
 use crate::scalar::{Certified, Interval, Mpfr, Precision, Real, Sign};
 use rug::Rational;
 
@@ -182,6 +182,22 @@ pub enum DelaunayError {
     /// A log scale factor is not finite.
     #[error("vertex v{vertex} has log scale factor {value}, which is not finite")]
     BadScale {
+        /// The vertex.
+        vertex: u32,
+        /// The offending value.
+        value: f64,
+    },
+    /// Euclidean flips need a Euclidean metric: this face is not certified to be a
+    /// non-degenerate triangle (strict triangle inequalities, MATH.md §1).
+    #[error("face {face} is not a non-degenerate triangle (Euclidean flips need the strict triangle inequality)")]
+    NotATriangle {
+        /// The face.
+        face: Face,
+    },
+    /// A log scale factor exceeds [`MAX_LOG_SCALE`](crate::scalar::exp_length::MAX_LOG_SCALE)
+    /// in magnitude.
+    #[error("vertex v{vertex} has log scale factor {value}, beyond the supported ±2^20")]
+    ScaleOutOfRange {
         /// The vertex.
         vertex: u32,
         /// The offending value.

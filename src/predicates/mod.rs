@@ -1,6 +1,7 @@
 //! The only place a number becomes a decision: certified signs and the escalation ladder.
 pub mod cotan;
 pub mod delaunay;
+pub mod delaunay_exp;
 pub mod directed;
 mod filter;
 pub mod ladder;

@@ -14,6 +14,7 @@ mod certified;
 mod dd;
 pub mod dual;
 pub mod exact;
+pub mod exp_length;
 mod f64_impl;
 pub mod interval;
 mod mpfr;

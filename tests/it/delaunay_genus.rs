@@ -31,11 +31,11 @@ enum MetricKind {
     NearDegenerate,
 }
 
-struct Case {
-    name: String,
-    mesh: Mesh,
+pub(crate) struct Case {
+    pub(crate) name: String,
+    pub(crate) mesh: Mesh,
     /// Exact lengths (every value is a binary64 number).
-    lengths: Vec<Rational>,
+    pub(crate) lengths: Vec<Rational>,
 }
 
 /// A random closed surface of genus `g`, or the same surface with a hole cut in it
@@ -70,7 +70,7 @@ fn lengths(n: usize, kind: MetricKind, rng: &mut ChaCha8Rng) -> Vec<Rational> {
 }
 
 /// The `i`-th test case: genus `i mod 4`, boundary and metric kind from the seed.
-fn case(i: u64) -> Case {
+pub(crate) fn case(i: u64) -> Case {
     let mut rng = ChaCha8Rng::seed_from_u64(0x7421 + i);
     let g = (i % 4) as u32;
     let boundary = rng.gen_bool(0.5);

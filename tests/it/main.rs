@@ -9,6 +9,7 @@ mod definition_two;
 mod delaunay;
 mod delaunay_flips;
 mod delaunay_genus;
+mod delaunay_scaled;
 mod delaunay_triangles;
 mod delaunay_undecided;
 mod delaunay_uniqueness;
