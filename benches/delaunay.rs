@@ -1,4 +1,5 @@
-//! Flip-to-Delaunay (certified and naive f64) and intrinsic-Delaunay cotan Laplacian on
+//! Flip-to-Delaunay (certified and naive f64) and the library's intrinsic-Delaunay cotan
+//! Laplacian (`geometry::laplacian::cotan_laplacian`, compressed sparse rows) on
 //! procedurally generated meshes: noisy subdivided icospheres (normal noise of standard
 //! deviation 0.3 × mean edge length per coordinate) and a sheared torus of thin triangles.
 //!
@@ -14,36 +15,8 @@ use criterion::{criterion_group, criterion_main, BatchSize, Criterion};
 use meshgen::{icosphere, sheared_torus, Embedded};
 use penner::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
 use penner::algorithms::naive::flip_to_delaunay_naive;
-use penner::mesh::Mesh;
+use penner::geometry::laplacian::cotan_laplacian;
 use std::time::Duration;
-
-/// Cotan Laplacian `L_ij = −w_ij`, `L_ii = Σ w_ij` as triplets, with
-/// `cot A = (b² + c² − a²)/(4·Area)` per corner (MATH.md §3).
-fn cotan_laplacian(mesh: &Mesh, l: &[f64]) -> Vec<(u32, u32, f64)> {
-    let mut t = Vec::with_capacity(4 * mesh.n_edges() + mesh.n_vertices());
-    let mut diag = vec![0.0; mesh.n_vertices()];
-    for f in mesh.faces() {
-        let hs = mesh.face_halfedges(f);
-        let [a, b, c] = hs.map(|h| l[h.edge().idx()]);
-        let s = (a + b + c) * (-a + b + c) * (a - b + c) * (a + b - c);
-        let inv4area = 1.0 / s.max(0.0).sqrt();
-        for (k, h) in hs.iter().enumerate() {
-            let (x, y, z) = [(a, b, c), (b, c, a), (c, a, b)][k];
-            let w = 0.5 * (y * y + z * z - x * x) * inv4area;
-            let (i, j) = (mesh.tail(*h).0, mesh.tip(*h).0);
-            t.push((i, j, -w));
-            t.push((j, i, -w));
-            diag[i as usize] += w;
-            diag[j as usize] += w;
-        }
-    }
-    t.extend(
-        diag.iter()
-            .enumerate()
-            .map(|(i, &d)| (i as u32, i as u32, d)),
-    );
-    t
-}
 
 /// Frequency-`k` icosphere with every vertex coordinate moved by normal noise of standard
 /// deviation 0.3 × mean edge length (about 16k flips at 10⁵ faces).
@@ -139,7 +112,7 @@ fn bench(c: &mut Criterion) {
                         FlipKind::Euclidean,
                         &FlipOptions::default(),
                     );
-                    cotan_laplacian(&mm, &ll).len()
+                    cotan_laplacian(&mm, &ll).dim()
                 },
                 BatchSize::LargeInput,
             );

@@ -20,18 +20,34 @@ impl<T: Real> SparseMatrix<T> {
     /// position are summed in the order given. Triplets outside `n × n` are a programming
     /// error and panic.
     pub fn from_triplets(n: usize, triplets: &[(usize, usize, T)]) -> SparseMatrix<T> {
-        let mut order: Vec<usize> = (0..triplets.len()).collect();
-        order.sort_by_key(|&t| (triplets[t].0, triplets[t].1, t));
+        // Counting sort by row (stable), then a stable sort by column within each row:
+        // O(len + Σ_rows k log k) and the input order kept among duplicates.
+        let mut start = vec![0usize; n + 1];
+        for &(r, c, _) in triplets {
+            assert!(
+                r < n && c < n,
+                "triplet ({r}, {c}) outside a {n}×{n} matrix"
+            );
+            start[r + 1] += 1;
+        }
+        for i in 0..n {
+            start[i + 1] += start[i];
+        }
+        let mut order = vec![0usize; triplets.len()];
+        let mut next = start.clone();
+        for (t, &(r, _, _)) in triplets.iter().enumerate() {
+            order[next[r]] = t;
+            next[r] += 1;
+        }
+        for r in 0..n {
+            order[start[r]..start[r + 1]].sort_by_key(|&t| triplets[t].1);
+        }
         let mut row_ptr = vec![0; n + 1];
         let mut col: Vec<usize> = Vec::new();
         let mut val: Vec<T> = Vec::new();
         let mut rows: Vec<usize> = Vec::new();
         for t in order {
             let (r, c, ref v) = triplets[t];
-            assert!(
-                r < n && c < n,
-                "triplet ({r}, {c}) outside a {n}×{n} matrix"
-            );
             match (rows.last(), col.last(), val.last_mut()) {
                 (Some(&lr), Some(&lc), Some(last)) if lr == r && lc == c => *last += v,
                 _ => {
