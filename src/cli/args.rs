@@ -56,6 +56,11 @@ pub enum Command {
         /// Output file (must not exist); standard output if absent.
         #[arg(short, long)]
         output: Option<PathBuf>,
+        /// Flip the conformally scaled metric e^{(u_i+u_j)/2}·ℓ_ij instead: a JSON array
+        /// with one log scale factor u per vertex (|u| ≤ 2^20; lengths kept as m·2^k, so
+        /// nothing overflows; f64 significands).
+        #[arg(long, value_name = "FILE")]
+        scale_factors: Option<PathBuf>,
     },
     /// Re-run a saved failure file and report whether it still fails.
     Replay {

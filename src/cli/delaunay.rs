@@ -2,12 +2,14 @@
 
 use super::args::FlipKind as ArgFlipKind;
 use super::error::{code, CliError};
-use super::files::{emit, write_new};
+use super::files::{emit, read_text, write_new};
+use penner::algorithms::flip_scaled::flip_to_delaunay_scaled;
 use penner::algorithms::flip_to_delaunay::{
     flip_to_delaunay, flip_to_delaunay_exact, ExactLengths, FlipKind, FlipOptions, FlipReport,
 };
 use penner::io::{json, Metric, Surface};
 use penner::oracle::Prec;
+use penner::scalar::exp_length::ExpLength;
 use penner::scalar::{Dd, Mpfr, Real};
 use rug::Rational;
 use std::io::IsTerminal;
@@ -28,6 +30,55 @@ pub struct Options<'a> {
     pub precision: &'a str,
     /// Output file, or stdout.
     pub output: Option<&'a Path>,
+    /// Per-vertex log scale factors (JSON array): flip `e^{(u_i+u_j)/2}·ℓ_ij` instead.
+    pub scale_factors: Option<&'a Path>,
+}
+
+/// Read a JSON array of one finite number per vertex (`u_v`), naming the file and the
+/// offending entry.
+fn read_scale_factors(path: &Path, n_vertices: usize) -> Result<Vec<f64>, CliError> {
+    let text = read_text(path)?;
+    let value: serde_json::Value = serde_json::from_str(&text)
+        .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+    let serde_json::Value::Array(items) = value else {
+        return Err(CliError::Input(format!(
+            "{}: expected a JSON array of log scale factors, one per vertex",
+            path.display()
+        )));
+    };
+    if items.len() != n_vertices {
+        return Err(CliError::Input(format!(
+            "{}: {} scale factors for a surface with {n_vertices} vertices",
+            path.display(),
+            items.len()
+        )));
+    }
+    items
+        .iter()
+        .enumerate()
+        .map(|(v, x)| {
+            x.as_f64().filter(|u| u.is_finite()).ok_or_else(|| {
+                CliError::Input(format!(
+                    "{}: entry {v} (vertex v{v}) is {x}, not a finite number",
+                    path.display()
+                ))
+            })
+        })
+        .collect()
+}
+
+/// Flip the conformally scaled metric of `case` (lengths kept as `m·2ᵏ`, B67) and return
+/// the report and the exact values of the final lengths.
+fn flip_scaled(
+    case: &mut Surface,
+    u: &[f64],
+    kind: FlipKind,
+) -> Result<(FlipReport, Vec<Rational>), CliError> {
+    let base: Vec<f64> = case.lengths(());
+    let (report, lengths) =
+        flip_to_delaunay_scaled(&mut case.mesh, &base, u, kind, &FlipOptions::default())
+            .map_err(|e| CliError::Input(format!("{}: {e}", case.name)))?;
+    Ok((report, lengths.iter().map(ExpLength::to_rational).collect()))
 }
 
 /// Flip real lengths of backend `T` and return the report and the exact values of the
@@ -84,8 +135,21 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         b.enable_steady_tick(Duration::from_millis(120));
         b
     });
-    let result = match (prec, kind, &case.metric) {
-        (Prec::Exact, FlipKind::Ptolemy, Metric::Lengths(l)) => {
+    let scale = match o.scale_factors {
+        Some(path) => {
+            if prec != Prec::F64 {
+                return Err(CliError::Input(
+                    "--scale-factors: scaled lengths are m·2^k with binary64 significands; use --precision f64"
+                        .to_string(),
+                ));
+            }
+            Some(read_scale_factors(path, case.mesh.n_vertices())?)
+        }
+        None => None,
+    };
+    let result = match (prec, kind, &case.metric, &scale) {
+        (.., Some(u)) => flip_scaled(&mut case, u, kind),
+        (Prec::Exact, FlipKind::Ptolemy, Metric::Lengths(l), None) => {
             let l = l.clone();
             let (report, lengths) =
                 flip_to_delaunay_exact(&mut case.mesh, l, EXACT_GUARD_BITS, &FlipOptions::default())
@@ -99,7 +163,7 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
                 ))),
             }
         }
-        (Prec::Exact, _, _) => Err(CliError::Input(
+        (Prec::Exact, ..) => Err(CliError::Input(
             "--precision exact needs --flips ptolemy and exact (not squared) lengths: Euclidean flips make lengths irrational"
                 .to_string(),
         )),

@@ -55,11 +55,13 @@ pub fn main() -> ExitCode {
             flips,
             precision,
             output,
+            scale_factors,
         }) => delaunay::run(&delaunay::Options {
             path: &surface,
             flips,
             precision: &precision,
             output: output.as_deref(),
+            scale_factors: scale_factors.as_deref(),
         }),
     };
     match result {

@@ -469,3 +469,69 @@ fn certify_intrinsic_delaunay_exactly() {
     let (a, _) = certify_expecting(&d, "square.json", &square, 0, "holds");
     assert_eq!(a["certified"].as_bool(), Some(true), "{a}");
 }
+
+#[test]
+fn delaunay_with_scale_factors_up_to_800() {
+    let d = scratch("delaunay-scaled");
+    let rhombus =
+        r#"{"vertices": 4, "faces": [[0,1,2],[0,2,3]], "lengths": ["1","1","19/10","1","1"]}"#;
+    let p = write(&d, "rhombus.json", rhombus.as_bytes());
+    let p = p.display().to_string();
+    let u = write(&d, "u.json", b"[800, -800, 790.5, -799]");
+    let u = u.display().to_string();
+    let o = d.join("out.json");
+    let out = penner(&[
+        "delaunay",
+        &p,
+        "--flips",
+        "ptolemy",
+        "--precision",
+        "f64",
+        "--scale-factors",
+        &u,
+        "-o",
+        &o.display().to_string(),
+    ]);
+    let err = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    assert!(err.contains("every edge certified"), "{err}");
+    // Lengths near e^{±800} are written exactly (binary64 would overflow).
+    let v: serde_json::Value = serde_json::from_slice(&std::fs::read(&o).unwrap()).unwrap();
+    let lengths = v["lengths"].as_array().unwrap();
+    assert_eq!(lengths.len(), 5);
+    assert!(
+        lengths.iter().any(|x| x.as_str().unwrap().len() > 300),
+        "{lengths:?}"
+    );
+    // Bad scale-factor files and options are typed errors (exit 3), naming what is wrong.
+    let bad = |name: &str, body: &[u8], prec: &str, what: &[&str]| {
+        let f = write(&d, name, body);
+        let out = penner(&[
+            "delaunay",
+            &p,
+            "--flips",
+            "ptolemy",
+            "--precision",
+            prec,
+            "--scale-factors",
+            &f.display().to_string(),
+        ]);
+        assert_refused(&out, 3, what);
+    };
+    bad("obj.json", br#"{"u": 1}"#, "f64", &["obj.json", "array"]);
+    bad(
+        "count.json",
+        b"[1, 2, 3]",
+        "f64",
+        &["3 scale factors", "4 vertices"],
+    );
+    bad(
+        "entry.json",
+        br#"[0, 0, "x", 0]"#,
+        "f64",
+        &["entry 2", "v2"],
+    );
+    bad("huge.json", b"[0, 0, 2e6, 0]", "f64", &["v2", "2^20"]);
+    bad("trunc.json", b"[0, 0,", "f64", &["trunc.json"]);
+    bad("prec.json", b"[0, 0, 0, 0]", "256", &["--precision f64"]);
+}
