@@ -574,7 +574,7 @@ impl Metric for ExactMetric {
     fn sign(&self, q: Quad<Edge>, ladder: &Ladder) -> Certified<Sign> {
         match &self.lengths {
             ExactLengths::Exact(l) => decide(&RationalQuad(q.map(|e| &l[e.idx()])), ladder),
-            ExactLengths::Enclosed(l) => decide(&EnclosureQuad(q.map(|e| &l[e.idx()])), ladder),
+            ExactLengths::Enclosed(l) => EnclosureQuad(q.map(|e| &l[e.idx()])).decide_once(),
         }
     }
     fn flip_length(&mut self, q: &QuadEdges) -> Option<ExactSaved> {

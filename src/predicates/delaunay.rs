@@ -50,7 +50,7 @@
 use super::directed::scaled_length;
 use super::ladder::{decide, Ladder, SignPredicate};
 use crate::mesh::{Edge, Face, HalfEdge, Mesh};
-use crate::scalar::{Certified, Interval, Mpfr, Precision, Real, Sign};
+use crate::scalar::{Certified, Interval, Mpfr, Precision, Real, Sign, Stage};
 use rug::Rational;
 
 /// The five lengths of the quadrilateral around edge `ij`: `ij` the edge, `jk, ki` the
@@ -480,10 +480,39 @@ impl SignPredicate for RationalQuad<'_> {
 #[derive(Clone, Copy, Debug)]
 pub struct EnclosureQuad<'a>(pub Quad<&'a Interval<Mpfr>>);
 
-impl SignPredicate for EnclosureQuad<'_> {
-    fn enclosure_sign(&self, _prec: Precision) -> Option<Sign> {
+impl EnclosureQuad<'_> {
+    /// The sign of `P` on the enclosures, evaluated once: the enclosures have a fixed
+    /// precision, so no rung of the ladder can do better. The stage (or the bits tried)
+    /// is the enclosures' own precision, the largest of their endpoints (proof: B62).
+    pub fn decide_once(&self) -> Certified<Sign> {
+        let bits = self
+            .0
+            .to_array()
+            .iter()
+            .map(|x| x.lo().0.prec().max(x.hi().0.prec()))
+            .max()
+            .unwrap_or(0);
+        match self.enclosure_sign_fixed() {
+            Some(value) => Certified::Known {
+                value,
+                stage: Stage::Interval { bits },
+            },
+            None => Certified::Undecided { bits_tried: bits },
+        }
+    }
+
+    fn enclosure_sign_fixed(&self) -> Option<Sign> {
         let ins = self.0.to_array().map(Clone::clone);
         enclose_p(&ins).sign()
+    }
+}
+
+/// Through the ladder every rung evaluates the same fixed-precision enclosure (the rung's
+/// bit count is then reported, not the enclosures'); [`EnclosureQuad::decide_once`]
+/// evaluates once and reports the enclosures' precision.
+impl SignPredicate for EnclosureQuad<'_> {
+    fn enclosure_sign(&self, _prec: Precision) -> Option<Sign> {
+        self.enclosure_sign_fixed()
     }
 }
 
