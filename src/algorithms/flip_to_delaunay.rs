@@ -623,7 +623,10 @@ impl Metric for ExactMetric {
 /// Exact Ptolemy flipping over ℚ (rational lengths stay rational, T28). When a length
 /// exceeds `guard_bits` (numerator + denominator bits) the run continues on MPFR
 /// enclosures at `2·guard_bits` bits (at least 128), rounded outward, and says so in
-/// [`FlipReport::fell_back_after`]; [`FlipReport::max_bits`] reports the growth.
+/// [`FlipReport::fell_back_after`]; [`FlipReport::max_bits`] reports the growth. An edge
+/// decided exactly (possibly a tie, `P = 0`) before the fall-back and not touched after it
+/// stays certified, though re-deciding it on the returned enclosures may give `Undecided`:
+/// the enclosures cannot express an exact zero.
 pub fn flip_to_delaunay_exact(
     mesh: &mut Mesh,
     lengths: Vec<Rational>,
