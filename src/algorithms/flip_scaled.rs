@@ -28,7 +28,7 @@
 //! ```
 
 use super::flip_to_delaunay::{
-    check_faces, run, FlipOptions, FlipReport, FlipToDelaunayError, Metric,
+    check_faces, new_faces, run, FlipOptions, FlipReport, FlipToDelaunayError, Metric,
 };
 use super::flips::{euclidean_length, moderate_f64, ptolemy_length, FlipKind};
 use crate::mesh::{Edge, Mesh};
@@ -106,9 +106,8 @@ impl Metric for ExpMetric {
         if self.kind == FlipKind::Ptolemy {
             return true;
         }
-        // Faces `lki` and `klj` of the flipped quadrilateral (proof: B66, B67).
-        let f = q.flipped().map(|e| &self.lengths[e.idx()]);
-        [[f.ij, f.jk, f.ki], [f.ij, f.il, f.lj]]
+        // proof: B66, B67
+        new_faces(q, &self.lengths)
             .iter()
             .all(|&t| strict_triangle_exp(t, ladder).value() == Some(true))
     }

@@ -380,6 +380,13 @@ fn check_all<T: Real>(mesh: &Mesh, lengths: &[T]) -> Result<bool, DelaunayError>
     Ok(false)
 }
 
+/// The side lengths of the two faces `lki` and `klj` of the flipped quadrilateral `q`
+/// (roles of [`QuadEdges::flipped`]: the new edge first).
+pub(super) fn new_faces<'a, L>(q: &QuadEdges, lengths: &'a [L]) -> [[&'a L; 3]; 2] {
+    let f = q.flipped().map(|e| &lengths[e.idx()]);
+    [[f.ij, f.jk, f.ki], [f.ij, f.il, f.lj]]
+}
+
 /// Refuse a metric on which Euclidean flips are meaningless: the first face that `strict`
 /// does not certify to be a non-degenerate triangle.
 pub(super) fn check_faces(
@@ -442,9 +449,8 @@ impl<T: Real> Metric for RealMetric<'_, T> {
         if self.kind == FlipKind::Ptolemy {
             return true;
         }
-        // Faces `lki` and `klj` of the flipped quadrilateral (proof: B66).
-        let f = q.flipped().map(|e| &self.lengths[e.idx()]);
-        [[f.ij, f.jk, f.ki], [f.ij, f.il, f.lj]]
+        // proof: B66
+        new_faces(q, self.lengths)
             .iter()
             .all(|&t| strict_triangle_real(t, ladder).value() == Some(true))
     }

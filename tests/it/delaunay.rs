@@ -67,6 +67,23 @@ pub fn exact_values<T: Real>(xs: &[T]) -> Vec<MRational> {
     xs.iter().map(|x| to_m(&x.to_rational().unwrap())).collect()
 }
 
+/// The triangle oracle: the three slacks `b + c − a` positive, in malachite (exact).
+pub fn exactly_strict(s: [&MRational; 3]) -> bool {
+    let [a, b, c] = s;
+    let zero = MRational::from(0);
+    (b + c - a) > zero && (c + a - b) > zero && (a + b - c) > zero
+}
+
+/// Whether face `f` of `mesh` is exactly a strict triangle for the lengths `l`.
+pub fn exactly_strict_face(mesh: &Mesh, l: &[MRational], f: penner::mesh::Face) -> bool {
+    exactly_strict(mesh.face_halfedges(f).map(|h| &l[h.edge().idx()]))
+}
+
+/// Whether every face of `mesh` is exactly a strict triangle for the lengths `l`.
+pub fn exactly_strict_faces(mesh: &Mesh, l: &[MRational]) -> bool {
+    mesh.faces().all(|f| exactly_strict_face(mesh, l, f))
+}
+
 /// Interior edges the malachite oracle finds not Delaunay (D < 0): an independent
 /// re-check of a flip result.
 pub fn oracle_non_delaunay(mesh: &Mesh, lengths: &[MRational]) -> Vec<Edge> {

@@ -1,7 +1,7 @@
 //! Flips and flipping to Delaunay (T21–T23, T27–T29) at f64, Dd, MPFR and exact, each
 //! with a negative control; results re-checked with the malachite oracle.
 
-use crate::delaunay::{exact_values, oracle_non_delaunay, to_m};
+use crate::delaunay::{exact_values, exactly_strict_face, oracle_non_delaunay, to_m};
 use crate::meshgen::{icosphere, planar_grid, random_tetrahedron, sheared_torus, Embedded};
 use crate::support::cases;
 use malachite::rational::Rational as MRational;
@@ -448,13 +448,6 @@ fn naive_f64_flipping_leaves_non_delaunay_edges() {
         bad_total > 0,
         "naive f64 flipping left no non-Delaunay edge on these inputs"
     );
-}
-
-/// Whether face `f` is exactly a strict triangle for `l` (malachite).
-fn exactly_strict_face(m: &Mesh, l: &[MRational], f: penner::mesh::Face) -> bool {
-    let zero = MRational::from(0);
-    let [a, b, c] = m.face_halfedges(f).map(|h| &l[h.edge().idx()]);
-    (b + c - a) > zero && (c + a - b) > zero && (a + b - c) > zero
 }
 
 #[test]

@@ -3,7 +3,7 @@
 //! D-form oracle on their exact values and against MPFR at 53 bits (its own exponent
 //! range, the generic driver), with binary64 overflow as the negative control.
 
-use crate::delaunay::{oracle_non_delaunay, to_m};
+use crate::delaunay::{exactly_strict_face, exactly_strict_faces, oracle_non_delaunay, to_m};
 use crate::delaunay_genus::case;
 use crate::support::cases;
 use malachite::rational::Rational as MRational;
@@ -11,7 +11,7 @@ use penner::algorithms::flip_scaled::{flip_to_delaunay_scaled, scaled_lengths};
 use penner::algorithms::flip_to_delaunay::{
     flip_to_delaunay, FlipKind, FlipOptions, FlipToDelaunayError,
 };
-use penner::mesh::{Face, Mesh};
+use penner::mesh::Mesh;
 use penner::predicates::delaunay::DelaunayError;
 use penner::scalar::exp_length::ExpLength;
 use penner::scalar::{Mpfr, Real};
@@ -31,18 +31,6 @@ fn factors(m: &Mesh, rng: &mut ChaCha8Rng) -> Vec<f64> {
 
 fn exact_of(l: &[ExpLength]) -> Vec<MRational> {
     l.iter().map(|x| to_m(&x.to_rational())).collect()
-}
-
-/// Whether face `f` is exactly a strict triangle (malachite).
-fn face_strict(m: &Mesh, l: &[MRational], f: Face) -> bool {
-    let zero = MRational::from(0);
-    let [a, b, c] = m.face_halfedges(f).map(|h| &l[h.edge().idx()]);
-    (b + c - a) > zero && (c + a - b) > zero && (a + b - c) > zero
-}
-
-/// Whether every face is exactly a strict triangle.
-fn faces_strict(m: &Mesh, l: &[MRational]) -> bool {
-    m.faces().all(|f| face_strict(m, l, f))
 }
 
 #[test]
@@ -90,7 +78,11 @@ fn b67_scaled_flipping_up_to_800_is_certified_and_matches_mpfr_53() {
                     // the metric, and the face named is exactly not a strict triangle.
                     assert_eq!(kind, FlipKind::Euclidean);
                     let ex = exact_of(&start);
-                    assert!(!face_strict(&c.mesh, &ex, face), "{}: {face}", c.name);
+                    assert!(
+                        !exactly_strict_face(&c.mesh, &ex, face),
+                        "{}: {face}",
+                        c.name
+                    );
                     refused_metrics += 1;
                     continue;
                 }
@@ -102,7 +94,11 @@ fn b67_scaled_flipping_up_to_800_is_certified_and_matches_mpfr_53() {
             bad.retain(|e| !r.undecided.contains(e) && !r.refused.contains(e));
             assert!(bad.is_empty(), "{} {kind:?}: {bad:?}", c.name);
             if kind == FlipKind::Euclidean {
-                assert!(faces_strict(&m, &exact), "{}: a degenerate face", c.name);
+                assert!(
+                    exactly_strict_faces(&m, &exact),
+                    "{}: a degenerate face",
+                    c.name
+                );
             }
             flips += r.flips;
             // Oracle: the generic driver on MPFR values at 53 bits (its own exponent range,

@@ -2,6 +2,7 @@
 //! rounded difference (monotone rounding), checked against malachite rationals; and the
 //! Euclidean flips that rely on it: no returned face is degenerate.
 
+use crate::delaunay::{exactly_strict, exactly_strict_faces};
 use crate::support::cases;
 use malachite::rational::Rational as MRational;
 use penner::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
@@ -15,13 +16,6 @@ use penner::scalar::{Dd, Real};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rug::Rational;
-
-/// The oracle: the three slacks `b + c − a` positive, in malachite (exact).
-fn exact_strict(s: [&MRational; 3]) -> bool {
-    let [a, b, c] = s;
-    let zero = MRational::from(0);
-    (b + c - a) > zero && (c + a - b) > zero && (a + b - c) > zero
-}
 
 fn m(x: f64) -> MRational {
     MRational::try_from(x).unwrap()
@@ -63,7 +57,7 @@ fn b66_monotone_triangle_test_never_contradicts_exact_sides() {
         if !(a.is_normal() && b.is_normal() && c.is_normal()) || a <= 0.0 {
             continue;
         }
-        let exact = exact_strict([&m(a), &m(b), &m(c)]);
+        let exact = exactly_strict([&m(a), &m(b), &m(c)]);
         if strict_triangle_f64(a, b, c) {
             assert!(
                 exact,
@@ -140,12 +134,9 @@ fn flat_quad(rng: &mut ChaCha8Rng) -> Option<(Mesh, Vec<f64>)> {
     faces_strict(&mesh, &l).then_some((mesh, l))
 }
 
-/// Whether every face of `mesh` is exactly a strict triangle for `l` (malachite).
+/// Whether every face of `mesh` is exactly a strict triangle for binary64 lengths `l`.
 fn faces_strict(mesh: &Mesh, l: &[f64]) -> bool {
-    mesh.faces().all(|f| {
-        let s = mesh.face_halfedges(f).map(|h| m(l[h.edge().idx()]));
-        exact_strict([&s[0], &s[1], &s[2]])
-    })
+    exactly_strict_faces(mesh, &l.iter().map(|&x| m(x)).collect::<Vec<_>>())
 }
 
 #[test]
