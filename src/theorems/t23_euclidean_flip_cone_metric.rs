@@ -1,23 +1,38 @@
 //! T23 (notes §1.5.2): Euclidean flips preserve the cone metric — every cone angle is
 //! unchanged and discrete Gauss–Bonnet still holds.
 //!
-//! Certified: the flip sequence chosen by [`flip_to_delaunay`] is replayed on outward-
-//! rounded MPFR enclosures of the *exact* flipped lengths ([`euclidean_length_enclosure`]),
-//! cone angles are enclosed with the half-angle form (MATH.md §1) before and after, and the
-//! two enclosures of each cone angle must intersect (the exact values are equal). With the
-//! Ptolemy update instead, cone angles change and the enclosures separate (the negative
-//! control of the tests).
+//! The flip sequence chosen by [`flip_to_delaunay`] is replayed on outward-rounded MPFR
+//! enclosures of the *exact* flipped lengths ([`euclidean_length_enclosure`]), and cone
+//! angles are enclosed with the half-angle form (MATH.md §1) before and after
+//! ([`verify_flip_sequence`]). Two independent parts decide the verdict (proof: T23):
+//!
+//! - **Refutation.** Disjoint enclosures of a cone angle before and after (or of the
+//!   Gauss–Bonnet sum and `2πχ`) prove that the exact values differ: a certified `Fails`.
+//!   With the Ptolemy update instead of the Euclidean one the cone angles change and the
+//!   enclosures separate (the negative control of the tests and of `T23-NC`).
+//! - **Proof of equality.** Intersecting enclosures cannot prove equality. The equality is
+//!   proved instead from the hypotheses of the planar lemma of T23, certified per replayed
+//!   flip on the enclosures ([`flip_hypotheses_certified`]): both triangles of the
+//!   quadrilateral strictly satisfy the triangle inequality, and the quadrilateral is
+//!   strictly convex at `i` and `j` (`α_i^{ijk} + α_i^{jil} < π`, the same at `j`), decided
+//!   as the signs of `Q_i = ℓ_il(a² + c² − b²) + ℓ_ki(a² + d² − e²) > 0` and
+//!   `Q_j = ℓ_lj(a² + b² − c²) + ℓ_jk(a² + e² − d²) > 0`. Then the exact Euclidean flip
+//!   leaves every corner-angle sum at `i, j, k, l` unchanged, so the exact cone angles are
+//!   equal. A `Holds` is certified only when every replayed flip is Euclidean with its
+//!   hypotheses certified; otherwise it is `Holds { certified: false }` ("not refuted": the
+//!   enclosures intersect, which is all that is known).
 
 use super::{Settings, Verdict, Witness};
 use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
 use crate::algorithms::flips::{euclidean_length_enclosure, ptolemy_length_enclosure};
-use crate::mesh::Mesh;
-use crate::predicates::delaunay::QuadEdges;
-use crate::predicates::directed::{div_positive, enclose_f64, overlaps, valid};
+use crate::mesh::{Edge, Mesh};
+use crate::predicates::delaunay::{Quad, QuadEdges};
+use crate::predicates::directed::{div_positive, enclose_f64, overlaps, strictly_below, valid};
 use crate::scalar::{Interval, Mpfr, Precision, Real};
 
 /// Enclosures of the corner angle opposite `a` in a triangle `a, b, c`:
-/// `2·atan √((a−b+c)(a+b−c) / ((a+b+c)(−a+b+c)))`; `None` if the triangle may be invalid.
+/// `2·atan √((a−b+c)(a+b−c) / ((a+b+c)(−a+b+c)))` (MATH.md §1); `None` if the triangle may
+/// be invalid.
 pub fn corner_angle_enclosure(
     a: &Interval<Mpfr>,
     b: &Interval<Mpfr>,
@@ -29,7 +44,9 @@ pub fn corner_angle_enclosure(
     valid(half * &enclose_f64(2.0, a.ctx()))
 }
 
-/// Enclosures of all cone angles, or the first face whose angles cannot be enclosed.
+/// Enclosures of all cone angles `θ_v = Σ` corner angles at `v` ([`corner_angle_enclosure`]),
+/// or the first face whose angles cannot be enclosed (also when `l` has no entry for one of
+/// its edges).
 pub fn cone_angle_enclosures(
     mesh: &Mesh,
     l: &[Interval<Mpfr>],
@@ -38,10 +55,11 @@ pub fn cone_angle_enclosures(
     let mut theta = vec![enclose_f64(0.0, prec); mesh.n_vertices()];
     for f in mesh.faces() {
         let hs = mesh.face_halfedges(f);
+        let len = |h: crate::mesh::HalfEdge| l.get(h.edge().idx()).ok_or(f.0);
         for i in 0..3 {
-            let a = &l[hs[i].edge().idx()];
-            let b = &l[hs[(i + 1) % 3].edge().idx()];
-            let c = &l[hs[(i + 2) % 3].edge().idx()];
+            let a = len(hs[i])?;
+            let b = len(hs[(i + 1) % 3])?;
+            let c = len(hs[(i + 2) % 3])?;
             let v = mesh.tail(hs[(i + 2) % 3]).idx();
             theta[v] += &corner_angle_enclosure(a, b, c).ok_or(f.0)?;
         }
@@ -49,16 +67,97 @@ pub fn cone_angle_enclosures(
     Ok(theta)
 }
 
-/// Flip a copy of `(mesh, lengths)` to Delaunay with Euclidean flips, replay the flips on
-/// enclosures with the `replay` update (Euclidean for the theorem), and compare cone
-/// angles and the Gauss–Bonnet sum at `prec` bits.
-#[allow(clippy::too_many_lines)]
+/// Whether the hypotheses of T23's planar lemma are certified on enclosures `q` of the
+/// exact lengths `a = ℓ_ij, b = ℓ_jk, c = ℓ_ki, d = ℓ_il, e = ℓ_lj` of the quadrilateral of
+/// a flip (proof: T23, Lemma): the triangles `(a, b, c)` and `(a, d, e)` strictly satisfy
+/// the triangle inequality (`−a+b+c`, `a−b+c`, `a+b−c` and the same with `d, e` certified
+/// positive), and the quadrilateral is strictly convex at `i` and `j`:
+///
+/// ```text
+/// Q_i = d(a² + c² − b²) + c(a² + d² − e²) > 0   ⇔ α_i^{ijk} + α_i^{jil} < π,
+/// Q_j = e(a² + b² − c²) + b(a² + e² − d²) > 0   ⇔ α_j^{ijk} + α_j^{jil} < π,
+/// ```
+///
+/// (`Q_i = 2acd (cos α_i^{ijk} + cos α_i^{jil})`, law of cosines). Every sign is read from
+/// an outward-rounded enclosure (proof: B20), so `true` proves the hypotheses for the exact
+/// lengths; `false` means they could not be certified (or fail).
+pub fn flip_hypotheses_certified(q: Quad<&Interval<Mpfr>>) -> bool {
+    let zero = enclose_f64(0.0, q.ij.ctx());
+    let positive = |x: &Interval<Mpfr>| strictly_below(&zero, x);
+    let strict_triangle = |a: &Interval<Mpfr>, b: &Interval<Mpfr>, c: &Interval<Mpfr>| {
+        positive(&(b.clone() + c - a))
+            && positive(&(a.clone() - b + c))
+            && positive(&(a.clone() + b - c))
+    };
+    let (a, b, c, d, e) = (q.ij, q.jk, q.ki, q.il, q.lj);
+    let sq = |x: &Interval<Mpfr>| x.clone() * x;
+    let q_i = d.clone() * &(sq(a) + &sq(c) - &sq(b)) + &(c.clone() * &(sq(a) + &sq(d) - &sq(e)));
+    let q_j = e.clone() * &(sq(a) + &sq(b) - &sq(c)) + &(b.clone() * &(sq(a) + &sq(e) - &sq(d)));
+    strict_triangle(a, b, c) && strict_triangle(a, d, e) && positive(&q_i) && positive(&q_j)
+}
+
+/// Flip a copy of `(mesh, lengths)` to Delaunay with Euclidean flips ([`flip_to_delaunay`],
+/// recording the sequence) and compare cone angles and the Gauss–Bonnet sum before and
+/// after the flips replayed with the `replay` update (Euclidean for the theorem) on
+/// enclosures at `prec` bits ([`verify_flip_sequence`], whose verdict this is).
 pub fn check_euclidean_flips_preserve_cone_metric<T: Real>(
     mesh: &Mesh,
     lengths: &[T],
     replay: FlipKind,
     prec: u32,
     settings: &Settings,
+) -> Verdict {
+    if let Err(err) = Precision::new(u64::from(prec)) {
+        return Verdict::NotApplicable {
+            reason: err.to_string(),
+        };
+    }
+    if lengths.iter().any(|l| l.to_rational().is_none()) {
+        return Verdict::NotApplicable {
+            reason: "a length is not finite".into(),
+        };
+    }
+    let (mut m, mut l) = (mesh.clone(), lengths.to_vec());
+    let opts = FlipOptions {
+        ladder: settings.ladder,
+        record: true,
+        ..FlipOptions::default()
+    };
+    match flip_to_delaunay(&mut m, &mut l, FlipKind::Euclidean, &opts) {
+        Ok(report) => verify_flip_sequence(mesh, lengths, &report.sequence, replay, prec),
+        Err(err) => Verdict::NotApplicable {
+            reason: err.to_string(),
+        },
+    }
+}
+
+/// The comparison of T23 for the flips `sequence` of `(mesh, lengths)` (the exact values of
+/// `lengths`), replayed with the `replay` update on outward-rounded enclosures at `prec`
+/// bits: every cone angle and the Gauss–Bonnet sum `Σ_int (2π − θ) + Σ_∂ (π − θ) = 2πχ`
+/// after the flips against the cone angles before.
+///
+/// - `NotApplicable`: a bad precision, a length count other than one per edge, a
+///   non-finite length, or an input face whose angles cannot be enclosed (it may violate
+///   the triangle inequality);
+/// - `Undecided`: a flip that cannot be replayed (no such edge, boundary, same face on both
+///   sides), a new length or the final cone angles that cannot be enclosed;
+/// - `Fails { certified: true }`: disjoint enclosures (the exact values differ), every such
+///   vertex listed;
+/// - `Holds { certified: true }`: the enclosures intersect and every flip is Euclidean with
+///   [`flip_hypotheses_certified`], which proves the exact cone angles equal (proof: T23,
+///   Lemma; an empty sequence leaves the metric unchanged);
+/// - `Holds { certified: false }`: the enclosures intersect but some flip's hypotheses are
+///   not certified, or some flip is not Euclidean: not refuted, not proved.
+///
+/// `max_error` is the widest enclosure of a cone angle (an upper bound on any difference
+/// the comparison could have missed).
+#[allow(clippy::too_many_lines)]
+pub fn verify_flip_sequence<T: Real>(
+    mesh: &Mesh,
+    lengths: &[T],
+    sequence: &[Edge],
+    replay: FlipKind,
+    prec: u32,
 ) -> Verdict {
     let bits = prec;
     let prec = match Precision::new(u64::from(bits)) {
@@ -69,6 +168,15 @@ pub fn check_euclidean_flips_preserve_cone_metric<T: Real>(
             }
         }
     };
+    if lengths.len() != mesh.n_edges() {
+        return Verdict::NotApplicable {
+            reason: format!(
+                "{} lengths given for a mesh with {} edges",
+                lengths.len(),
+                mesh.n_edges()
+            ),
+        };
+    }
     let mut enc = Vec::with_capacity(lengths.len());
     for l in lengths {
         let Some(q) = l.to_rational() else {
@@ -78,20 +186,6 @@ pub fn check_euclidean_flips_preserve_cone_metric<T: Real>(
         };
         enc.push(Interval::from_rational(&q, prec));
     }
-    let (mut m, mut l) = (mesh.clone(), lengths.to_vec());
-    let opts = FlipOptions {
-        ladder: settings.ladder,
-        record: true,
-        ..FlipOptions::default()
-    };
-    let report = match flip_to_delaunay(&mut m, &mut l, FlipKind::Euclidean, &opts) {
-        Ok(r) => r,
-        Err(err) => {
-            return Verdict::NotApplicable {
-                reason: err.to_string(),
-            }
-        }
-    };
     let before = match cone_angle_enclosures(mesh, &enc, prec) {
         Ok(t) => t,
         Err(f) => {
@@ -102,8 +196,14 @@ pub fn check_euclidean_flips_preserve_cone_metric<T: Real>(
     };
     let mut replayed = mesh.clone();
     let mut undecided = Vec::new();
-    for &e in &report.sequence {
-        let Some(q) = QuadEdges::of(&replayed, e) else {
+    // Whether T23's lemma proves the exact cone angles equal: every flip Euclidean with its
+    // hypotheses certified (no flip: the metric is unchanged).
+    let mut proved = true;
+    for &e in sequence {
+        let quad = (e.idx() < replayed.n_edges())
+            .then(|| QuadEdges::of(&replayed, e))
+            .flatten();
+        let Some(q) = quad else {
             undecided.push(Witness {
                 element: e.to_string(),
                 detail: "recorded flip not replayable".into(),
@@ -111,9 +211,11 @@ pub fn check_euclidean_flips_preserve_cone_metric<T: Real>(
             });
             break;
         };
+        let lq = q.lengths(&enc);
+        proved = proved && replay == FlipKind::Euclidean && flip_hypotheses_certified(lq);
         let new = match replay {
-            FlipKind::Euclidean => euclidean_length_enclosure(q.lengths(&enc)),
-            FlipKind::Ptolemy => ptolemy_length_enclosure(q.lengths(&enc)),
+            FlipKind::Euclidean => euclidean_length_enclosure(lq),
+            FlipKind::Ptolemy => ptolemy_length_enclosure(lq),
         };
         let Some(new) = new else {
             undecided.push(Witness {
@@ -184,7 +286,7 @@ pub fn check_euclidean_flips_preserve_cone_metric<T: Real>(
     }
     if witnesses.is_empty() {
         Verdict::Holds {
-            certified: true,
+            certified: proved,
             max_error: max_width,
         }
     } else {

@@ -35,6 +35,7 @@ mod strategies;
 mod support;
 mod theorems_certified;
 mod theorems_fixed;
+mod theorems_flips;
 mod theorems_random;
 mod tidy;
 mod tie_claims;
