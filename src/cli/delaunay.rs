@@ -35,8 +35,14 @@ pub struct Options<'a> {
 }
 
 /// Read a JSON array of one finite number per vertex (`u_v`), naming the file and the
-/// offending entry.
-fn read_scale_factors(path: &Path, n_vertices: usize) -> Result<Vec<f64>, CliError> {
+/// offending entry; scaled flipping runs at `f64` only.
+fn read_scale_factors(path: &Path, prec: Prec, n_vertices: usize) -> Result<Vec<f64>, CliError> {
+    if prec != Prec::F64 {
+        return Err(CliError::Input(
+            "--scale-factors: scaled lengths are m·2^k with binary64 significands; use --precision f64"
+                .to_string(),
+        ));
+    }
     let text = read_text(path)?;
     let value: serde_json::Value = serde_json::from_str(&text)
         .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
@@ -102,6 +108,18 @@ fn flip_real<T: Real>(
     Ok((report, exact))
 }
 
+/// Refuse an output file that exists before doing any work (never overwrite).
+fn refuse_existing(output: Option<&Path>) -> Result<(), CliError> {
+    match output {
+        Some(out) if out.exists() => Err(CliError::Write {
+            path: out.to_path_buf(),
+            reason: "the file exists (penner never overwrites a file; choose another name)"
+                .to_string(),
+        }),
+        _ => Ok(()),
+    }
+}
+
 /// Run `penner delaunay`.
 pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     let precs = super::precisions(o.precision)?;
@@ -111,15 +129,7 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
                 .to_string(),
         ));
     };
-    if let Some(out) = o.output {
-        if out.exists() {
-            return Err(CliError::Write {
-                path: out.to_path_buf(),
-                reason: "the file exists (penner never overwrites a file; choose another name)"
-                    .to_string(),
-            });
-        }
-    }
+    refuse_existing(o.output)?;
     let mut case = super::input::load_case(o.path)?;
     let kind = match o.flips {
         ArgFlipKind::Euclidean => FlipKind::Euclidean,
@@ -136,15 +146,7 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         b
     });
     let scale = match o.scale_factors {
-        Some(path) => {
-            if prec != Prec::F64 {
-                return Err(CliError::Input(
-                    "--scale-factors: scaled lengths are m·2^k with binary64 significands; use --precision f64"
-                        .to_string(),
-                ));
-            }
-            Some(read_scale_factors(path, case.mesh.n_vertices())?)
-        }
+        Some(path) => Some(read_scale_factors(path, prec, case.mesh.n_vertices())?),
         None => None,
     };
     let result = match (prec, kind, &case.metric, &scale) {

@@ -49,7 +49,7 @@ fn b67_scaled_flipping_up_to_800_is_certified_and_matches_mpfr_53() {
             .map(|e| {
                 let h = e.halfedge();
                 let (a, b) = (c.mesh.tail(h).idx(), c.mesh.tip(h).idx());
-                ((u[a] + u[b]) / 2.0).exp() * base[e.idx()]
+                f64::midpoint(u[a], u[b]).exp() * base[e.idx()]
             })
             .collect();
         let overflows = naive.iter().any(|x| !x.is_normal());
