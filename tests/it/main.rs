@@ -7,6 +7,7 @@ mod cone_angles_kernel;
 mod controls;
 mod definition_two;
 mod delaunay;
+mod delaunay_adversarial;
 mod delaunay_flips;
 mod delaunay_genus;
 mod delaunay_scaled;

@@ -270,3 +270,392 @@ pub fn jittered_torus(nu: u32, nv: u32, seed: u64) -> (Mesh, Vec<f64>) {
         .collect();
     (mesh, len)
 }
+
+// ---------------------------------------------------------------------------------------
+// Adversarial families (tests/it/delaunay_adversarial.rs): cocircular polygons and lattice
+// grids, and marching-tetrahedra sliver surfaces.
+
+/// Append to `faces` a triangulation of the convex polygon `poly` (vertex ids in
+/// counter-clockwise order): the triangle on the side `poly[0]–poly[last]` has apex
+/// `poly[k]`, `k` random (or `k = 1` when `fan`, a fan around the last vertex), and the
+/// two polygons on either side of it are triangulated the same way. Every face is
+/// counter-clockwise.
+pub fn triangulate_convex_polygon(
+    poly: &[u32],
+    fan: bool,
+    rng: &mut ChaCha8Rng,
+    faces: &mut Vec<[u32; 3]>,
+) {
+    if poly.len() < 3 {
+        return;
+    }
+    let last = poly.len() - 1;
+    let k = if fan { 1 } else { rng.gen_range(1..last) };
+    faces.push([poly[0], poly[k], poly[last]]);
+    triangulate_convex_polygon(&poly[..=k], fan, rng, faces);
+    triangulate_convex_polygon(&poly[k..], fan, rng, faces);
+}
+
+/// A convex `n`-gon with vertices `0..n` counter-clockwise, triangulated as the fan from
+/// vertex 0 (`fan`) or at random: with the vertices on a circle, every quadrilateral of
+/// two adjacent triangles is cocircular.
+pub fn polygon_mesh(n: u32, fan: bool, seed: u64) -> Mesh {
+    let mut faces = Vec::new();
+    if fan {
+        faces.extend((1..n - 1).map(|i| [0, i, i + 1]));
+    } else {
+        let poly: Vec<u32> = (0..n).collect();
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        triangulate_convex_polygon(&poly, false, &mut rng, &mut faces);
+    }
+    Mesh::from_faces(n, &faces).unwrap()
+}
+
+/// Rational chord lengths of a cyclic `n`-gon (unit circumradius, vertices `0..n`
+/// counter-clockwise): vertex `k` sits at angle `2φ_k` with
+/// `cos φ_k = (1−t²)/(1+t²)`, `sin φ_k = 2t/(1+t²)` for the rational `t = t_k ≈
+/// tan(π(k+½)/(2n))` (to 1/1000), so the chord `2|sin(φ_k − φ_m)|` between `k` and `m` is
+/// rational and every quadrilateral is exactly cocircular. One length per edge of `mesh`.
+pub fn rational_cyclic_lengths(mesh: &Mesh, n: u32) -> Vec<rug::Rational> {
+    use rug::Rational;
+    let t: Vec<Rational> = (0..n)
+        .map(|k| {
+            let x = (PI * (f64::from(k) + 0.5) / (2.0 * f64::from(n))).tan();
+            Rational::from(((x * 1000.0).round() as i64, 1000))
+        })
+        .collect();
+    assert!(t.windows(2).all(|w| w[0] < w[1]), "angles must increase");
+    let cs: Vec<(Rational, Rational)> = t
+        .iter()
+        .map(|t| {
+            let t2 = Rational::from(t * t);
+            let den = Rational::from(1 + &t2);
+            (Rational::from(1 - &t2) / &den, Rational::from(2 * t) / den)
+        })
+        .collect();
+    mesh.edges()
+        .map(|e| {
+            let h = e.halfedge();
+            let ((ca, sa), (cb, sb)) = (&cs[mesh.tail(h).idx()], &cs[mesh.tip(h).idx()]);
+            let s = Rational::from(sa * cb) - Rational::from(ca * sb);
+            2 * s.abs()
+        })
+        .collect()
+}
+
+/// The lattice whose integer coordinates a [`LatticeMesh`] uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Lattice {
+    /// Cartesian `(wx·i, wy·j)`: a grid of congruent `wx × wy` rectangles.
+    Rect {
+        /// Cell width.
+        wx: i64,
+        /// Cell height.
+        wy: i64,
+    },
+    /// The equilateral triangular lattice `i·(1, 0) + j·(½, √3/2)`.
+    Triangular,
+}
+
+/// A planar triangulation of lattice points, faces counter-clockwise.
+pub struct LatticeMesh {
+    /// The lattice of the coordinates.
+    pub lattice: Lattice,
+    /// Integer lattice coordinates of each vertex.
+    pub coords: Vec<[i64; 2]>,
+    /// Counter-clockwise faces.
+    pub faces: Vec<[u32; 3]>,
+}
+
+impl LatticeMesh {
+    /// The half-edge mesh.
+    pub fn mesh(&self) -> Mesh {
+        Mesh::from_faces(self.coords.len() as u32, &self.faces).unwrap()
+    }
+    /// Integer coordinates `(X, Y)` with Cartesian position `(X, Y·√w)/s`: `w = 1, s = 1`
+    /// for rectangles, `X = 2i + j`, `Y = j`, `w = 3`, `s = 2` for the triangular lattice.
+    /// Orientation signs are those of the Cartesian points (a positive linear map).
+    pub fn scaled(&self, p: [i64; 2]) -> ([i64; 2], i64) {
+        match self.lattice {
+            Lattice::Rect { wx, wy } => ([wx * p[0], wy * p[1]], 1),
+            Lattice::Triangular => ([2 * p[0] + p[1], p[1]], 3),
+        }
+    }
+    /// The exact squared length of the lattice vector from `p` to `q` (an integer: the
+    /// triangular lattice's `a² + ab + b²`, a rectangle's `(wx·a)² + (wy·b)²`).
+    pub fn norm2(&self, p: [i64; 2], q: [i64; 2]) -> i64 {
+        let (a, b) = (q[0] - p[0], q[1] - p[1]);
+        match self.lattice {
+            Lattice::Rect { wx, wy } => (wx * a).pow(2) + (wy * b).pow(2),
+            Lattice::Triangular => a * a + a * b + b * b,
+        }
+    }
+    /// Exact squared edge lengths of `mesh` (built by [`LatticeMesh::mesh`]).
+    pub fn squared_lengths(&self, mesh: &Mesh) -> Vec<i64> {
+        mesh.edges()
+            .map(|e| {
+                let h = e.halfedge();
+                self.norm2(
+                    self.coords[mesh.tail(h).idx()],
+                    self.coords[mesh.tip(h).idx()],
+                )
+            })
+            .collect()
+    }
+    /// Cartesian positions in f64, rotated by `theta` and shifted by `shift`.
+    pub fn positions(&self, theta: f64, shift: [f64; 2]) -> Vec<[f64; 2]> {
+        let (s, c) = theta.sin_cos();
+        self.coords
+            .iter()
+            .map(|p| {
+                let (x, y) = match self.lattice {
+                    Lattice::Rect { wx, wy } => ((wx * p[0]) as f64, (wy * p[1]) as f64),
+                    Lattice::Triangular => (
+                        p[0] as f64 + 0.5 * p[1] as f64,
+                        p[1] as f64 * 3f64.sqrt() / 2.0,
+                    ),
+                };
+                [c * x - s * y + shift[0], s * x + c * y + shift[1]]
+            })
+            .collect()
+    }
+}
+
+/// Orientation of three lattice points in [`LatticeMesh::scaled`] coordinates (the sign
+/// is the Cartesian orientation's).
+pub fn lattice_orient(lm: &LatticeMesh, a: u32, b: u32, c: u32) -> i64 {
+    let p = |v: u32| lm.scaled(lm.coords[v as usize]).0;
+    let (a, b, c) = (p(a), p(b), p(c));
+    (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+}
+
+/// The integer incircle determinant of lattice points `a, b, c, d` in
+/// [`LatticeMesh::scaled`] coordinates: positive iff `d` lies inside the circle through the
+/// counter-clockwise `a, b, c`, zero iff the four are cocircular (for the triangular
+/// lattice the Cartesian determinant is `√3/16` times it).
+pub fn lattice_incircle(lm: &LatticeMesh, a: u32, b: u32, c: u32, d: u32) -> i128 {
+    let (pd, w) = lm.scaled(lm.coords[d as usize]);
+    let w = i128::from(w);
+    let r = |v: u32| {
+        let p = lm.scaled(lm.coords[v as usize]).0;
+        let (x, y) = (i128::from(p[0] - pd[0]), i128::from(p[1] - pd[1]));
+        (x, y, x * x + w * y * y)
+    };
+    let (ax, ay, a2) = r(a);
+    let (bx, by, b2) = r(b);
+    let (cx, cy, c2) = r(c);
+    ax * (by * c2 - b2 * cy) - ay * (bx * c2 - b2 * cx) + a2 * (bx * cy - by * cx)
+}
+
+/// An `n × n` grid of `wx × wy` rectangles, each cut along a random diagonal (every
+/// diagonal is then a cocircular tie).
+pub fn rect_lattice_grid(n: i64, wx: i64, wy: i64, seed: u64) -> LatticeMesh {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let coords: Vec<[i64; 2]> = (0..=n).flat_map(|j| (0..=n).map(move |i| [i, j])).collect();
+    let v = |i: i64, j: i64| (j * (n + 1) + i) as u32;
+    let mut faces = Vec::new();
+    for j in 0..n {
+        for i in 0..n {
+            let (a, b, c, d) = (v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1));
+            if rng.gen_bool(0.5) {
+                faces.extend([[a, b, c], [a, c, d]]);
+            } else {
+                faces.extend([[a, b, d], [b, c, d]]);
+            }
+        }
+    }
+    LatticeMesh {
+        lattice: Lattice::Rect { wx, wy },
+        coords,
+        faces,
+    }
+}
+
+/// The equilateral triangulation of the `(n+1) × (n+1)` parallelogram of triangular
+/// lattice points (every face equilateral, no quadrilateral cocircular).
+pub fn triangular_lattice_grid(n: i64) -> LatticeMesh {
+    let coords: Vec<[i64; 2]> = (0..=n).flat_map(|j| (0..=n).map(move |i| [i, j])).collect();
+    let v = |i: i64, j: i64| (j * (n + 1) + i) as u32;
+    let mut faces = Vec::new();
+    for j in 0..n {
+        for i in 0..n {
+            faces.push([v(i, j), v(i + 1, j), v(i, j + 1)]);
+            faces.push([v(i + 1, j), v(i + 1, j + 1), v(i, j + 1)]);
+        }
+    }
+    LatticeMesh {
+        lattice: Lattice::Triangular,
+        coords,
+        faces,
+    }
+}
+
+/// The honeycomb: the triangular lattice with the sublattice `i ≡ j (mod 3)` removed.
+/// Each removed point with `1 ≤ i, j < n` leaves a regular hexagon of its six neighbours
+/// (cocircular), triangulated at random; the hexagons tile a region of the plane, so
+/// every diagonal inside a hexagon is a tie and every side between two hexagons is
+/// strictly Delaunay.
+pub fn honeycomb(n: i64, seed: u64) -> LatticeMesh {
+    const RING: [[i64; 2]; 6] = [[1, 0], [0, 1], [-1, 1], [-1, 0], [0, -1], [1, -1]];
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut id: HashMap<[i64; 2], u32> = HashMap::new();
+    let mut coords = Vec::new();
+    let mut faces = Vec::new();
+    for j in 1..n {
+        for i in 1..n {
+            if (i - j).rem_euclid(3) != 0 {
+                continue;
+            }
+            let mut ring: Vec<u32> = RING
+                .iter()
+                .map(|d| {
+                    let p = [i + d[0], j + d[1]];
+                    *id.entry(p).or_insert_with(|| {
+                        coords.push(p);
+                        (coords.len() - 1) as u32
+                    })
+                })
+                .collect();
+            ring.rotate_left(rng.gen_range(0..6));
+            triangulate_convex_polygon(&ring, false, &mut rng, &mut faces);
+        }
+    }
+    LatticeMesh {
+        lattice: Lattice::Triangular,
+        coords,
+        faces,
+    }
+}
+
+/// Marching tetrahedra on the `n³` cubes of `[−w, w]³`, each split into the six Kuhn
+/// tetrahedra around its main diagonal (a split consistent across cubes), for the level
+/// set `field = 0`; the field must be positive on the boundary of the box. As in
+/// marching-cubes output, a grid value with `|f| < snap` is replaced by
+/// `±tiny·(1 + index mod 10)` (sign kept): the surface then passes within about `tiny`
+/// cells of that grid point, and the vertices on its grid edges form clusters of
+/// near-coincident points (needles and caps). Faces are oriented consistently by a
+/// breadth-first walk (the surface is closed and orientable).
+pub fn marching_tetrahedra(
+    n: u32,
+    w: f64,
+    field: &dyn Fn([f64; 3]) -> f64,
+    snap: f64,
+    tiny: f64,
+) -> Embedded {
+    // The axis orders of the six Kuhn tetrahedra.
+    const PERMS: [[usize; 3]; 6] = [
+        [0, 1, 2],
+        [0, 2, 1],
+        [1, 0, 2],
+        [1, 2, 0],
+        [2, 0, 1],
+        [2, 1, 0],
+    ];
+    let n1 = n + 1;
+    let gid = |i: u32, j: u32, k: u32| (k * n1 + j) * n1 + i;
+    let gpos = |g: u32| {
+        let (i, j, k) = (g % n1, (g / n1) % n1, g / (n1 * n1));
+        [i, j, k].map(|c| -w + 2.0 * w * f64::from(c) / f64::from(n))
+    };
+    let vals: Vec<f64> = (0..n1 * n1 * n1)
+        .map(|g| {
+            let f = field(gpos(g));
+            if f.abs() < snap {
+                let s = if f < 0.0 { -1.0 } else { 1.0 };
+                s * tiny * (1.0 + f64::from(g % 10))
+            } else {
+                f
+            }
+        })
+        .collect();
+    let mut pos = Vec::new();
+    let mut index: HashMap<(u32, u32), u32> = HashMap::new();
+    let mut vertex = |a: u32, b: u32| -> u32 {
+        let key = (a.min(b), a.max(b));
+        *index.entry(key).or_insert_with(|| {
+            let (p, q) = (gpos(key.0), gpos(key.1));
+            let (fp, fq) = (vals[key.0 as usize], vals[key.1 as usize]);
+            let t = fp / (fp - fq);
+            pos.push(std::array::from_fn(|d| p[d] + t * (q[d] - p[d])));
+            (pos.len() - 1) as u32
+        })
+    };
+    let mut tris: Vec<[u32; 3]> = Vec::new();
+    for k in 0..n {
+        for j in 0..n {
+            for i in 0..n {
+                for perm in PERMS {
+                    let mut c = [i, j, k];
+                    let mut tet = [gid(c[0], c[1], c[2]); 4];
+                    for (s, &axis) in perm.iter().enumerate() {
+                        c[axis] += 1;
+                        tet[s + 1] = gid(c[0], c[1], c[2]);
+                    }
+                    let (inside, outside): (Vec<u32>, Vec<u32>) =
+                        tet.iter().partition(|&&g| vals[g as usize] < 0.0);
+                    match (inside.len(), outside.len()) {
+                        (1, 3) | (3, 1) => {
+                            let (a, o) = if inside.len() == 1 {
+                                (inside[0], outside)
+                            } else {
+                                (outside[0], inside)
+                            };
+                            tris.push([vertex(a, o[0]), vertex(a, o[1]), vertex(a, o[2])]);
+                        }
+                        (2, 2) => {
+                            let (a, b, c, d) = (inside[0], inside[1], outside[0], outside[1]);
+                            let (ac, ad, bd, bc) =
+                                (vertex(a, c), vertex(a, d), vertex(b, d), vertex(b, c));
+                            tris.push([ac, ad, bd]);
+                            tris.push([ac, bd, bc]);
+                        }
+                        _ => {}
+                    }
+                }
+            }
+        }
+    }
+    let faces = orient_consistently(&tris);
+    Embedded { pos, faces }
+}
+
+/// The triangles `tris` (each undirected edge in exactly two) reversed where needed so
+/// that the two triangles at every edge run through it in opposite directions.
+fn orient_consistently(tris: &[[u32; 3]]) -> Vec<[u32; 3]> {
+    let key = |a: u32, b: u32| (a.min(b), a.max(b));
+    let mut at: HashMap<(u32, u32), Vec<usize>> = HashMap::new();
+    for (f, t) in tris.iter().enumerate() {
+        for s in 0..3 {
+            at.entry(key(t[s], t[(s + 1) % 3])).or_default().push(f);
+        }
+    }
+    assert!(
+        at.values().all(|fs| fs.len() == 2),
+        "marching tetrahedra surface is not closed and manifold"
+    );
+    let mut out: Vec<Option<[u32; 3]>> = vec![None; tris.len()];
+    for start in 0..tris.len() {
+        if out[start].is_some() {
+            continue;
+        }
+        out[start] = Some(tris[start]);
+        let mut queue = std::collections::VecDeque::from([start]);
+        while let Some(f) = queue.pop_front() {
+            let t = out[f].unwrap();
+            for s in 0..3 {
+                let (a, b) = (t[s], t[(s + 1) % 3]);
+                for &g in &at[&key(a, b)] {
+                    if g == f || out[g].is_some() {
+                        continue;
+                    }
+                    let u = tris[g];
+                    // `g` must run b → a.
+                    let same = (0..3).any(|r| u[r] == a && u[(r + 1) % 3] == b);
+                    out[g] = Some(if same { [u[0], u[2], u[1]] } else { u });
+                    queue.push_back(g);
+                }
+            }
+        }
+    }
+    out.into_iter().map(Option::unwrap).collect()
+}
