@@ -33,15 +33,18 @@ impl<T: Real> SparseMatrix<T> {
         for i in 0..n {
             start[i + 1] += start[i];
         }
-        let mut order = vec![0usize; triplets.len()];
+        // (column, input index) pairs bucketed by row, so that the sorts below touch
+        // contiguous memory only.
+        let mut keyed = vec![(0usize, 0usize); triplets.len()];
         let mut next = start.clone();
-        for (t, &(r, _, _)) in triplets.iter().enumerate() {
-            order[next[r]] = t;
+        for (t, &(r, c, _)) in triplets.iter().enumerate() {
+            keyed[next[r]] = (c, t);
             next[r] += 1;
         }
         for r in 0..n {
-            order[start[r]..start[r + 1]].sort_by_key(|&t| triplets[t].1);
+            keyed[start[r]..start[r + 1]].sort_unstable();
         }
+        let order = keyed.into_iter().map(|(_, t)| t);
         let mut row_ptr = vec![0; n + 1];
         let mut col: Vec<usize> = Vec::new();
         let mut val: Vec<T> = Vec::new();
@@ -136,20 +139,82 @@ impl<T: Real> SparseMatrix<T> {
 /// ```
 pub fn cotan_laplacian<T: Real>(mesh: &Mesh, lengths: &[T]) -> SparseMatrix<T> {
     let cots = halfedge_cotans(mesh, lengths);
-    let mut trip = Vec::with_capacity(2 * mesh.n_halfedges());
-    for h in mesh.halfedges() {
-        if mesh.is_boundary_halfedge(h) {
-            continue;
-        }
-        let (i, j) = (mesh.tail(h).idx(), mesh.tip(h).idx());
-        if i == j {
-            continue;
-        }
-        let c = cots[h.idx()].clone() * &cots[h.idx()].lit(0.5);
-        trip.push((i, j, c.clone()));
-        trip.push((j, i, c.clone()));
-        trip.push((i, i, -c.clone()));
-        trip.push((j, j, -c));
+    let n = mesh.n_vertices();
+    // The half-edges that contribute (a face, two distinct ends) and their ½ cot α.
+    let ends = |h: crate::mesh::HalfEdge| (mesh.tail(h).idx(), mesh.tip(h).idx());
+    let contributes =
+        |h: crate::mesh::HalfEdge| !mesh.is_boundary_halfedge(h) && ends(h).0 != ends(h).1;
+    let half: Vec<Option<T>> = mesh
+        .halfedges()
+        .map(|h| contributes(h).then(|| cots[h.idx()].clone() * &cots[h.idx()].lit(0.5)))
+        .collect();
+    // Off-diagonal entries bucketed by row as (column, half-edge): row i gets (j, h) and
+    // row j gets (i, h) for h = i→j; sorting each row by (column, half-edge) sums
+    // duplicates (multi-edges, both sides of an edge) in half-edge order.
+    let mut start = vec![0usize; n + 1];
+    for h in mesh.halfedges().filter(|&h| half[h.idx()].is_some()) {
+        let (i, j) = ends(h);
+        start[i + 1] += 1;
+        start[j + 1] += 1;
     }
-    SparseMatrix::from_triplets(mesh.n_vertices(), &trip)
+    for i in 0..n {
+        start[i + 1] += start[i];
+    }
+    let mut keyed = vec![(0u32, 0u32); start[n]];
+    let mut next = start.clone();
+    let mut diag: Vec<Option<T>> = vec![None; n];
+    for h in mesh.halfedges() {
+        let Some(c) = &half[h.idx()] else {
+            continue;
+        };
+        let (i, j) = ends(h);
+        for (r, col) in [(i, j), (j, i)] {
+            keyed[next[r]] = (col as u32, h.0);
+            next[r] += 1;
+            // L_rr = −Σ ½ cot, accumulated in half-edge order.
+            let minus = -c.clone();
+            diag[r] = Some(match diag[r].take() {
+                None => minus,
+                Some(d) => d + &minus,
+            });
+        }
+    }
+    let mut row_ptr = vec![0usize; n + 1];
+    let mut col = Vec::with_capacity(start[n] + n);
+    let mut val: Vec<T> = Vec::with_capacity(start[n] + n);
+    for r in 0..n {
+        let row = &mut keyed[start[r]..start[r + 1]];
+        row.sort_unstable();
+        let mut d = diag[r].take();
+        for &(c, h) in row.iter() {
+            let c = c as usize;
+            if c > r {
+                if let Some(x) = d.take() {
+                    col.push(r);
+                    val.push(x);
+                }
+            }
+            let w = half[h as usize]
+                .clone()
+                .unwrap_or_else(|| lengths[0].zero_like());
+            match (col.last(), val.last_mut()) {
+                (Some(&lc), Some(last)) if lc == c && col.len() > row_ptr[r] => *last += &w,
+                _ => {
+                    col.push(c);
+                    val.push(w);
+                }
+            }
+        }
+        if let Some(x) = d {
+            col.push(r);
+            val.push(x);
+        }
+        row_ptr[r + 1] = col.len();
+    }
+    SparseMatrix {
+        n,
+        row_ptr,
+        col,
+        val,
+    }
 }
