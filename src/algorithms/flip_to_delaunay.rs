@@ -233,6 +233,8 @@ pub(super) fn run<M: Metric>(mesh: &mut Mesh, m: &mut M, opts: &FlipOptions) -> 
     let ne = mesh.n_edges();
     let cap = opts.max_flips.unwrap_or(64 * ne + 1024);
     let mut report = FlipReport::default();
+    // Edges the fast path certified Delaunay (a local, so that it stays in a register).
+    let mut fast_kept = 0usize;
     let mut state = vec![QUEUED; ne];
     // Whether any edge was ever marked undecided or refused (else the final scan is moot).
     let mut flags_set = false;
@@ -248,13 +250,18 @@ pub(super) fn run<M: Metric>(mesh: &mut Mesh, m: &mut M, opts: &FlipOptions) -> 
             continue;
         };
         state[e.idx()] = 0;
-        if report.flips < cap {
-            match m.fast_step(&q) {
-                Some(FastStep::Kept) => {
-                    report.stages.filter += 1;
-                    continue;
+        match m.fast_step(&q) {
+            Some(FastStep::Kept) => {
+                fast_kept += 1;
+                continue;
+            }
+            Some(FastStep::Flipped(saved)) => {
+                if report.flips >= cap {
+                    m.restore(e, saved);
+                    report.hit_cap = true;
+                    break;
                 }
-                Some(FastStep::Flipped(saved)) => {
+                {
                     // The old edge and the new one, both by the filter.
                     report.stages.filter += 2;
                     if mesh.flip(e).is_ok() {
@@ -267,8 +274,8 @@ pub(super) fn run<M: Metric>(mesh: &mut Mesh, m: &mut M, opts: &FlipOptions) -> 
                     }
                     continue;
                 }
-                None => {}
             }
+            None => {}
         }
         match certified_sign(m, q.edges, &opts.ladder, &mut report.stages) {
             None => {
@@ -309,6 +316,7 @@ pub(super) fn run<M: Metric>(mesh: &mut Mesh, m: &mut M, opts: &FlipOptions) -> 
         }
         accept(m, &q, &mut state, &mut stack, &mut report, opts);
     }
+    report.stages.filter += fast_kept;
     if flags_set {
         report.undecided = flagged(&state, UNDECIDED);
         report.refused = flagged(&state, REFUSED);
