@@ -28,6 +28,39 @@ use rand_chacha::ChaCha8Rng;
 use rug::Rational;
 use std::collections::BTreeSet;
 
+/// Whether `v` is `Verdict::Fails { certified: true, .. }`.
+fn certified_fails(v: &Verdict) -> bool {
+    matches!(
+        v,
+        Verdict::Fails {
+            certified: true,
+            ..
+        }
+    )
+}
+
+/// Whether `v` is `Verdict::Holds { certified: true, .. }`.
+fn certified_holds(v: &Verdict) -> bool {
+    matches!(
+        v,
+        Verdict::Holds {
+            certified: true,
+            ..
+        }
+    )
+}
+
+/// Whether `v` is `Verdict::Holds { certified: false, .. }`.
+fn numerical_holds(v: &Verdict) -> bool {
+    matches!(
+        v,
+        Verdict::Holds {
+            certified: false,
+            ..
+        }
+    )
+}
+
 /// The perturbation of the negative controls: a factor 101/100.
 fn bump() -> Rational {
     Rational::from((101, 100))
@@ -511,16 +544,7 @@ fn t23_two_triangle_sphere_flip_into_self_folded_triangles() {
         QuadEdges::of(&m, e).unwrap().lengths(&enclosures(&l, prec))
     ));
     let v = verify_flip_sequence(&m, &l, &[e], FlipKind::Euclidean, 128);
-    assert!(
-        matches!(
-            v,
-            Verdict::Holds {
-                certified: true,
-                ..
-            }
-        ),
-        "{v:?}"
-    );
+    assert!(certified_holds(&v), "{v:?}");
     let v = check_euclidean_flips_preserve_cone_metric(
         &m,
         &l,
@@ -528,28 +552,10 @@ fn t23_two_triangle_sphere_flip_into_self_folded_triangles() {
         128,
         &Settings::default(),
     );
-    assert!(
-        matches!(
-            v,
-            Verdict::Holds {
-                certified: true,
-                ..
-            }
-        ),
-        "{v:?}"
-    );
+    assert!(certified_holds(&v), "{v:?}");
     // Control: the Ptolemy length (2·2 + 2·2)/3.5 ≠ 2·height moves the cone angles.
     let v = verify_flip_sequence(&m, &l, &[e], FlipKind::Ptolemy, 128);
-    assert!(
-        matches!(
-            v,
-            Verdict::Fails {
-                certified: true,
-                ..
-            }
-        ),
-        "{v:?}"
-    );
+    assert!(certified_fails(&v), "{v:?}");
 }
 
 #[test]
@@ -560,16 +566,7 @@ fn t23_lemma_hypotheses_and_their_negative_controls() {
     let q = QuadEdges::of(&m, e).unwrap();
     assert!(flip_hypotheses_certified(q.lengths(&enclosures(&l, prec))));
     let v = verify_flip_sequence(&m, &l, &[e], FlipKind::Euclidean, 128);
-    assert!(
-        matches!(
-            v,
-            Verdict::Holds {
-                certified: true,
-                ..
-            }
-        ),
-        "{v:?}"
-    );
+    assert!(certified_holds(&v), "{v:?}");
     // Control: reflex at i (α_i^{ijk} + α_i^{jil} = 270°): the hypotheses are refused, and
     // the Euclidean "flip" moves the cone angle at i from 3π/2 to π/2, refuted.
     let (m, l, e) = planar_quad([[0.0, 0.0], [4.0, 0.0], [-1.0, 1.0], [-1.0, -1.0]]);
@@ -599,27 +596,9 @@ fn t23_lemma_hypotheses_and_their_negative_controls() {
     // verdict is numerical, while the Euclidean replay is certified.
     let (m, l, e) = planar_quad([[0.0, 0.0], [4.0, 3.0], [0.0, 3.0], [4.0, 0.0]]);
     let v = verify_flip_sequence(&m, &l, &[e], FlipKind::Ptolemy, 128);
-    assert!(
-        matches!(
-            v,
-            Verdict::Holds {
-                certified: false,
-                ..
-            }
-        ),
-        "{v:?}"
-    );
+    assert!(numerical_holds(&v), "{v:?}");
     let v = verify_flip_sequence(&m, &l, &[e], FlipKind::Euclidean, 128);
-    assert!(
-        matches!(
-            v,
-            Verdict::Holds {
-                certified: true,
-                ..
-            }
-        ),
-        "{v:?}"
-    );
+    assert!(certified_holds(&v), "{v:?}");
 }
 
 #[test]
