@@ -422,6 +422,49 @@ impl<T: Real> RealMetric<'_, T> {
     fn stored(&mut self, x: f64) {
         self.in_range &= in_filter_range(x);
     }
+
+    /// The flip of the fast path, for an edge the filter certified non-Delaunay with the
+    /// binary64 lengths `[a, b, c, d, e]` of its quadrilateral: the new length, the test of
+    /// the new edge and (Euclidean) of its two faces, then the store; `None` (nothing
+    /// stored) sends the edge to the general path.
+    fn fast_flip(&mut self, edge: Edge, l: [f64; 5]) -> Option<FastStep<T>> {
+        let [a, b, c, d, e] = l;
+        let quad = Quad {
+            ij: &a,
+            jk: &b,
+            ki: &c,
+            il: &d,
+            lj: &e,
+        };
+        // The same formulas as `flip_length`, in binary64: correctly rounded 53-bit
+        // arithmetic without overflow or underflow (lengths in 2^±100 for the Euclidean
+        // formula, 2^±200 for Ptolemy's) gives the same bits in every 53-bit backend.
+        let new = match self.kind {
+            FlipKind::Euclidean => {
+                if !l.into_iter().all(moderate_f64) {
+                    return None;
+                }
+                euclidean_length(quad)
+            }
+            FlipKind::Ptolemy => ptolemy_length(quad),
+        };
+        if !in_filter_range(new) {
+            return None;
+        }
+        // The new edge `kl` in the roles `[kl, ki, il, lj, jk]` of `QuadEdges::flipped`.
+        if filter_f64_in_range([new, c, d, e, b]) != Some(Sign::Positive) {
+            return None;
+        }
+        // proof: B66 — faces `lki` and `klj` are non-degenerate for the stored lengths.
+        if self.kind == FlipKind::Euclidean
+            && !(strict_triangle_f64(new, c, d) && strict_triangle_f64(new, e, b))
+        {
+            return None;
+        }
+        let ctx = self.lengths[edge.idx()].ctx();
+        let old = std::mem::replace(&mut self.lengths[edge.idx()], T::from_f64(new, ctx));
+        Some(FastStep::Flipped(old))
+    }
 }
 
 impl<T: Real> Metric for RealMetric<'_, T> {
@@ -469,46 +512,16 @@ impl<T: Real> Metric for RealMetric<'_, T> {
             return None;
         }
         // 53-bit values in the f64 range are f64 numbers exactly (proof: B61).
-        let l = q.edges.map(|e| self.lengths[e.idx()].approx_f64());
-        match filter_f64_in_range(l.to_array())? {
-            Sign::Positive | Sign::Zero => return Some(FastStep::Kept),
-            Sign::Negative => {}
+        let l = q
+            .edges
+            .map(|e| self.lengths[e.idx()].approx_f64())
+            .to_array();
+        match filter_f64_in_range(l)? {
+            Sign::Positive | Sign::Zero => Some(FastStep::Kept),
+            // Out of line, with the lengths by value: the common (kept) case then holds
+            // nothing in memory for the flip.
+            Sign::Negative => self.fast_flip(q.edge, l),
         }
-        let Quad {
-            ij: _,
-            jk: b,
-            ki: c,
-            il: d,
-            lj: e,
-        } = l;
-        // The same formulas as `flip_length`, in binary64: correctly rounded 53-bit
-        // arithmetic without overflow or underflow (lengths in 2^±100 for the Euclidean
-        // formula, 2^±200 for Ptolemy's) gives the same bits in every 53-bit backend.
-        let new = match self.kind {
-            FlipKind::Euclidean => {
-                if !l.to_array().into_iter().all(moderate_f64) {
-                    return None;
-                }
-                euclidean_length(l.as_refs())
-            }
-            FlipKind::Ptolemy => ptolemy_length(l.as_refs()),
-        };
-        if !in_filter_range(new) {
-            return None;
-        }
-        // The new edge `kl` in the roles `[kl, ki, il, lj, jk]` of `QuadEdges::flipped`.
-        if filter_f64_in_range([new, c, d, e, b]) != Some(Sign::Positive) {
-            return None;
-        }
-        // proof: B66 — faces `lki` and `klj` are non-degenerate for the stored lengths.
-        if self.kind == FlipKind::Euclidean
-            && !(strict_triangle_f64(new, c, d) && strict_triangle_f64(new, e, b))
-        {
-            return None;
-        }
-        let ctx = self.lengths[q.edge.idx()].ctx();
-        let old = std::mem::replace(&mut self.lengths[q.edge.idx()], T::from_f64(new, ctx));
-        Some(FastStep::Flipped(old))
     }
     fn nudge(&mut self, e: Edge) -> bool {
         let l = &mut self.lengths[e.idx()];
