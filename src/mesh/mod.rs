@@ -121,6 +121,19 @@ impl Mesh {
     pub fn opposite_vertex(&self, h: HalfEdge) -> Vertex {
         self.tail(self.prev(h))
     }
+    /// The corners `[i, j, k, l]` of the quadrilateral around edge `e` (MATH.md §5): `i→j`
+    /// is half-edge `2e` in face `ijk`, `j→i` is `2e+1` in face `jil`. On a boundary side
+    /// the opposite corner is read through the boundary loop; callers test interior first.
+    #[inline]
+    pub fn quad_vertices(&self, e: Edge) -> [Vertex; 4] {
+        let h = e.side(0);
+        [
+            self.tail(h),
+            self.tip(h),
+            self.opposite_vertex(h),
+            self.opposite_vertex(e.side(1)),
+        ]
+    }
     /// One half-edge of face `f`.
     #[inline]
     pub fn face_halfedge(&self, f: Face) -> HalfEdge {

@@ -609,13 +609,7 @@ pub fn edge_delaunay_sign_scaled(
         let h = edge.halfedge();
         (u[mesh.tail(h).idx()], u[mesh.tip(h).idx()])
     };
-    let h = e.side(0);
-    let corners = [
-        mesh.tail(h),
-        mesh.tip(h),
-        mesh.opposite_vertex(h),
-        mesh.opposite_vertex(e.side(1)),
-    ];
+    let corners = mesh.quad_vertices(e);
     for v in corners {
         if !u[v.idx()].is_finite() {
             return Err(DelaunayError::BadScale {

@@ -139,9 +139,7 @@ fn lattice_ties(lm: &LatticeMesh, m: &Mesh) -> usize {
 /// The incircle determinant of the quadrilateral of interior edge `e`: `i, j, k` (face
 /// `ijk`, counter-clockwise) and `l`; positive iff `l` is inside (`e` not Delaunay).
 fn incircle_of(lm: &LatticeMesh, m: &Mesh, e: Edge) -> i128 {
-    let h = e.side(0);
-    let (i, j) = (m.tail(h).0, m.tip(h).0);
-    let (k, l) = (m.opposite_vertex(h).0, m.opposite_vertex(e.side(1)).0);
+    let [i, j, k, l] = m.quad_vertices(e).map(|v| v.0);
     lattice_incircle(lm, i, j, k, l)
 }
 
@@ -993,9 +991,7 @@ fn t21_equilateral_grids_are_strictly_delaunay_not_ties() {
             let Some(q) = QuadEdges::of(&m, e) else {
                 continue;
             };
-            let h = e.side(0);
-            let (i, j) = (m.tail(h).0, m.tip(h).0);
-            let (k, l) = (m.opposite_vertex(h).0, m.opposite_vertex(e.side(1)).0);
+            let [i, j, k, l] = m.quad_vertices(e).map(|v| v.0);
             // A planar flip: i and j strictly on opposite sides of kl.
             if lattice_orient(&lm, k, l, i).signum() * lattice_orient(&lm, k, l, j).signum() < 0 {
                 m.flip(q.edge).unwrap();

@@ -369,8 +369,7 @@ fn t28_negative_control_euclidean_flip_does_not_commute_with_scaling() {
             s[m.tail(h).idx()].clone() * &s[m.tip(h).idx()] * &mp[x.idx()]
         })
         .collect();
-    let h = e.side(0);
-    let (k, lv) = (m.opposite_vertex(h), m.opposite_vertex(e.side(1)));
+    let [_, _, k, lv] = m.quad_vertices(e);
     let flip_then_scale = euclidean_length(q.lengths(&mp)) * &s[k.idx()] * &s[lv.idx()];
     let scale_then_flip = euclidean_length(q.lengths(&scaled));
     let rel = ((flip_then_scale.clone() - &scale_then_flip) / &scale_then_flip)

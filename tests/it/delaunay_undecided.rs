@@ -295,14 +295,7 @@ fn b62_scaled_quad_at_an_exact_transcendental_tie_is_undecided() {
     let m = Mesh::from_faces(4, &[[0, 1, 2], [0, 2, 3]]).unwrap();
     let diag = m.edges().find(|&e| !m.is_boundary_edge(e)).unwrap();
     let q = QuadEdges::of(&m, diag).unwrap();
-    let h = diag.side(0);
-    let [vi, vj, vk, vl] = [
-        m.tail(h),
-        m.tip(h),
-        m.opposite_vertex(h),
-        m.opposite_vertex(diag.side(1)),
-    ]
-    .map(Vertex::idx);
+    let [vi, vj, vk, vl] = m.quad_vertices(diag).map(Vertex::idx);
     let mut base = vec![0.0; m.n_edges()];
     for (e, x) in q
         .edges

@@ -365,14 +365,7 @@ fn random_legal_flips(m: &mut Mesh, pts: &[[rug::Rational; 2]], n: usize, seed: 
         if QuadEdges::of(m, e).is_none() {
             continue; // boundary edge
         }
-        let h = e.side(0);
-        let [i, j, k, l] = [
-            m.tail(h),
-            m.tip(h),
-            m.opposite_vertex(h),
-            m.opposite_vertex(e.side(1)),
-        ]
-        .map(|v| &pts[v.idx()]);
+        let [i, j, k, l] = m.quad_vertices(e).map(|v| &pts[v.idx()]);
         // k and l lie on opposite sides of ij; convex iff i and j lie on opposite sides of kl.
         let (si, sj) = (orient(k, l, i), orient(k, l, j));
         if si != std::cmp::Ordering::Equal && sj == si.reverse() {
