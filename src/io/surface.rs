@@ -151,6 +151,67 @@ impl Surface {
         }
     }
 
+    /// The binary exponent `k` with the largest length within a factor 2 of `2ᵏ`: from the
+    /// bit lengths of the largest value's numerator and denominator (halved for squared
+    /// lengths). `0` for an empty metric.
+    pub fn length_exponent(&self) -> i64 {
+        let bits = |q: &Rational| {
+            i64::from(q.numer().significant_bits()) - i64::from(q.denom().significant_bits())
+        };
+        let k = self.metric.values().iter().map(bits).max().unwrap_or(0);
+        match self.metric {
+            Metric::Lengths(_) => k,
+            Metric::SquaredLengths(_) => k.div_euclid(2),
+        }
+    }
+
+    /// The same surface with every length multiplied by the exact power of two `2⁻ᵏ`
+    /// (squared lengths by `2⁻²ᵏ`, positions by `2⁻ᵏ`), so that its largest length is
+    /// within a factor 4 of 1 — or `None` when it already is within `2^±8`. Every statement
+    /// of the catalogue is invariant under a uniform scaling (angles, cross ratios, cotan
+    /// weights, flips) or scales with it, and the error bounds of the numerical checks are
+    /// proved for lengths in `[2⁻¹⁰⁰, 2¹⁰⁰]` (proofs/B40, "Range"): checks run on this copy.
+    ///
+    /// ```
+    /// use penner::io::{Metric, Surface};
+    /// use penner::mesh::Mesh;
+    /// use rug::Rational;
+    /// let tri = Mesh::from_faces(3, &[[0, 1, 2]]).unwrap();
+    /// let tiny = Rational::from(1) >> 300u32;
+    /// let s = Surface::new("t", tri, Metric::Lengths(vec![tiny.clone(), tiny.clone(), tiny]), None).unwrap();
+    /// let (n, k) = s.normalized_scale().unwrap();
+    /// assert_eq!(k, -300);
+    /// assert_eq!(n.metric.values()[0], 1);
+    /// ```
+    pub fn normalized_scale(&self) -> Option<(Surface, i64)> {
+        let k = self.length_exponent();
+        if k.abs() <= 8 {
+            return None;
+        }
+        let k32 = i32::try_from(k).ok()?;
+        let shift = |q: &Rational, by: i32| Rational::from(q >> by);
+        let metric = match &self.metric {
+            Metric::Lengths(v) => Metric::Lengths(v.iter().map(|q| shift(q, k32)).collect()),
+            Metric::SquaredLengths(v) => {
+                Metric::SquaredLengths(v.iter().map(|q| shift(q, 2 * k32)).collect())
+            }
+        };
+        let positions = self.positions.as_ref().map(|ps| {
+            ps.iter()
+                .map(|p| [shift(&p[0], k32), shift(&p[1], k32), shift(&p[2], k32)])
+                .collect()
+        });
+        Some((
+            Surface {
+                mesh: self.mesh.clone(),
+                metric,
+                positions,
+                name: self.name.clone(),
+            },
+            k,
+        ))
+    }
+
     /// Check, exactly in ℚ: one value per edge, every value > 0, and every face strictly
     /// satisfies the triangle inequality — for lengths a + b > c (each side), for squared
     /// lengths A = a², B = b², C = c² the equivalent

@@ -122,9 +122,27 @@ pub struct Row {
 /// Run one check on one case at one precision, timing it; `None` when the check has no
 /// form at that precision. A panic inside the check is caught and reported as
 /// [`Outcome::Crashed`] so one defect cannot hide other rows.
+///
+/// The check runs on the case rescaled by an exact power of two when its lengths are far
+/// from 1 ([`Surface::normalized_scale`], proofs/B40 "Range"): verdicts are about the
+/// user's metric, since every statement is scale invariant.
 pub fn run_one(check: &Check, case: &Surface, prec: Prec, settings: &Settings) -> Option<Row> {
+    match case.normalized_scale() {
+        Some((scaled, _)) => run_one_as_is(check, case, &scaled, prec, settings),
+        None => run_one_as_is(check, case, case, prec, settings),
+    }
+}
+
+/// [`run_one`] on `input` (the case or its rescaled copy), reported under `case`'s name.
+fn run_one_as_is(
+    check: &Check,
+    case: &Surface,
+    input: &Surface,
+    prec: Prec,
+    settings: &Settings,
+) -> Option<Row> {
     let start = Instant::now();
-    let result = catch_unwind(AssertUnwindSafe(|| (check.run)(case, prec, settings)));
+    let result = catch_unwind(AssertUnwindSafe(|| (check.run)(input, prec, settings)));
     let seconds = start.elapsed().as_secs_f64();
     let outcome = match result {
         Ok(Some(v)) => Outcome::Verdict(v),
@@ -142,11 +160,14 @@ pub fn run_one(check: &Check, case: &Surface, prec: Prec, settings: &Settings) -
 }
 
 /// Run every check in `checks` on `case` at every precision in `precs`.
+/// The case is rescaled once, as in [`run_one`].
 pub fn run_case(case: &Surface, checks: &[Check], precs: &[Prec], settings: &Settings) -> Vec<Row> {
+    let scaled = case.normalized_scale().map(|(s, _)| s);
+    let input = scaled.as_ref().unwrap_or(case);
     let mut rows = Vec::with_capacity(checks.len() * precs.len());
     for check in checks {
         for &p in precs {
-            rows.extend(run_one(check, case, p, settings));
+            rows.extend(run_one_as_is(check, case, input, p, settings));
         }
     }
     rows

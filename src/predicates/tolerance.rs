@@ -17,6 +17,22 @@ use rug::Rational;
 /// assert_eq!(abs_at_most(&f64::NAN, 1.0), None);
 /// ```
 pub fn abs_at_most<T: Real>(x: &T, tol: f64) -> Option<bool> {
+    abs_at_most_scaled(x, tol, 0)
+}
+
+/// Whether `|x| ≤ tol·2⁻ˢ`, decided exactly: the tolerance of a high-precision backend is
+/// carried as an `f64` times an exact power of two (proofs/B40, "Range"), so it never
+/// underflows, whatever the precision.
+///
+/// ```
+/// use penner::predicates::tolerance::abs_at_most_scaled;
+/// use penner::scalar::{Mpfr, Precision, Real};
+/// let p = Precision::new(4096).unwrap();
+/// let tiny = Mpfr::from_rational(&(rug::Rational::from(1) >> 3000u32), p); // 2⁻³⁰⁰⁰
+/// assert_eq!(abs_at_most_scaled(&tiny, 1.0, 2999), Some(true));
+/// assert_eq!(abs_at_most_scaled(&tiny, 1.0, 3001), Some(false));
+/// ```
+pub fn abs_at_most_scaled<T: Real>(x: &T, tol: f64, shift: u32) -> Option<bool> {
     let q = x.to_rational()?;
     if tol.is_nan() {
         return None;
@@ -24,6 +40,6 @@ pub fn abs_at_most<T: Real>(x: &T, tol: f64) -> Option<bool> {
     if tol == f64::INFINITY {
         return Some(true);
     }
-    let t = Rational::from_f64(tol)?;
+    let t = Rational::from_f64(tol)? >> shift;
     Some(q.abs() <= t)
 }

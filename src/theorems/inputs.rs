@@ -4,7 +4,7 @@
 //! (`ε = 16u`, proofs/B40) from the data.
 
 use super::bounds::eps;
-use super::report::{check_lengths, check_rational_lengths, Tally};
+use super::report::{check_lengths, check_rational_lengths, lengths_out_of_range, Tally};
 use super::verdict::Verdict;
 use crate::mesh::Mesh;
 use crate::scalar::Real;
@@ -40,7 +40,11 @@ impl Numerics {
 /// `l` is checked first) and read their precision from `l[0]`. `Err` carries the
 /// `NotApplicable` verdict the check returns as is.
 pub fn two_metrics<T: Real>(mesh: &Mesh, l: &[T], lt: &[T]) -> Result<Numerics, Verdict> {
-    if let Some(v) = check_lengths(mesh, l).or_else(|| check_lengths(mesh, lt)) {
+    if let Some(v) = check_lengths(mesh, l)
+        .or_else(|| check_lengths(mesh, lt))
+        .or_else(|| lengths_out_of_range(l))
+        .or_else(|| lengths_out_of_range(lt))
+    {
         return Err(v);
     }
     // A mesh with faces has edges, so `l` is not empty after `check_lengths`.

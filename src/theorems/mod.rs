@@ -11,6 +11,7 @@ pub mod t01_gauss_bonnet;
 pub mod t03_angle_rigidity;
 pub mod t04_angle_integrability;
 pub mod t05_cotan_laplacian;
+pub mod t05_semidefinite;
 pub mod t07_conformal_energy;
 pub mod t15_lemma1;
 pub mod t16_scaling_cross_ratios;

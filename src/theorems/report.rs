@@ -1,7 +1,8 @@
 //! Collecting per-element comparisons into a [`Verdict`].
 
+use super::bounds::eps_shift;
 use super::verdict::{Verdict, Witness};
-use crate::predicates::tolerance::abs_at_most;
+use crate::predicates::tolerance::abs_at_most_scaled;
 use crate::scalar::Real;
 
 /// Accumulates the outcome of every comparison of a check, so that a failing check lists
@@ -10,6 +11,9 @@ use crate::scalar::Real;
 pub struct Tally {
     certified: bool,
     bits: u32,
+    /// Tolerances passed to [`Tally::within`] are `2^shift` times the true bound
+    /// ([`eps_shift`], proofs/B40 "Range"); 0 for certified tallies.
+    shift: u32,
     max_error: f64,
     failures: Vec<Witness>,
     undecided: Vec<Witness>,
@@ -17,18 +21,21 @@ pub struct Tally {
 
 impl Tally {
     /// A tally for a check at `bits` of precision; `certified` says whether its decisions
-    /// are rigorous (exact or on enclosures).
+    /// are rigorous (exact or on enclosures). A numerical tally reads its tolerances as
+    /// computed with [`super::bounds::eps`], i.e. scaled by `2^s`, `s =` [`eps_shift`]`(bits)`.
     pub fn new(certified: bool, bits: u32) -> Tally {
         Tally {
             certified,
             bits,
+            shift: if certified { 0 } else { eps_shift(bits) },
             max_error: 0.0,
             failures: Vec::new(),
             undecided: Vec::new(),
         }
     }
 
-    /// Record a numerical comparison: the discrepancy `err` must satisfy `|err| ≤ tol`.
+    /// Record a numerical comparison: the discrepancy `err` must satisfy `|err| ≤ tol·2⁻ˢ`,
+    /// `tol` a bound computed with [`super::bounds::eps`] (scaled by `2ˢ`, see [`Tally::new`]).
     /// An infinite `tol` (ill-conditioned element) or a non-finite `err` is undecided.
     pub fn within<T: Real>(&mut self, element: impl Into<String>, what: &str, err: &T, tol: f64) {
         let e = err.approx_f64();
@@ -40,10 +47,46 @@ impl Tally {
             );
             return;
         }
-        match abs_at_most(err, tol) {
+        match abs_at_most_scaled(err, tol, self.shift) {
             Some(true) => self.max_error = self.max_error.max(e.abs()),
-            Some(false) => self.fail(element, format!("{what}: |error| > tolerance {tol:.3e}"), e),
+            Some(false) => {
+                let scale = if self.shift == 0 {
+                    String::new()
+                } else {
+                    format!("·2^-{}", self.shift)
+                };
+                self.fail(
+                    element,
+                    format!("{what}: |error| > tolerance {tol:.3e}{scale}"),
+                    e,
+                );
+            }
             None => self.undecided(element, format!("{what}: value is not finite"), e),
+        }
+    }
+
+    /// Record a numerical sign test: the exact value `x` is claimed positive, and its computed
+    /// value `x̂` satisfies `|x̂ − x| ≤ tol·2⁻ˢ` (`tol` scaled as in [`Tally::within`]).
+    /// `x̂ > tol·2⁻ˢ` proves it; `x̂ < −tol·2⁻ˢ` refutes it; otherwise (or with an infinite
+    /// `tol`, or a non-finite `x̂`) the element is undecided.
+    pub fn positive<T: Real>(&mut self, element: impl Into<String>, what: &str, x: &T, tol: f64) {
+        let v = x.approx_f64();
+        let (Some(q), true) = (x.to_rational(), tol.is_finite() && tol >= 0.0) else {
+            self.undecided(element, format!("{what}: no error bound or not finite"), v);
+            return;
+        };
+        let Some(t) = rug::Rational::from_f64(tol) else {
+            self.undecided(element, format!("{what}: no error bound"), v);
+            return;
+        };
+        let t = t >> self.shift;
+        if q > t {
+            return;
+        }
+        if q < -t {
+            self.fail(element, format!("{what} < 0 beyond its error bound"), v);
+        } else {
+            self.undecided(element, format!("{what}: sign within its error bound"), v);
         }
     }
 
@@ -129,5 +172,36 @@ pub fn check_rational_lengths(
         .collect();
     (!bad.is_empty()).then(|| Verdict::NotApplicable {
         reason: format!("non-positive lengths at {}", bad.join(", ")),
+    })
+}
+
+/// `Undecided` when some length's `f64` approximation lies outside
+/// [`super::bounds::LENGTH_RANGE`] (`[2⁻¹⁰⁰, 2¹⁰⁰]`), where the error bounds of B40–B48 are
+/// not proved (proofs/B40, "Range"): the numerical checks do not guess there. The witnesses
+/// name the offending edges (at most eight). Rescaling the metric by an exact power of two
+/// (as `penner check` does) brings any metric whose lengths span less than `2²⁰⁰` inside.
+///
+/// ```
+/// use penner::theorems::report::lengths_out_of_range;
+/// use penner::theorems::Verdict;
+/// assert!(lengths_out_of_range(&[1.0_f64, 2.0]).is_none());
+/// assert!(matches!(lengths_out_of_range(&[1.0_f64, 1e-80]), Some(Verdict::Undecided { .. })));
+/// ```
+pub fn lengths_out_of_range<T: Real>(lengths: &[T]) -> Option<Verdict> {
+    let bad: Vec<Witness> = lengths
+        .iter()
+        .enumerate()
+        .filter(|(_, x)| !super::bounds::length_in_range(x.approx_f64()))
+        .take(8)
+        .map(|(k, x)| Witness {
+            element: format!("e{k}"),
+            detail: "length outside [2^-100, 2^100], where the error bounds hold (B40)".into(),
+            value: x.approx_f64(),
+        })
+        .collect();
+    let bits = lengths.first().map_or(0, |x| T::precision_bits(x.ctx()));
+    (!bad.is_empty()).then_some(Verdict::Undecided {
+        bits_tried: bits,
+        witnesses: bad,
     })
 }

@@ -12,7 +12,7 @@
 
 use super::bounds::{corner_angle_error, eps, sum_error};
 use super::inputs::count_mismatch;
-use super::report::{check_lengths, Tally};
+use super::report::{check_lengths, lengths_out_of_range, Tally};
 use super::verdict::{Settings, Verdict};
 use crate::geometry::curvature::{curvature, gauss_bonnet_target};
 use crate::mesh::Mesh;
@@ -70,7 +70,7 @@ pub fn gauss_bonnet_error_bound<T: Real>(mesh: &Mesh, lengths: &[T]) -> f64 {
 /// assert!(check_gauss_bonnet(&tet, &[1.0_f64; 6], &Settings::default()).holds());
 /// ```
 pub fn check_gauss_bonnet<T: Real>(mesh: &Mesh, lengths: &[T], settings: &Settings) -> Verdict {
-    if let Some(v) = check_lengths(mesh, lengths) {
+    if let Some(v) = check_lengths(mesh, lengths).or_else(|| lengths_out_of_range(lengths)) {
         return v;
     }
     let k = curvature(mesh, lengths);
@@ -86,7 +86,7 @@ pub fn verify_gauss_bonnet<T: Real>(
     curvature: &[T],
     settings: &Settings,
 ) -> Verdict {
-    if let Some(v) = check_lengths(mesh, lengths) {
+    if let Some(v) = check_lengths(mesh, lengths).or_else(|| lengths_out_of_range(lengths)) {
         return v;
     }
     if let Some(v) = curvature_count(mesh, curvature.len()) {

@@ -8,7 +8,7 @@
 //! - `pub fn check_angle_integrability_from_lengths<T: Real>(mesh: &Mesh, lengths: &[T], settings: &Settings) -> Verdict`
 
 use super::bounds::{corner_angle_error, eps, sum_error, SAFETY};
-use super::report::{check_lengths, Tally};
+use super::report::{check_lengths, lengths_out_of_range, Tally};
 use super::verdict::{Settings, Verdict};
 use crate::geometry::corners::halfedge_angles;
 use crate::mesh::Mesh;
@@ -114,7 +114,7 @@ pub fn check_angle_integrability_from_lengths<T: Real>(
     lengths: &[T],
     settings: &Settings,
 ) -> Verdict {
-    if let Some(v) = check_lengths(mesh, lengths) {
+    if let Some(v) = check_lengths(mesh, lengths).or_else(|| lengths_out_of_range(lengths)) {
         return v;
     }
     let e = eps::<T>(lengths[0].ctx());

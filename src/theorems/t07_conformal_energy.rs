@@ -6,8 +6,8 @@
 //! - `pub fn check_conformal_energy<T: Real>(mesh: &Mesh, lengths: &[T], f: &[[T; 2]], settings: &Settings) -> Verdict`
 //! - `pub fn verify_conformal_energy<T: Real>(terms: &EnergyTerms<T>, settings: &Settings) -> Verdict`
 
-use super::bounds::{corner_angle_error, cot_error, eps, sum_error, SAFETY};
-use super::report::{check_lengths, Tally};
+use super::bounds::{corner_angle_error, cot_error, eps, sum_error, EPS_F64, SAFETY};
+use super::report::{check_lengths, lengths_out_of_range, Tally};
 use super::verdict::{Settings, Verdict};
 use crate::geometry::cotan::cotan_weights;
 use crate::geometry::energy::{cauchy_riemann_energy, dirichlet_energy, signed_area};
@@ -42,7 +42,7 @@ pub fn check_conformal_energy<T: Real>(
     f: &[[T; 2]],
     settings: &Settings,
 ) -> Verdict {
-    if let Some(v) = check_lengths(mesh, lengths) {
+    if let Some(v) = check_lengths(mesh, lengths).or_else(|| lengths_out_of_range(lengths)) {
         return v;
     }
     if f.len() != mesh.n_vertices() {
@@ -153,6 +153,12 @@ pub fn energy_error_bound<T: Real>(mesh: &Mesh, lengths: &[T], f: &[[T; 2]]) -> 
         let dnum = 2.0 * (re.abs() + im.abs()) * dre + 2.0 * dre * dre + 3.0 * e * num;
         let term = num / (4.0 * area2);
         let darea = lij * delta + 2.0 * e * area2.abs();
+        // The quotient's first-order error needs a relative area error ≤ 1/8 (proofs/B48),
+        // for the backend and for this evaluation from f64 approximations (B40).
+        let kappa = darea / (e * area2.abs());
+        if !(kappa * EPS_F64 <= 0.125) {
+            return f64::INFINITY;
+        }
         cr_err += dnum / (4.0 * area2.abs()) + term.abs() * (darea / area2.abs() + 2.0 * e);
         cr_terms.push(term);
     }

@@ -5,7 +5,9 @@
 //! Numerical, at MPFR precision `p` with `u = 2⁻ᵖ`: the two evaluations may differ by at
 //! most `8u (Σ|ln ℓ| + |ln c| + 1)` (proof: B64).
 
-use super::{Settings, Verdict, Witness};
+use super::bounds::eps;
+use super::report::Tally;
+use super::{Settings, Verdict};
 use crate::mesh::Mesh;
 use crate::predicates::delaunay::QuadEdges;
 use crate::scalar::{Mpfr, Real};
@@ -33,9 +35,9 @@ pub fn verify_shear_log_cross_ratio(
             reason: "one length per edge is required".into(),
         };
     }
-    let u = Mpfr::unit_roundoff(lengths[0].ctx());
-    let mut witnesses = Vec::new();
-    let mut max_error: f64 = 0.0;
+    // 8u = ε/2 with ε = 16u carried scaled by 2^s (proofs/B40 "Range", B64).
+    let half_eps = 0.5 * eps::<Mpfr>(lengths[0].ctx());
+    let mut tally = Tally::new(false, Mpfr::precision_bits(lengths[0].ctx()));
     for e in mesh.edges() {
         let Some(q) = QuadEdges::of(mesh, e) else {
             continue;
@@ -47,31 +49,13 @@ pub fn verify_shear_log_cross_ratio(
         let r = q.lengths(ratio_lengths);
         let c = (r.il.clone() * r.jk) / &(r.ki.clone() * r.lj);
         let log_c = c.ln();
-        let diff = (s - &log_c).abs().approx_f64();
         let sum_abs: f64 = [l.jk, l.ki, l.il, l.lj]
             .iter()
             .map(|x| x.ln().abs().approx_f64())
             .sum();
         // proof: B64
-        let tol = settings.slack * 8.0 * u * (sum_abs + log_c.abs().approx_f64() + 1.0);
-        max_error = max_error.max(diff);
-        if diff.is_nan() || diff > tol {
-            witnesses.push(Witness {
-                element: e.to_string(),
-                detail: format!("shear − log cross ratio = {diff:e} > {tol:e}"),
-                value: diff,
-            });
-        }
+        let tol = settings.slack * half_eps * (sum_abs + log_c.abs().approx_f64() + 1.0);
+        tally.within(e.to_string(), "shear − log cross ratio", &(s - &log_c), tol);
     }
-    if witnesses.is_empty() {
-        Verdict::Holds {
-            certified: false,
-            max_error,
-        }
-    } else {
-        Verdict::Fails {
-            certified: false,
-            witnesses,
-        }
-    }
+    tally.verdict()
 }

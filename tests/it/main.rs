@@ -41,3 +41,4 @@ mod theorems_flips;
 mod theorems_random;
 mod tidy;
 mod tie_claims;
+mod tolerance_range;
