@@ -525,9 +525,17 @@ impl<T: Real> Metric for RealMetric<'_, T> {
     }
     fn nudge(&mut self, e: Edge) -> bool {
         let l = &mut self.lengths[e.idx()];
-        let u = T::unit_roundoff(l.ctx());
-        // proof: B65 — one step decreases the stored value by 3u to 5u relative.
-        let step = l.clone() * &l.lit(4.0 * u);
+        // proof: B65 — one step decreases the stored value by 3u to 5u relative. Past 1000
+        // bits 4u = 2^(2−p) is below the f64 range: the step is then an exact shift
+        // (MPFR's ldexp has no range limit).
+        let bits = T::precision_bits(l.ctx());
+        let step = if bits <= 1000 {
+            l.clone() * &l.lit(4.0 * T::unit_roundoff(l.ctx()))
+        } else {
+            let mut s = l.clone();
+            s.ldexp_assign(2 - bits as i32);
+            s
+        };
         *l -= &step;
         let x = l.approx_f64();
         self.stored(x);

@@ -179,3 +179,16 @@ fn b51_caps_and_needles_are_semidefinite_at_every_precision() {
     assert!(v.fails(), "{v:?}");
     assert!(format!("{v:?}").contains("pivot"), "{v:?}");
 }
+
+#[test]
+fn b65_corpus_past_the_f64_exponent_range_has_no_false_refutation() {
+    // Past 1074 bits 2^-p underflows in f64: tolerances (B40 "Range") and the nudge of the
+    // flip driver (B65) must not. The cube with split square faces has exact cocircular ties
+    // whose rounded diagonals need the nudge.
+    let precs = [mpfr(1080), mpfr(4096)];
+    let mut bad = Vec::new();
+    for case in penner::oracle::corpus::standard() {
+        bad.extend(failures(&case, &precs));
+    }
+    assert!(bad.is_empty(), "false refutations:\n{}", bad.join("\n"));
+}
