@@ -299,7 +299,7 @@ pub fn needles_and_caps(k: i32) -> Vec<Surface> {
         let hinge = hinge_mesh();
         let l = lengths_by_pair(&hinge, |a, b| match (a, b) {
             (0, 2) => tri[2].clone(),
-            (0, 1) | (0, 3) => tri[0].clone(),
+            (0, 1 | 3) => tri[0].clone(),
             _ => tri[1].clone(),
         });
         out.extend(from_lengths(
@@ -504,7 +504,7 @@ pub fn voxel_box(a: i64, b: i64, c: i64, random: Option<u64>) -> Option<Surface>
                     } else {
                         (q00, q01, q11, q10)
                     };
-                    let diag = random.map_or(true, |_| rng.gen_bool(0.5));
+                    let diag = random.is_none_or(|_| rng.gen_bool(0.5));
                     if diag {
                         faces.push([p0, p1, p2]);
                         faces.push([p0, p2, p3]);

@@ -23,6 +23,7 @@ use penner::scalar::Precision;
 use penner::theorems::{Settings, Verdict};
 use rug::Rational;
 use std::collections::BTreeMap;
+use std::fmt::Write as _;
 
 /// Every precision of the sweep: f64, dd, MPFR 128, 256, 1080 (past binary64's exponent
 /// range in bits), 4096, exact.
@@ -139,19 +140,21 @@ pub fn assert_never_fails(family: &str, n_cases: usize, s: &Sweep) {
     for ((id, prec), fs) in &groups {
         let first = fs[0];
         let json = if first.json.len() > 4000 {
-            format!("{}… ({} bytes)", &first.json[..4000], first.json.len())
+            let head: String = first.json.chars().take(4000).collect();
+            format!("{head}… ({} bytes)", first.json.len())
         } else {
             first.json.clone()
         };
-        msg.push_str(&format!(
+        let _ = write!(
+            msg,
             "\n== {family}: {id} at {prec}: {} case(s) fail; first: {}\n   {}\n   reproducer: {}\n",
             fs.len(),
             first.case,
             first.detail,
             json.replace('\n', " ")
-        ));
+        );
         for f in fs.iter().skip(1).take(4) {
-            msg.push_str(&format!("   also: {} — {}\n", f.case, f.detail));
+            let _ = writeln!(msg, "   also: {} — {}", f.case, f.detail);
         }
     }
     assert!(

@@ -387,13 +387,19 @@ const B44_FLOOR_DD: f64 = 1.0 / 1024.0;
 #[test]
 fn b40_corner_angle_bound_holds_and_is_not_loose() {
     let tris = triangles(crate::support::cases(3000, 300_000), 40);
-    let kernel = |a: &_, b: &_, c: &_| corner_angle(a, b, c);
-    let (r64, n64) = measure::<f64>((), &tris, "B40", kernel, angle_ref, corner_angle_error);
+    let (r64, n64) = measure::<f64>(
+        (),
+        &tris,
+        "B40",
+        corner_angle,
+        angle_ref,
+        corner_angle_error,
+    );
     let (rdd, ndd) = measure::<Dd>(
         (),
         &tris,
         "B40",
-        |a, b, c| corner_angle(a, b, c),
+        corner_angle,
         angle_ref,
         corner_angle_error,
     );
@@ -409,22 +415,8 @@ fn b40_corner_angle_bound_holds_and_is_not_loose() {
 #[test]
 fn b44_cot_bound_holds_and_is_not_loose() {
     let tris = triangles(crate::support::cases(3000, 300_000), 44);
-    let (r64, n64) = measure::<f64>(
-        (),
-        &tris,
-        "B44",
-        |a, b, c| cot_opposite(a, b, c),
-        cot_ref,
-        cot_error,
-    );
-    let (rdd, ndd) = measure::<Dd>(
-        (),
-        &tris,
-        "B44",
-        |a, b, c| cot_opposite(a, b, c),
-        cot_ref,
-        cot_error,
-    );
+    let (r64, n64) = measure::<f64>((), &tris, "B44", cot_opposite, cot_ref, cot_error);
+    let (rdd, ndd) = measure::<Dd>((), &tris, "B44", cot_opposite, cot_ref, cot_error);
     println!("[B44] max observed/bound: f64 {r64:.3e} over {n64}, dd {rdd:.3e} over {ndd}");
     assert!(
         n64 > tris.len() / 2 && ndd > tris.len() / 2,
