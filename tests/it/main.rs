@@ -1,5 +1,6 @@
 //! The integration test crate: one module per area.
 
+mod adversarial_gen;
 mod claims;
 mod cli;
 mod cli_controls;
@@ -23,6 +24,7 @@ mod mesh;
 mod mesh_core;
 mod mesh_enumeration;
 mod meshgen;
+mod never_fails;
 mod oracle;
 mod planar_gen;
 mod predicates_planar;
@@ -42,3 +44,4 @@ mod theorems_random;
 mod tidy;
 mod tie_claims;
 mod tolerance_range;
+mod tolerance_tightness;
