@@ -439,7 +439,6 @@ fn never_fails_report_corpus_report_precisions() {
 }
 
 #[test]
-#[ignore = "issue 11: tolerances underflow at precisions ≥ 1075 bits; T21/T22 certified non-Delaunay on ties at 1080/4096"]
 fn never_fails_report_corpus_every_precision() {
     assert_report_has_no_fails(&all_precisions());
 }
@@ -532,7 +531,6 @@ fn never_fails_nearly_collinear() {
 }
 
 #[test]
-#[ignore = "issue 11: T04/T07 tolerances (B43, B48) on nearly collinear triangles of aspect 1e-24"]
 fn never_fails_nearly_collinear_angle_and_energy_tolerances() {
     run_family_checks(
         "nearly collinear",
@@ -613,7 +611,6 @@ fn never_fails_high_precision_other_checks() {
 }
 
 #[test]
-#[ignore = "issue 11: tolerances underflow at precisions ≥ 1075 bits (16·2^-p is 0 in f64)"]
 fn never_fails_high_precision_tolerance_checks() {
     run_family_checks(
         "high precision",
