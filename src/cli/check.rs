@@ -40,7 +40,7 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     };
     let case = super::input::load_case(o.path)?;
     let settings = Settings::default();
-    let rows = registry::run_case(&case, &checks, &precs, &settings);
+    let rows = run_with_progress(&case, &checks, &precs, &settings, o.json);
     let mut written: Vec<(String, PathBuf, usize)> = Vec::new();
     if !o.no_failure_files {
         for check in &checks {
@@ -184,4 +184,45 @@ fn shrink_failure(
             .is_some_and(|r| matches!(r.outcome, Outcome::Verdict(Verdict::Fails { .. })))
     };
     shrink(case, witnesses, &fails, Budget::default())
+}
+
+/// [`registry::run_case_with`], with a progress bar on standard error when it is a terminal
+/// and the output is a table: one step per (check, precision), the message naming the last
+/// one finished. Nothing is drawn on a pipe or with `--json`.
+fn run_with_progress(
+    case: &Surface,
+    checks: &[Check],
+    precs: &[Prec],
+    settings: &Settings,
+    json: bool,
+) -> Vec<registry::Row> {
+    use std::io::IsTerminal;
+    let total = (checks.len() * precs.len()) as u64;
+    let bar = (!json && std::io::stderr().is_terminal()).then(|| {
+        let b = indicatif::ProgressBar::new(total);
+        if let Ok(style) =
+            indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} checks  {elapsed}  {msg}")
+        {
+            b.set_style(style);
+        }
+        b.set_message(format!(
+            "{} checks × {} precisions on {} faces",
+            checks.len(),
+            precs.len(),
+            case.mesh.n_faces()
+        ));
+        b.enable_steady_tick(std::time::Duration::from_millis(200));
+        b
+    });
+    let done = |row: &registry::Row| {
+        if let Some(b) = &bar {
+            b.inc(1);
+            b.set_message(format!("{} {} done", row.id, row.precision));
+        }
+    };
+    let rows = registry::run_case_with(case, checks, precs, settings, &done);
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    rows
 }

@@ -160,17 +160,41 @@ fn run_one_as_is(
 }
 
 /// Run every check in `checks` on `case` at every precision in `precs`.
-/// The case is rescaled once, as in [`run_one`].
+/// The case is rescaled once, as in [`run_one`]; the checks run in parallel
+/// ([`run_case_with`]).
 pub fn run_case(case: &Surface, checks: &[Check], precs: &[Prec], settings: &Settings) -> Vec<Row> {
+    run_case_with(case, checks, precs, settings, &|_| {})
+}
+
+/// [`run_case`], calling `done` with each row as soon as its check finishes (for progress
+/// displays; the order of calls is the order of completion). The (check, precision) pairs
+/// are independent and read-only, so they run on rayon's thread pool; the rows are returned
+/// in catalogue order, then precision order, whatever the order of completion.
+pub fn run_case_with(
+    case: &Surface,
+    checks: &[Check],
+    precs: &[Prec],
+    settings: &Settings,
+    done: &(dyn Fn(&Row) + Sync),
+) -> Vec<Row> {
+    use rayon::prelude::*;
     let scaled = case.normalized_scale().map(|(s, _)| s);
     let input = scaled.as_ref().unwrap_or(case);
-    let mut rows = Vec::with_capacity(checks.len() * precs.len());
-    for check in checks {
-        for &p in precs {
-            rows.extend(run_one_as_is(check, case, input, p, settings));
-        }
-    }
-    rows
+    let tasks: Vec<(&Check, Prec)> = checks
+        .iter()
+        .flat_map(|c| precs.iter().map(move |&p| (c, p)))
+        .collect();
+    let rows: Vec<Option<Row>> = tasks
+        .par_iter()
+        .map(|&(check, p)| {
+            let row = run_one_as_is(check, case, input, p, settings);
+            if let Some(r) = &row {
+                done(r);
+            }
+            row
+        })
+        .collect();
+    rows.into_iter().flatten().collect()
 }
 
 fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
