@@ -7,8 +7,10 @@ use penner::algorithms::flip_scaled::flip_to_delaunay_scaled;
 use penner::algorithms::flip_to_delaunay::{
     flip_to_delaunay, flip_to_delaunay_exact, ExactLengths, FlipKind, FlipOptions, FlipReport,
 };
+use penner::algorithms::replay::{replay_escalating, BrokenStep, Replayed};
 use penner::io::{json, Metric, Surface};
 use penner::oracle::Prec;
+use penner::predicates::delaunay::QuadEdges;
 use penner::scalar::exp_length::ExpLength;
 use penner::scalar::{Dd, Mpfr, Real};
 use rug::Rational;
@@ -32,6 +34,34 @@ pub struct Options<'a> {
     pub output: Option<&'a Path>,
     /// Per-vertex log scale factors (JSON array): flip `e^{(u_i+u_j)/2}·ℓ_ij` instead.
     pub scale_factors: Option<&'a Path>,
+    /// JSON summary file (must not exist).
+    pub summary: Option<&'a Path>,
+    /// Replay the flip sequence on the exact input metric (B80) after a rounded run.
+    pub input_replay: bool,
+}
+
+/// First and last MPFR precision of the replay on the input metric.
+const REPLAY_BITS: (u32, u32) = (128, 1024);
+
+/// What the written triangulation is certified to be.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Certificate {
+    /// Intrinsic Delaunay for the input metric (exact run, or replay on the input, B80).
+    InputMetric,
+    /// Intrinsic Delaunay for the rounded lengths the run stored (B65) only.
+    RoundedMetric,
+    /// Not every edge is certified Delaunay even for the rounded lengths.
+    None,
+}
+
+impl Certificate {
+    fn name(self) -> &'static str {
+        match self {
+            Certificate::InputMetric => "input_metric",
+            Certificate::RoundedMetric => "rounded_metric",
+            Certificate::None => "none",
+        }
+    }
 }
 
 /// Read a JSON array of one finite number per vertex (`u_v`), naming the file and the
@@ -81,9 +111,8 @@ fn flip_scaled(
     kind: FlipKind,
 ) -> Result<(FlipReport, Vec<Rational>), CliError> {
     let base: Vec<f64> = case.lengths(());
-    let (report, lengths) =
-        flip_to_delaunay_scaled(&mut case.mesh, &base, u, kind, &FlipOptions::default())
-            .map_err(|e| CliError::Input(format!("{}: {e}", case.name)))?;
+    let (report, lengths) = flip_to_delaunay_scaled(&mut case.mesh, &base, u, kind, &record())
+        .map_err(|e| CliError::Input(format!("{}: {e}", case.name)))?;
     Ok((report, lengths.iter().map(ExpLength::to_rational).collect()))
 }
 
@@ -95,7 +124,7 @@ fn flip_real<T: Real>(
     kind: FlipKind,
 ) -> Result<(FlipReport, Vec<Rational>), CliError> {
     let mut l: Vec<T> = case.lengths(ctx);
-    let report = flip_to_delaunay(&mut case.mesh, &mut l, kind, &FlipOptions::default())
+    let report = flip_to_delaunay(&mut case.mesh, &mut l, kind, &record())
         .map_err(|e| CliError::Input(format!("{}: {e}", case.name)))?;
     let exact = l
         .iter()
@@ -106,6 +135,14 @@ fn flip_real<T: Real>(
         })
         .collect::<Result<_, _>>()?;
     Ok((report, exact))
+}
+
+/// The flip options of every run: default, with the sequence recorded (for the replay).
+fn record() -> FlipOptions {
+    FlipOptions {
+        record: true,
+        ..FlipOptions::default()
+    }
 }
 
 /// Refuse an output file that exists before doing any work (never overwrite).
@@ -130,7 +167,9 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         ));
     };
     refuse_existing(o.output)?;
+    refuse_existing(o.summary)?;
     let mut case = super::input::load_case(o.path)?;
+    let input_mesh = case.mesh.clone();
     let kind = match o.flips {
         ArgFlipKind::Euclidean => FlipKind::Euclidean,
         ArgFlipKind::Ptolemy => FlipKind::Ptolemy,
@@ -154,7 +193,7 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         (Prec::Exact, FlipKind::Ptolemy, Metric::Lengths(l), None) => {
             let l = l.clone();
             let (report, lengths) =
-                flip_to_delaunay_exact(&mut case.mesh, l, EXACT_GUARD_BITS, &FlipOptions::default())
+                flip_to_delaunay_exact(&mut case.mesh, l, EXACT_GUARD_BITS, &record())
                     .map_err(|e| CliError::Input(format!("{}: {e}", o.path.display())))?;
             match lengths {
                 ExactLengths::Exact(v) => Ok((report, v)),
@@ -179,6 +218,20 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         b.finish_and_clear();
     }
     let (report, lengths) = result?;
+    // Exact Ptolemy flipping has no rounding: its certificate is for the input metric.
+    let exact_run = prec == Prec::Exact;
+    let rounded_ok = report.all_certified_delaunay();
+    let replay = (rounded_ok && !exact_run && scale.is_none() && o.input_replay).then(|| {
+        let (lo, hi) = REPLAY_BITS;
+        replay_escalating(&input_mesh, &case.metric, &report.sequence, kind, lo, hi)
+    });
+    let (certificate, not_for_input) = match (&replay, rounded_ok) {
+        (_, false) => (Certificate::None, None),
+        (None, true) if exact_run => (Certificate::InputMetric, Some(0)),
+        (None, true) => (Certificate::RoundedMetric, None),
+        (Some((r, _)), true) if r.certified_delaunay() => (Certificate::InputMetric, Some(0)),
+        (Some((r, _)), true) => (Certificate::RoundedMetric, Some(not_certified(r))),
+    };
     let out_case = Surface {
         name: case.name.clone(),
         mesh: case.mesh.clone(),
@@ -186,25 +239,38 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         positions: None,
     };
     // The output is a plain surface file (readable by `penner check`); the flip count
-    // and the certificate go to standard error.
+    // and the certificate go to standard error (and to the summary file).
     let text = format!("{:#}\n", json::to_value(&out_case));
+    let what = match (certificate, not_for_input) {
+        (Certificate::InputMetric, _) => {
+            "every edge certified intrinsic Delaunay, certified for the input metric".to_string()
+        }
+        (Certificate::RoundedMetric, Some(n)) => format!(
+            "every edge certified intrinsic Delaunay for the rounded metric only; {n} edge(s) not certified for the input metric{}",
+            replay.as_ref().map_or(String::new(), |(r, bits)| replay_detail(r, *bits))
+        ),
+        (Certificate::RoundedMetric, None) => format!(
+            "every edge certified intrinsic Delaunay for the rounded metric only ({})",
+            if scale.is_some() {
+                "the scaled input metric is not replayed"
+            } else {
+                "the replay on the input metric was skipped"
+            }
+        ),
+        (Certificate::None, _) => format!(
+            "NOT every edge certified Delaunay ({} undecided, {} refused{})",
+            report.undecided.len(),
+            report.refused.len(),
+            if report.hit_cap { ", flip cap hit" } else { "" }
+        ),
+    };
     let summary = format!(
-        "{} {} flip(s) at {prec}; {}",
+        "{} {} flip(s) at {prec}; {what}",
         report.flips,
         match kind {
             FlipKind::Euclidean => "Euclidean",
             FlipKind::Ptolemy => "Ptolemy",
         },
-        if report.all_certified_delaunay() {
-            "every edge certified intrinsic Delaunay".to_string()
-        } else {
-            format!(
-                "NOT every edge certified Delaunay ({} undecided, {} refused{})",
-                report.undecided.len(),
-                report.refused.len(),
-                if report.hit_cap { ", flip cap hit" } else { "" }
-            )
-        }
     );
     if let Some(p) = o.output {
         write_new(p, &text)?;
@@ -213,9 +279,56 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         emit(&text);
         eprintln!("{summary}");
     }
-    Ok(if report.all_certified_delaunay() {
-        code::HOLDS
-    } else {
-        code::UNDECIDED
+    if let Some(p) = o.summary {
+        let doc = serde_json::json!({
+            "flips": report.flips,
+            "flip_kind": match kind { FlipKind::Euclidean => "euclidean", FlipKind::Ptolemy => "ptolemy" },
+            "precision": prec.to_string(),
+            "certificate": certificate.name(),
+            "not_certified_for_input": not_for_input,
+            "undecided": report.undecided.len(),
+            "refused": report.refused.len(),
+            "hit_cap": report.hit_cap,
+        });
+        write_new(p, &format!("{doc:#}\n"))?;
+    }
+    Ok(match (certificate, not_for_input) {
+        (Certificate::InputMetric, _) | (Certificate::RoundedMetric, None) => code::HOLDS,
+        _ => code::UNDECIDED,
     })
+}
+
+/// Edges of the written triangulation not certified Delaunay for the input metric: the
+/// interior edges certified non-Delaunay or undecided there; when a flip of the sequence is
+/// not a certified legal step on the input metric, the triangulation itself is not one of
+/// the input's certified flips, and no interior edge is certified.
+fn not_certified(r: &Replayed) -> usize {
+    if r.broken.is_some() {
+        return r
+            .mesh
+            .edges()
+            .filter(|&e| QuadEdges::of(&r.mesh, e).is_some())
+            .count();
+    }
+    r.negative.len() + r.undecided.len()
+}
+
+/// The first reason of a failed replay, for the message.
+fn replay_detail(r: &Replayed, bits: u32) -> String {
+    match &r.broken {
+        Some((n, e, why)) => format!(
+            " (flip {n} of the sequence, edge {e}, is {} for the input metric at {bits} bits)",
+            match why {
+                BrokenStep::StrictlyDelaunay => "certified strictly Delaunay, not a legal flip",
+                BrokenStep::Undecided => "undecided",
+                BrokenStep::NoLength => "without an enclosed new length",
+                BrokenStep::NotFlippable => "not flippable",
+            }
+        ),
+        None => format!(
+            " ({} certified non-Delaunay, {} undecided at {bits} bits)",
+            r.negative.len(),
+            r.undecided.len()
+        ),
+    }
 }
