@@ -3,6 +3,7 @@
 mod claims;
 mod cli;
 mod cli_controls;
+mod cli_delaunay;
 mod cone_angles_kernel;
 mod controls;
 mod definition_two;
@@ -16,6 +17,7 @@ mod delaunay_undecided;
 mod delaunay_uniqueness;
 mod dual;
 mod exact;
+mod flip_verdicts;
 mod interval;
 mod io;
 mod laplacian;
