@@ -157,6 +157,19 @@ fn refuse_existing(output: Option<&Path>) -> Result<(), CliError> {
     }
 }
 
+/// A progress spinner on a terminal (none otherwise).
+fn spinner(path: &Path, faces: usize) -> Option<indicatif::ProgressBar> {
+    std::io::stderr().is_terminal().then(|| {
+        let b = indicatif::ProgressBar::new_spinner();
+        b.set_message(format!(
+            "flipping {} ({faces} faces) to intrinsic Delaunay",
+            path.display(),
+        ));
+        b.enable_steady_tick(Duration::from_millis(120));
+        b
+    })
+}
+
 /// Run `penner delaunay`.
 pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     let precs = super::precisions(o.precision)?;
@@ -174,16 +187,7 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         ArgFlipKind::Euclidean => FlipKind::Euclidean,
         ArgFlipKind::Ptolemy => FlipKind::Ptolemy,
     };
-    let bar = std::io::stderr().is_terminal().then(|| {
-        let b = indicatif::ProgressBar::new_spinner();
-        b.set_message(format!(
-            "flipping {} ({} faces) to intrinsic Delaunay",
-            o.path.display(),
-            case.mesh.n_faces()
-        ));
-        b.enable_steady_tick(Duration::from_millis(120));
-        b
-    });
+    let bar = spinner(o.path, case.mesh.n_faces());
     let scale = match o.scale_factors {
         Some(path) => Some(read_scale_factors(path, prec, case.mesh.n_vertices())?),
         None => None,
@@ -225,13 +229,7 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         let (lo, hi) = REPLAY_BITS;
         replay_escalating(&input_mesh, &case.metric, &report.sequence, kind, lo, hi)
     });
-    let (certificate, not_for_input) = match (&replay, rounded_ok) {
-        (_, false) => (Certificate::None, None),
-        (None, true) if exact_run => (Certificate::InputMetric, Some(0)),
-        (None, true) => (Certificate::RoundedMetric, None),
-        (Some((r, _)), true) if r.certified_delaunay() => (Certificate::InputMetric, Some(0)),
-        (Some((r, _)), true) => (Certificate::RoundedMetric, Some(not_certified(r))),
-    };
+    let (certificate, not_for_input) = certificate_of(rounded_ok, exact_run, replay.as_ref());
     let out_case = Surface {
         name: case.name.clone(),
         mesh: case.mesh.clone(),
@@ -241,29 +239,13 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     // The output is a plain surface file (readable by `penner check`); the flip count
     // and the certificate go to standard error (and to the summary file).
     let text = format!("{:#}\n", json::to_value(&out_case));
-    let what = match (certificate, not_for_input) {
-        (Certificate::InputMetric, _) => {
-            "every edge certified intrinsic Delaunay, certified for the input metric".to_string()
-        }
-        (Certificate::RoundedMetric, Some(n)) => format!(
-            "every edge certified intrinsic Delaunay for the rounded metric only; {n} edge(s) not certified for the input metric{}",
-            replay.as_ref().map_or(String::new(), |(r, bits)| replay_detail(r, *bits))
-        ),
-        (Certificate::RoundedMetric, None) => format!(
-            "every edge certified intrinsic Delaunay for the rounded metric only ({})",
-            if scale.is_some() {
-                "the scaled input metric is not replayed"
-            } else {
-                "the replay on the input metric was skipped"
-            }
-        ),
-        (Certificate::None, _) => format!(
-            "NOT every edge certified Delaunay ({} undecided, {} refused{})",
-            report.undecided.len(),
-            report.refused.len(),
-            if report.hit_cap { ", flip cap hit" } else { "" }
-        ),
-    };
+    let what = certificate_words(
+        certificate,
+        not_for_input,
+        replay.as_ref(),
+        scale.is_some(),
+        &report,
+    );
     let summary = format!(
         "{} {} flip(s) at {prec}; {what}",
         report.flips,
@@ -280,22 +262,82 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         eprintln!("{summary}");
     }
     if let Some(p) = o.summary {
-        let doc = serde_json::json!({
-            "flips": report.flips,
-            "flip_kind": match kind { FlipKind::Euclidean => "euclidean", FlipKind::Ptolemy => "ptolemy" },
-            "precision": prec.to_string(),
-            "certificate": certificate.name(),
-            "not_certified_for_input": not_for_input,
-            "undecided": report.undecided.len(),
-            "refused": report.refused.len(),
-            "hit_cap": report.hit_cap,
-        });
+        let doc = summary_json(&report, kind, prec, certificate, not_for_input);
         write_new(p, &format!("{doc:#}\n"))?;
     }
     Ok(match (certificate, not_for_input) {
         (Certificate::InputMetric, _) | (Certificate::RoundedMetric, None) => code::HOLDS,
         _ => code::UNDECIDED,
     })
+}
+
+/// The certificate of a run and the count of edges not certified for the input metric
+/// (`None` when not counted: no replay, or the rounded run itself is not certified).
+fn certificate_of(
+    rounded_ok: bool,
+    exact_run: bool,
+    replay: Option<&(Replayed, u32)>,
+) -> (Certificate, Option<usize>) {
+    match (replay, rounded_ok) {
+        (_, false) => (Certificate::None, None),
+        (None, true) if exact_run => (Certificate::InputMetric, Some(0)),
+        (None, true) => (Certificate::RoundedMetric, None),
+        (Some((r, _)), true) if r.certified_delaunay() => (Certificate::InputMetric, Some(0)),
+        (Some((r, _)), true) => (Certificate::RoundedMetric, Some(not_certified(r))),
+    }
+}
+
+/// The `--summary` document: flips, precision and what is certified.
+fn summary_json(
+    report: &FlipReport,
+    kind: FlipKind,
+    prec: Prec,
+    certificate: Certificate,
+    not_for_input: Option<usize>,
+) -> serde_json::Value {
+    serde_json::json!({
+        "flips": report.flips,
+        "flip_kind": match kind { FlipKind::Euclidean => "euclidean", FlipKind::Ptolemy => "ptolemy" },
+        "precision": prec.to_string(),
+        "certificate": certificate.name(),
+        "not_certified_for_input": not_for_input,
+        "undecided": report.undecided.len(),
+        "refused": report.refused.len(),
+        "hit_cap": report.hit_cap,
+    })
+}
+
+/// What the written triangulation is certified to be, in words.
+fn certificate_words(
+    certificate: Certificate,
+    not_for_input: Option<usize>,
+    replay: Option<&(Replayed, u32)>,
+    scaled: bool,
+    report: &FlipReport,
+) -> String {
+    match (certificate, not_for_input) {
+        (Certificate::InputMetric, _) => {
+            "every edge certified intrinsic Delaunay, certified for the input metric".to_string()
+        }
+        (Certificate::RoundedMetric, Some(n)) => format!(
+            "every edge certified intrinsic Delaunay for the rounded metric only; {n} edge(s) not certified for the input metric{}",
+            replay.map_or(String::new(), |(r, bits)| replay_detail(r, *bits))
+        ),
+        (Certificate::RoundedMetric, None) => format!(
+            "every edge certified intrinsic Delaunay for the rounded metric only ({})",
+            if scaled {
+                "the scaled input metric is not replayed"
+            } else {
+                "the replay on the input metric was skipped"
+            }
+        ),
+        (Certificate::None, _) => format!(
+            "NOT every edge certified Delaunay ({} undecided, {} refused{})",
+            report.undecided.len(),
+            report.refused.len(),
+            if report.hit_cap { ", flip cap hit" } else { "" }
+        ),
+    }
 }
 
 /// Edges of the written triangulation not certified Delaunay for the input metric: the

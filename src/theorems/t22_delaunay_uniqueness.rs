@@ -226,6 +226,13 @@ pub fn check_delaunay_uniqueness_of<T: Real>(
             strict,
         });
     }
+    witnesses.extend(compare_runs(&runs));
+    Verdict::certified(witnesses, undecided, max_bits)
+}
+
+/// The comparison of runs certified Delaunay for one metric: each against the first.
+fn compare_runs(runs: &[CertifiedRun]) -> Vec<Witness> {
+    let mut witnesses = Vec::new();
     if let Some((first, rest)) = runs.split_first() {
         for run in rest {
             let seed = run.seed;
@@ -252,7 +259,7 @@ pub fn check_delaunay_uniqueness_of<T: Real>(
             }
         }
     }
-    Verdict::certified(witnesses, undecided, max_bits)
+    witnesses
 }
 
 /// First MPFR precision of the replays on the input metric (doubling to the ladder's top).

@@ -296,6 +296,9 @@ fn t21_t22_negative_controls_still_fail_on_the_adversarial_families() {
     assert!(failed.get("T22-NC").copied().unwrap_or(0) > 5, "{failed:?}");
 }
 
+/// A named run with an optional flip cap, returning the flips and whether the cap was hit.
+type CappedRun<'a> = (&'a str, &'a dyn Fn(Option<usize>) -> (usize, bool));
+
 /// Flip a copy of `(m, l)` with the flip cap `cap`.
 fn capped<T: penner::scalar::Real>(
     m: &Mesh,
@@ -333,7 +336,7 @@ fn t21_flip_cap_stops_every_route_after_exactly_cap_flips() {
         .map(|&x| <Mpfr as penner::scalar::Real>::from_f64(x, p))
         .collect();
     let lq: Vec<Rational> = l.iter().map(|&x| Rational::from_f64(x).unwrap()).collect();
-    let runs: [(&str, &dyn Fn(Option<usize>) -> (usize, bool)); 4] = [
+    let runs: [CappedRun; 4] = [
         ("f64", &|c| {
             let r = capped(&m, &l, c);
             (r.flips, r.hit_cap)
