@@ -88,12 +88,22 @@ impl Len {
 }
 
 /// The certified sign of the Delaunay polynomial `D` of the quadrilateral `q` (proof: B80):
-/// exact when the five lengths (or their squares) are rational (proof: B63), otherwise
-/// from the outward-rounded enclosure of `D` (proof: B62); `None` when the enclosure
-/// straddles 0.
+/// from the outward-rounded enclosure of `D` when it excludes 0 (proof: B62), otherwise
+/// exact when the five lengths (or their squares) are rational (proof: B63, so ties are
+/// certified), otherwise `None`.
 pub fn sign(lens: &[Len], q: Quad<Edge>, bits: u32) -> Option<Sign> {
     let l = q.map(|e| &lens[e.idx()]);
     let arr = l.to_array();
+    // The enclosure first: it decides every sign away from zero, and costs less than exact
+    // arithmetic on long rationals; only a straddling enclosure goes to the exact rules.
+    let [a, b, c, d, e] = arr.map(|x| x.enclose(bits));
+    let enclosed = match (a, b, c, d, e) {
+        (Some(a), Some(b), Some(c), Some(d), Some(e)) => enclose_p(&[a, b, c, d, e]).sign(),
+        _ => None,
+    };
+    if let Some(s @ (Sign::Positive | Sign::Negative)) = enclosed {
+        return Some(s);
+    }
     if let [Some(a), Some(b), Some(c), Some(d), Some(e)] = arr.map(Len::exact) {
         return Some(Sign::of_ordering(exact_p([a, b, c, d, e]).cmp0()));
     }
@@ -107,8 +117,7 @@ pub fn sign(lens: &[Len], q: Quad<Edge>, bits: u32) -> Option<Sign> {
         };
         return Some(delaunay_sign_squared(sq));
     }
-    let [a, b, c, d, e] = arr.map(|x| x.enclose(bits));
-    enclose_p(&[a?, b?, c?, d?, e?]).sign()
+    enclosed
 }
 
 /// The length of the new diagonal after flipping the quadrilateral with lengths `quad`:
