@@ -5,6 +5,8 @@
 //!   signs (T21).
 //! - [`flip_scaled`]: the same for conformally scaled metrics `e^{(u_i+u_j)/2}·ℓ_ij`, with
 //!   the exponent kept apart (no overflow for `|u|` up to 2²⁰).
+//! - [`replay`]: replay a recorded flip sequence on the exact input metric with certified
+//!   arithmetic (B80), to certify a rounded run's triangulation for the input.
 //! - [`naive`]: an uncertified `f64` baseline, for benchmarks and for showing where raw
 //!   floating-point decisions go wrong.
 
@@ -12,3 +14,4 @@ pub mod flip_scaled;
 pub mod flip_to_delaunay;
 pub mod flips;
 pub mod naive;
+pub mod replay;

@@ -61,6 +61,14 @@ pub enum Command {
         /// nothing overflows; f64 significands).
         #[arg(long, value_name = "FILE")]
         scale_factors: Option<PathBuf>,
+        /// Write a JSON summary (flips, and what is certified: `input_metric`,
+        /// `rounded_metric` or `none`) to this new file.
+        #[arg(long, value_name = "FILE")]
+        summary: Option<PathBuf>,
+        /// Skip replaying the flips on the exact input metric: the result is then certified
+        /// for the rounded metric only, and says so.
+        #[arg(long)]
+        no_input_replay: bool,
     },
     /// Re-run a saved failure file and report whether it still fails.
     Replay {

@@ -7,8 +7,10 @@ use penner::algorithms::flip_scaled::flip_to_delaunay_scaled;
 use penner::algorithms::flip_to_delaunay::{
     flip_to_delaunay, flip_to_delaunay_exact, ExactLengths, FlipKind, FlipOptions, FlipReport,
 };
+use penner::algorithms::replay::{replay_escalating, BrokenStep, Replayed};
 use penner::io::{json, Metric, Surface};
 use penner::oracle::Prec;
+use penner::predicates::delaunay::QuadEdges;
 use penner::scalar::exp_length::ExpLength;
 use penner::scalar::{Dd, Mpfr, Real};
 use rug::Rational;
@@ -32,6 +34,34 @@ pub struct Options<'a> {
     pub output: Option<&'a Path>,
     /// Per-vertex log scale factors (JSON array): flip `e^{(u_i+u_j)/2}·ℓ_ij` instead.
     pub scale_factors: Option<&'a Path>,
+    /// JSON summary file (must not exist).
+    pub summary: Option<&'a Path>,
+    /// Replay the flip sequence on the exact input metric (B80) after a rounded run.
+    pub input_replay: bool,
+}
+
+/// First and last MPFR precision of the replay on the input metric.
+const REPLAY_BITS: (u32, u32) = (128, 1024);
+
+/// What the written triangulation is certified to be.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Certificate {
+    /// Intrinsic Delaunay for the input metric (exact run, or replay on the input, B80).
+    InputMetric,
+    /// Intrinsic Delaunay for the rounded lengths the run stored (B65) only.
+    RoundedMetric,
+    /// Not every edge is certified Delaunay even for the rounded lengths.
+    None,
+}
+
+impl Certificate {
+    fn name(self) -> &'static str {
+        match self {
+            Certificate::InputMetric => "input_metric",
+            Certificate::RoundedMetric => "rounded_metric",
+            Certificate::None => "none",
+        }
+    }
 }
 
 /// Read a JSON array of one finite number per vertex (`u_v`), naming the file and the
@@ -81,9 +111,8 @@ fn flip_scaled(
     kind: FlipKind,
 ) -> Result<(FlipReport, Vec<Rational>), CliError> {
     let base: Vec<f64> = case.lengths(());
-    let (report, lengths) =
-        flip_to_delaunay_scaled(&mut case.mesh, &base, u, kind, &FlipOptions::default())
-            .map_err(|e| CliError::Input(format!("{}: {e}", case.name)))?;
+    let (report, lengths) = flip_to_delaunay_scaled(&mut case.mesh, &base, u, kind, &record())
+        .map_err(|e| CliError::Input(format!("{}: {e}", case.name)))?;
     Ok((report, lengths.iter().map(ExpLength::to_rational).collect()))
 }
 
@@ -95,7 +124,7 @@ fn flip_real<T: Real>(
     kind: FlipKind,
 ) -> Result<(FlipReport, Vec<Rational>), CliError> {
     let mut l: Vec<T> = case.lengths(ctx);
-    let report = flip_to_delaunay(&mut case.mesh, &mut l, kind, &FlipOptions::default())
+    let report = flip_to_delaunay(&mut case.mesh, &mut l, kind, &record())
         .map_err(|e| CliError::Input(format!("{}: {e}", case.name)))?;
     let exact = l
         .iter()
@@ -106,6 +135,14 @@ fn flip_real<T: Real>(
         })
         .collect::<Result<_, _>>()?;
     Ok((report, exact))
+}
+
+/// The flip options of every run: default, with the sequence recorded (for the replay).
+fn record() -> FlipOptions {
+    FlipOptions {
+        record: true,
+        ..FlipOptions::default()
+    }
 }
 
 /// Refuse an output file that exists before doing any work (never overwrite).
@@ -120,6 +157,19 @@ fn refuse_existing(output: Option<&Path>) -> Result<(), CliError> {
     }
 }
 
+/// A progress spinner on a terminal (none otherwise).
+fn spinner(path: &Path, faces: usize) -> Option<indicatif::ProgressBar> {
+    std::io::stderr().is_terminal().then(|| {
+        let b = indicatif::ProgressBar::new_spinner();
+        b.set_message(format!(
+            "flipping {} ({faces} faces) to intrinsic Delaunay",
+            path.display(),
+        ));
+        b.enable_steady_tick(Duration::from_millis(120));
+        b
+    })
+}
+
 /// Run `penner delaunay`.
 pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     let precs = super::precisions(o.precision)?;
@@ -130,21 +180,14 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         ));
     };
     refuse_existing(o.output)?;
+    refuse_existing(o.summary)?;
     let mut case = super::input::load_case(o.path)?;
+    let input_mesh = case.mesh.clone();
     let kind = match o.flips {
         ArgFlipKind::Euclidean => FlipKind::Euclidean,
         ArgFlipKind::Ptolemy => FlipKind::Ptolemy,
     };
-    let bar = std::io::stderr().is_terminal().then(|| {
-        let b = indicatif::ProgressBar::new_spinner();
-        b.set_message(format!(
-            "flipping {} ({} faces) to intrinsic Delaunay",
-            o.path.display(),
-            case.mesh.n_faces()
-        ));
-        b.enable_steady_tick(Duration::from_millis(120));
-        b
-    });
+    let bar = spinner(o.path, case.mesh.n_faces());
     let scale = match o.scale_factors {
         Some(path) => Some(read_scale_factors(path, prec, case.mesh.n_vertices())?),
         None => None,
@@ -154,7 +197,7 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         (Prec::Exact, FlipKind::Ptolemy, Metric::Lengths(l), None) => {
             let l = l.clone();
             let (report, lengths) =
-                flip_to_delaunay_exact(&mut case.mesh, l, EXACT_GUARD_BITS, &FlipOptions::default())
+                flip_to_delaunay_exact(&mut case.mesh, l, EXACT_GUARD_BITS, &record())
                     .map_err(|e| CliError::Input(format!("{}: {e}", o.path.display())))?;
             match lengths {
                 ExactLengths::Exact(v) => Ok((report, v)),
@@ -179,6 +222,14 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         b.finish_and_clear();
     }
     let (report, lengths) = result?;
+    // Exact Ptolemy flipping has no rounding: its certificate is for the input metric.
+    let exact_run = prec == Prec::Exact;
+    let rounded_ok = report.all_certified_delaunay();
+    let replay = (rounded_ok && !exact_run && scale.is_none() && o.input_replay).then(|| {
+        let (lo, hi) = REPLAY_BITS;
+        replay_escalating(&input_mesh, &case.metric, &report.sequence, kind, lo, hi)
+    });
+    let (certificate, not_for_input) = certificate_of(rounded_ok, exact_run, replay.as_ref());
     let out_case = Surface {
         name: case.name.clone(),
         mesh: case.mesh.clone(),
@@ -186,25 +237,22 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         positions: None,
     };
     // The output is a plain surface file (readable by `penner check`); the flip count
-    // and the certificate go to standard error.
+    // and the certificate go to standard error (and to the summary file).
     let text = format!("{:#}\n", json::to_value(&out_case));
+    let what = certificate_words(
+        certificate,
+        not_for_input,
+        replay.as_ref(),
+        scale.is_some(),
+        &report,
+    );
     let summary = format!(
-        "{} {} flip(s) at {prec}; {}",
+        "{} {} flip(s) at {prec}; {what}",
         report.flips,
         match kind {
             FlipKind::Euclidean => "Euclidean",
             FlipKind::Ptolemy => "Ptolemy",
         },
-        if report.all_certified_delaunay() {
-            "every edge certified intrinsic Delaunay".to_string()
-        } else {
-            format!(
-                "NOT every edge certified Delaunay ({} undecided, {} refused{})",
-                report.undecided.len(),
-                report.refused.len(),
-                if report.hit_cap { ", flip cap hit" } else { "" }
-            )
-        }
     );
     if let Some(p) = o.output {
         write_new(p, &text)?;
@@ -213,9 +261,116 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         emit(&text);
         eprintln!("{summary}");
     }
-    Ok(if report.all_certified_delaunay() {
-        code::HOLDS
-    } else {
-        code::UNDECIDED
+    if let Some(p) = o.summary {
+        let doc = summary_json(&report, kind, prec, certificate, not_for_input);
+        write_new(p, &format!("{doc:#}\n"))?;
+    }
+    Ok(match (certificate, not_for_input) {
+        (Certificate::InputMetric, _) | (Certificate::RoundedMetric, None) => code::HOLDS,
+        _ => code::UNDECIDED,
     })
+}
+
+/// The certificate of a run and the count of edges not certified for the input metric
+/// (`None` when not counted: no replay, or the rounded run itself is not certified).
+fn certificate_of(
+    rounded_ok: bool,
+    exact_run: bool,
+    replay: Option<&(Replayed, u32)>,
+) -> (Certificate, Option<usize>) {
+    match (replay, rounded_ok) {
+        (_, false) => (Certificate::None, None),
+        (None, true) if exact_run => (Certificate::InputMetric, Some(0)),
+        (None, true) => (Certificate::RoundedMetric, None),
+        (Some((r, _)), true) if r.certified_delaunay() => (Certificate::InputMetric, Some(0)),
+        (Some((r, _)), true) => (Certificate::RoundedMetric, Some(not_certified(r))),
+    }
+}
+
+/// The `--summary` document: flips, precision and what is certified.
+fn summary_json(
+    report: &FlipReport,
+    kind: FlipKind,
+    prec: Prec,
+    certificate: Certificate,
+    not_for_input: Option<usize>,
+) -> serde_json::Value {
+    serde_json::json!({
+        "flips": report.flips,
+        "flip_kind": match kind { FlipKind::Euclidean => "euclidean", FlipKind::Ptolemy => "ptolemy" },
+        "precision": prec.to_string(),
+        "certificate": certificate.name(),
+        "not_certified_for_input": not_for_input,
+        "undecided": report.undecided.len(),
+        "refused": report.refused.len(),
+        "hit_cap": report.hit_cap,
+    })
+}
+
+/// What the written triangulation is certified to be, in words.
+fn certificate_words(
+    certificate: Certificate,
+    not_for_input: Option<usize>,
+    replay: Option<&(Replayed, u32)>,
+    scaled: bool,
+    report: &FlipReport,
+) -> String {
+    match (certificate, not_for_input) {
+        (Certificate::InputMetric, _) => {
+            "every edge certified intrinsic Delaunay, certified for the input metric".to_string()
+        }
+        (Certificate::RoundedMetric, Some(n)) => format!(
+            "every edge certified intrinsic Delaunay for the rounded metric only; {n} edge(s) not certified for the input metric{}",
+            replay.map_or(String::new(), |(r, bits)| replay_detail(r, *bits))
+        ),
+        (Certificate::RoundedMetric, None) => format!(
+            "every edge certified intrinsic Delaunay for the rounded metric only ({})",
+            if scaled {
+                "the scaled input metric is not replayed"
+            } else {
+                "the replay on the input metric was skipped"
+            }
+        ),
+        (Certificate::None, _) => format!(
+            "NOT every edge certified Delaunay ({} undecided, {} refused{})",
+            report.undecided.len(),
+            report.refused.len(),
+            if report.hit_cap { ", flip cap hit" } else { "" }
+        ),
+    }
+}
+
+/// Edges of the written triangulation not certified Delaunay for the input metric: the
+/// interior edges certified non-Delaunay or undecided there; when a flip of the sequence is
+/// not a certified legal step on the input metric, the triangulation itself is not one of
+/// the input's certified flips, and no interior edge is certified.
+fn not_certified(r: &Replayed) -> usize {
+    if r.broken.is_some() {
+        return r
+            .mesh
+            .edges()
+            .filter(|&e| QuadEdges::of(&r.mesh, e).is_some())
+            .count();
+    }
+    r.negative.len() + r.undecided.len()
+}
+
+/// The first reason of a failed replay, for the message.
+fn replay_detail(r: &Replayed, bits: u32) -> String {
+    match &r.broken {
+        Some((n, e, why)) => format!(
+            " (flip {n} of the sequence, edge {e}, is {} for the input metric at {bits} bits)",
+            match why {
+                BrokenStep::StrictlyDelaunay => "certified strictly Delaunay, not a legal flip",
+                BrokenStep::Undecided => "undecided",
+                BrokenStep::NoLength => "without an enclosed new length",
+                BrokenStep::NotFlippable => "not flippable",
+            }
+        ),
+        None => format!(
+            " ({} certified non-Delaunay, {} undecided at {bits} bits)",
+            r.negative.len(),
+            r.undecided.len()
+        ),
+    }
 }

@@ -56,12 +56,16 @@ pub fn main() -> ExitCode {
             precision,
             output,
             scale_factors,
+            summary,
+            no_input_replay,
         }) => delaunay::run(&delaunay::Options {
             path: &surface,
             flips,
             precision: &precision,
             output: output.as_deref(),
             scale_factors: scale_factors.as_deref(),
+            summary: summary.as_deref(),
+            input_replay: !no_input_replay,
         }),
     };
     match result {

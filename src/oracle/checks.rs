@@ -242,11 +242,14 @@ fn t21_ptolemy(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
     ))
 }
 
+/// T22 flips at `prec` and compares the runs on the case's exact metric (each run's flip
+/// sequence replayed there, B80): ties are decided on the input, never on rounded lengths.
 fn t22(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
     at_precision!(prec, case, |l: T| Some(
-        t22_delaunay_uniqueness::check_delaunay_uniqueness(
+        t22_delaunay_uniqueness::check_delaunay_uniqueness_of(
             &case.mesh,
             &l,
+            &case.metric,
             FlipKind::Euclidean,
             &[1, 2, 3],
             s

@@ -37,96 +37,25 @@
 use super::certify::{Answer, ClaimVerdict};
 use super::claim::Claim;
 use super::relabel::{first_extra_edge, isomorphisms, Relabeling};
-use super::tie_search::{search, tie_length, Search};
+use super::tie_search::{search, Search};
 use crate::algorithms::flip_to_delaunay::{
-    flip_to_delaunay, flip_to_delaunay_exact, rational_bits, FlipKind, FlipOptions,
+    flip_to_delaunay, flip_to_delaunay_exact, FlipKind, FlipOptions,
 };
-use crate::algorithms::flips::{
-    euclidean_length_enclosure, ptolemy_length_enclosure, ptolemy_length_exact,
+pub(super) use crate::algorithms::replay::{
+    from_q, new_length, positive, sign, tie_length, Enclosure, Len, EXACT_GUARD_BITS,
 };
 use crate::io::json::edge_order;
 use crate::io::{Metric, Surface};
 use crate::mesh::{Edge, Mesh};
-use crate::predicates::delaunay::{delaunay_sign_squared, enclose_p, exact_p, Quad, QuadEdges};
+use crate::predicates::delaunay::QuadEdges;
 use crate::predicates::directed::valid;
-use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
+use crate::scalar::{Mpfr, Precision, Real, Sign};
 use crate::theorems::Witness;
 use rug::Rational;
 use std::cmp::Ordering;
 
-/// Bit size (numerator + denominator) past which exact Ptolemy lengths are replaced by
-/// enclosures, both in the proposing run and in the replay.
-pub(super) const EXACT_GUARD_BITS: u64 = 4096;
-
 /// At most this many relabelings are compared (symmetries fixing every vertex).
 pub(super) const MAX_RELABELINGS: usize = 64;
-
-/// The outward-rounded MPFR enclosure of the replay (proof: B62).
-type Enclosure = Interval<Mpfr>;
-
-/// The tightest enclosure of `q` at `bits` bits; `None` for a precision MPFR refuses.
-fn from_q(q: &Rational, bits: u32) -> Option<Enclosure> {
-    let p = Precision::new(u64::from(bits)).ok()?;
-    Some(Interval::from_rational(q, p))
-}
-
-fn positive(x: &Enclosure) -> bool {
-    x.sign() == Some(Sign::Positive)
-}
-
-/// A length in the replay: exact, the square root of an exact rational, or an enclosure.
-#[derive(Clone, Debug)]
-pub(super) enum Len {
-    Exact(Rational),
-    Root(Rational),
-    Enclosed(Enclosure),
-}
-
-impl Len {
-    pub(super) fn enclose(&self, bits: u32) -> Option<Enclosure> {
-        match self {
-            Len::Exact(q) => from_q(q, bits),
-            Len::Root(s) => valid(from_q(s, bits)?.sqrt()),
-            Len::Enclosed(e) => Some(e.clone()),
-        }
-    }
-    pub(super) fn exact(&self) -> Option<&Rational> {
-        match self {
-            Len::Exact(q) => Some(q),
-            _ => None,
-        }
-    }
-    pub(super) fn exact_square(&self) -> Option<Rational> {
-        match self {
-            Len::Exact(q) => Some(Rational::from(q * q)),
-            Len::Root(s) => Some(s.clone()),
-            Len::Enclosed(_) => None,
-        }
-    }
-}
-
-/// The certified sign of the Delaunay polynomial `D` of the quadrilateral `q` (proof: B80): exact when
-/// the five lengths (or their squares) are rational (proof: B63), otherwise from the
-/// outward-rounded enclosure of `D` (proof: B62); `None` when the enclosure straddles 0.
-fn sign(lens: &[Len], q: Quad<Edge>, bits: u32) -> Option<Sign> {
-    let l = q.map(|e| &lens[e.idx()]);
-    let arr = l.to_array();
-    if let [Some(a), Some(b), Some(c), Some(d), Some(e)] = arr.map(Len::exact) {
-        return Some(Sign::of_ordering(exact_p([a, b, c, d, e]).cmp0()));
-    }
-    if let [Some(a), Some(b), Some(c), Some(d), Some(e)] = arr.map(Len::exact_square) {
-        let sq = Quad {
-            ij: &a,
-            jk: &b,
-            ki: &c,
-            il: &d,
-            lj: &e,
-        };
-        return Some(delaunay_sign_squared(sq));
-    }
-    let [a, b, c, d, e] = arr.map(|x| x.enclose(bits));
-    enclose_p(&[a?, b?, c?, d?, e?]).sign()
-}
 
 /// Our certified Delaunay triangulation.
 pub(super) struct Ours {
@@ -145,44 +74,6 @@ pub(super) struct Open {
 pub(super) fn edge_name(mesh: &Mesh, e: Edge) -> String {
     let h = e.halfedge();
     format!("v{}–v{}", mesh.tail(h).0, mesh.tip(h).0)
-}
-
-/// The length of the new diagonal after flipping the quadrilateral with lengths `quad`:
-/// exact for Ptolemy flips of exact lengths (below the bit guard), otherwise an
-/// outward-rounded enclosure (proof: B80); `None` when it cannot be enclosed as positive.
-pub(super) fn new_length(quad: Quad<&Len>, ptolemy: bool, bits: u32) -> Option<Len> {
-    if ptolemy {
-        if let [Some(a), Some(b), Some(c), Some(d), Some(e)] = quad.to_array().map(Len::exact) {
-            let l = ptolemy_length_exact(Quad {
-                ij: a,
-                jk: b,
-                ki: c,
-                il: d,
-                lj: e,
-            });
-            return if rational_bits(&l) > EXACT_GUARD_BITS {
-                from_q(&l, bits).map(Len::Enclosed)
-            } else {
-                Some(Len::Exact(l))
-            };
-        }
-    }
-    let [a, b, c, d, e] = quad.to_array().map(|x| x.enclose(bits));
-    let (a, b, c, d, e) = (a?, b?, c?, d?, e?);
-    let q = Quad {
-        ij: &a,
-        jk: &b,
-        ki: &c,
-        il: &d,
-        lj: &e,
-    };
-    if ptolemy {
-        ptolemy_length_enclosure(q)
-    } else {
-        euclidean_length_enclosure(q)
-    }
-    .filter(positive)
-    .map(Len::Enclosed)
 }
 
 /// An open step at edge `e` of `mesh`.

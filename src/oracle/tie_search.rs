@@ -24,14 +24,13 @@
 
 use super::certify::ClaimVerdict;
 use super::flip_claim::{
-    compare, edge_name, finish, new_length, Compared, Len, Ours, EXACT_GUARD_BITS, MAX_RELABELINGS,
+    compare, edge_name, finish, tie_length, Compared, Len, Ours, MAX_RELABELINGS,
 };
 use super::relabel::isomorphisms;
-use crate::algorithms::flip_to_delaunay::rational_bits;
 use crate::io::json::edge_order;
 use crate::io::Surface;
 use crate::mesh::{Edge, HalfEdge, Mesh};
-use crate::predicates::delaunay::{Quad, QuadEdges};
+use crate::predicates::delaunay::QuadEdges;
 use crate::theorems::Witness;
 use rug::Rational;
 use std::collections::{HashMap, HashSet, VecDeque};
@@ -60,36 +59,6 @@ pub(super) enum Search {
         witnesses: Vec<Witness>,
         retry: bool,
     },
-}
-
-/// The exact square root of a non-negative rational, if it is a rational square.
-fn rational_sqrt(q: &Rational) -> Option<Rational> {
-    let (n, d) = (q.numer(), q.denom());
-    if n.cmp0() == std::cmp::Ordering::Less || !n.is_perfect_square() || !d.is_perfect_square() {
-        return None;
-    }
-    Some(Rational::from((n.clone().sqrt(), d.clone().sqrt())))
-}
-
-/// The new diagonal of a tie flip (module docs; proof: B82): exact by Ptolemy's theorem
-/// when the five lengths are rational, or their squares are and the product under the
-/// root is a rational square; otherwise the enclosure of the claimed flip kind.
-pub(super) fn tie_length(quad: Quad<&Len>, ptolemy: bool, bits: u32) -> Option<Len> {
-    if quad.to_array().iter().all(|l| l.exact().is_some()) {
-        return new_length(quad, true, bits);
-    }
-    if let [Some(ij), Some(jk), Some(ki), Some(il), Some(lj)] =
-        quad.to_array().map(Len::exact_square)
-    {
-        let (p, r) = (Rational::from(&ki * &lj), Rational::from(&il * &jk));
-        if let Some(root) = rational_sqrt(&Rational::from(&p * &r)) {
-            let s = (p + r + root * 2u32) / ij;
-            if rational_bits(&s) <= EXACT_GUARD_BITS {
-                return Some(Len::Root(s));
-            }
-        }
-    }
-    new_length(quad, ptolemy, bits)
 }
 
 /// The polygon corner of the Delaunay cell at the tail of `h`: the first half-edge of a

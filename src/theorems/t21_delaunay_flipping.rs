@@ -4,17 +4,26 @@
 //! The check runs [`flip_to_delaunay`] on a copy and then re-decides *every* edge of the
 //! result from scratch with [`edge_delaunay_sign`] — the re-check does not trust the
 //! driver's bookkeeping.
+//!
+//! What refutes the theorem, and what does not: an edge certified non-Delaunay that the
+//! driver claims to have finished is a certified failure. An edge whose flip the driver
+//! *refused* (the rounded new diagonal, or its two new triangles, could not be certified at
+//! this precision; B65, B66) or left undecided was not flipped, so its sign says nothing
+//! about the theorem: it is `undecided`. A run stopped by the flip cap is `undecided` too —
+//! the cap bounds the work, it proves nothing about termination.
 
 use super::{Settings, Verdict, Witness};
 use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
-use crate::mesh::Mesh;
+use crate::mesh::{Edge, Mesh};
 use crate::predicates::delaunay::{edge_delaunay_sign, EdgeDelaunay};
 use crate::scalar::{Certified, Real, Sign};
 
 /// Flip a copy of `(mesh, lengths)` to Delaunay with `kind` flips and certify every edge.
 /// `Holds` (certified) when the run ends before its cap and every edge is certified
-/// Delaunay; `Fails` lists each edge certified non-Delaunay (and the cap, if hit);
-/// `Undecided` lists the edges no rung could decide.
+/// Delaunay; `Fails` lists each edge certified non-Delaunay that the driver reported
+/// finished; `Undecided` lists the edges no rung could decide, the edges whose flip was
+/// refused (their flip could not be certified at this precision), and the cap if it was
+/// hit.
 pub fn check_delaunay_flipping<T: Real>(
     mesh: &Mesh,
     lengths: &[T],
@@ -35,10 +44,22 @@ pub fn check_delaunay_flipping<T: Real>(
             }
         }
     };
-    check_all_edges_delaunay(&m, &l, settings, report.hit_cap, report.flips)
+    let mut unfinished = report.refused.clone();
+    unfinished.extend(report.undecided.iter().copied());
+    unfinished.sort_unstable();
+    certify_edges(
+        &m,
+        &l,
+        settings,
+        report.hit_cap.then_some(report.flips),
+        &unfinished,
+    )
 }
 
 /// Certify that every edge of `(mesh, lengths)` is Delaunay (the "afterwards" half of T21).
+/// `hit_cap`: the run that produced the triangulation stopped at its flip cap after `flips`
+/// flips; then nothing is refuted (an edge may be non-Delaunay because it was never reached)
+/// and the verdict is at best `Undecided`.
 pub fn check_all_edges_delaunay<T: Real>(
     mesh: &Mesh,
     lengths: &[T],
@@ -46,13 +67,27 @@ pub fn check_all_edges_delaunay<T: Real>(
     hit_cap: bool,
     flips: usize,
 ) -> Verdict {
+    certify_edges(mesh, lengths, settings, hit_cap.then_some(flips), &[])
+}
+
+/// The re-check of every edge: `cap` is the flip count when the cap was hit, `unfinished`
+/// the edges the driver listed as refused or undecided, sorted (never a refutation).
+fn certify_edges<T: Real>(
+    mesh: &Mesh,
+    lengths: &[T],
+    settings: &Settings,
+    cap: Option<usize>,
+    unfinished: &[Edge],
+) -> Verdict {
     let mut failing = Vec::new();
     let mut undecided = Vec::new();
     let mut bits = 0;
-    if hit_cap {
-        failing.push(Witness {
+    if let Some(flips) = cap {
+        undecided.push(Witness {
             element: "surface".into(),
-            detail: format!("flip cap reached after {flips} flips"),
+            detail: format!(
+                "flip cap reached after {flips} flips: the run was stopped, which proves nothing about termination"
+            ),
             value: flips as f64,
         });
     }
@@ -66,11 +101,29 @@ pub fn check_all_edges_delaunay<T: Real>(
             Ok(EdgeDelaunay::Interior(Certified::Known {
                 value: Sign::Negative,
                 ..
-            })) => failing.push(Witness {
-                element: e.to_string(),
-                detail: "certified non-Delaunay (P < 0)".into(),
-                value: -1.0,
-            }),
+            })) => {
+                if unfinished.binary_search(&e).is_ok() {
+                    undecided.push(Witness {
+                        element: e.to_string(),
+                        detail: "certified non-Delaunay, but its flip was refused: the new diagonal (or its two triangles) could not be certified at this precision".into(),
+                        value: -1.0,
+                    });
+                } else if cap.is_some() {
+                    undecided.push(Witness {
+                        element: e.to_string(),
+                        detail: "certified non-Delaunay when the flip cap stopped the run".into(),
+                        value: -1.0,
+                    });
+                } else {
+                    failing.push(Witness {
+                        element: e.to_string(),
+                        detail:
+                            "certified non-Delaunay (P < 0) after a run that reported it finished"
+                                .into(),
+                        value: -1.0,
+                    });
+                }
+            }
             Ok(EdgeDelaunay::Interior(Certified::Undecided { bits_tried })) => {
                 bits = bits.max(bits_tried);
                 undecided.push(Witness {
@@ -82,20 +135,10 @@ pub fn check_all_edges_delaunay<T: Real>(
             Ok(_) => {}
         }
     }
-    if !failing.is_empty() {
-        Verdict::Fails {
-            certified: !hit_cap || failing.len() > 1,
-            witnesses: failing,
-        }
-    } else if !undecided.is_empty() {
-        Verdict::Undecided {
-            bits_tried: bits,
-            witnesses: undecided,
-        }
+    let bits = if bits == 0 {
+        settings.ladder.max_bits
     } else {
-        Verdict::Holds {
-            certified: true,
-            max_error: 0.0,
-        }
-    }
+        bits
+    };
+    Verdict::certified(failing, undecided, bits)
 }

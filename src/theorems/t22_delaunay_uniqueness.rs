@@ -2,23 +2,30 @@
 //! at ties `D = 0` and both diagonals pass.
 //!
 //! Two comparisons:
-//! - [`check_delaunay_uniqueness`]: flip one start with several visit orders and compare
-//!   the results. Vertex labels are preserved by flips, so without ties the results must
-//!   be the same triangulation up to renumbering of edges and faces
-//!   ([`same_triangulation`], a vertex-fixing isomorphism of the gluing, which also
-//!   separates Δ-complexes whose multi-edges make face lists ambiguous). With ties
-//!   (certified `P = 0`) the strictly Delaunay edges are compared as multisets of vertex
-//!   pairs, and each tie edge must stay a tie after flipping it.
+//! - [`check_delaunay_uniqueness_of`]: flip one start with several visit orders and
+//!   compare the results *on one metric*, the exact input: each run's recorded flip
+//!   sequence is replayed on the input metric with certified arithmetic (B80), and only
+//!   runs certified Delaunay there are compared (a rounded run whose flips round
+//!   differently ran on another metric; it is `undecided`, never a refutation). Vertex
+//!   labels are preserved by flips, so without ties the results must be the same
+//!   triangulation up to renumbering of edges and faces ([`same_triangulation`], a
+//!   vertex-fixing isomorphism of the gluing, which also separates Δ-complexes whose
+//!   multi-edges make face lists ambiguous). With ties (`D = 0` certified on the input
+//!   metric, exact lengths) the strictly Delaunay edges are compared as multisets of
+//!   vertex pairs, and each tie edge must stay a tie after flipping it.
 //! - [`check_planar_delaunay_matches_spade`]: a planar triangulation with convex boundary,
 //!   flipped intrinsically, has the edge set of `spade`'s constrained Delaunay
 //!   triangulation of the same points (an independent implementation).
 
 use super::{Settings, Verdict, Witness};
 use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
-use crate::algorithms::flips::flip_metric;
+use crate::algorithms::replay::{
+    replay_escalating, sign as replay_sign, tie_length, Len, Replayed,
+};
+use crate::io::Metric;
 use crate::mesh::relabel::isomorphisms;
 use crate::mesh::Mesh;
-use crate::predicates::delaunay::{edge_delaunay_sign, EdgeDelaunay};
+use crate::predicates::delaunay::{edge_delaunay_sign, EdgeDelaunay, QuadEdges};
 use crate::scalar::{Certified, Real, Sign};
 use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
 use std::collections::BTreeMap;
@@ -84,7 +91,8 @@ pub fn same_triangulation(a: &Mesh, b: &Mesh) -> bool {
 }
 
 /// Flip `(mesh, lengths)` to Delaunay once per seed in `seeds` (random visit orders) and
-/// compare the results (see the module documentation).
+/// compare the results on the metric of the given lengths, taken exactly
+/// ([`check_delaunay_uniqueness_of`] with `input` their exact values).
 pub fn check_delaunay_uniqueness<T: Real>(
     mesh: &Mesh,
     lengths: &[T],
@@ -92,66 +100,205 @@ pub fn check_delaunay_uniqueness<T: Real>(
     seeds: &[u64],
     settings: &Settings,
 ) -> Verdict {
-    let mut reference: Option<(Mesh, PairCounts, bool)> = None;
+    let Some(exact) = lengths
+        .iter()
+        .map(Real::to_rational)
+        .collect::<Option<Vec<_>>>()
+    else {
+        return Verdict::NotApplicable {
+            reason: "a length has no exact value (not finite)".into(),
+        };
+    };
+    check_delaunay_uniqueness_of(
+        mesh,
+        lengths,
+        &Metric::Lengths(exact),
+        kind,
+        seeds,
+        settings,
+    )
+}
+
+/// One run of the uniqueness check, certified on the input metric.
+struct CertifiedRun {
+    seed: u64,
+    mesh: Mesh,
+    strict: PairCounts,
+    tied: bool,
+}
+
+/// Flip `(mesh, lengths)` in the backend of `lengths` once per seed in `seeds` (random
+/// visit orders), replay each recorded flip sequence on the exact `input` metric with
+/// certified arithmetic ([`replay_escalating`], proof: B80) and compare the runs certified
+/// there (module documentation). Every comparison is about the one metric `input`: two
+/// runs in a rounded backend round their new lengths differently and so run on two
+/// different metrics, which refutes nothing. A run whose triangulation is not certified
+/// Delaunay for `input` (a flip certified strictly Delaunay there, an undecided sign, a
+/// refused flip or the flip cap) makes the verdict `Undecided`; `Fails` needs two runs
+/// certified Delaunay for `input` whose triangulations differ without ties, or whose
+/// strictly Delaunay edges differ, or a certified tie whose flip is certified not a tie.
+pub fn check_delaunay_uniqueness_of<T: Real>(
+    mesh: &Mesh,
+    lengths: &[T],
+    input: &Metric,
+    kind: FlipKind,
+    seeds: &[u64],
+    settings: &Settings,
+) -> Verdict {
+    let max_bits = settings.ladder.max_bits.max(REPLAY_START_BITS);
     let mut witnesses = Vec::new();
     let mut undecided = Vec::new();
+    let mut runs: Vec<CertifiedRun> = Vec::new();
     for &seed in seeds {
         let (mut m, mut l) = (mesh.clone(), lengths.to_vec());
         let opts = FlipOptions {
             ladder: settings.ladder,
             order_seed: Some(seed),
+            record: true,
             ..FlipOptions::default()
         };
-        if let Err(err) = flip_to_delaunay(&mut m, &mut l, kind, &opts) {
-            return Verdict::NotApplicable {
-                reason: err.to_string(),
-            };
-        }
-        let (strict, ties, bad) = match classify(&m, &l, settings) {
-            Ok(x) => x,
-            Err(reason) => return Verdict::NotApplicable { reason },
-        };
-        witnesses.extend(bad);
-        // At a tie both diagonals pass: flip it and the new diagonal is a tie again. The
-        // flipped length is rounded to the working precision (unless the backend is exact
-        // and the flip rational), so a nonzero sign of the rounded quadrilateral refutes
-        // nothing: it leaves the tie claim undecided, never failed.
-        let tied = !ties.is_empty();
-        for e in ties {
-            let (mut m2, mut l2) = (m.clone(), l.clone());
-            if flip_metric(&mut m2, &mut l2, e, kind).is_ok() {
-                let s = edge_delaunay_sign(&m2, &l2, e, &settings.ladder);
-                if !matches!(s, Ok(EdgeDelaunay::Interior(c)) if c.value() == Some(Sign::Zero)) {
-                    undecided.push(Witness {
-                        element: e.to_string(),
-                        detail: format!(
-                            "seed {seed}: tie edge whose flip, with the new length rounded, is not a certified tie"
-                        ),
-                        value: 0.0,
-                    });
+        let report = match flip_to_delaunay(&mut m, &mut l, kind, &opts) {
+            Ok(r) => r,
+            Err(err) => {
+                return Verdict::NotApplicable {
+                    reason: err.to_string(),
                 }
             }
+        };
+        if !report.all_certified_delaunay() {
+            undecided.push(Witness {
+                element: "surface".into(),
+                detail: format!(
+                    "seed {seed}: the run did not finish ({} undecided, {} refused{})",
+                    report.undecided.len(),
+                    report.refused.len(),
+                    if report.hit_cap { ", flip cap hit" } else { "" }
+                ),
+                value: seed as f64,
+            });
+            continue;
         }
-        match &reference {
-            None => reference = Some((m, strict, tied)),
-            Some((rm, _, false)) if !tied && !same_triangulation(rm, &m) => {
+        let (r, bits) = replay_escalating(
+            mesh,
+            input,
+            &report.sequence,
+            kind,
+            REPLAY_START_BITS,
+            max_bits,
+        );
+        if !r.certified_delaunay() {
+            undecided.push(Witness {
+                element: "surface".into(),
+                detail: format!(
+                    "seed {seed}: the rounded run is not certified Delaunay for the input metric at {bits} bits ({})",
+                    replay_gap(&r)
+                ),
+                value: seed as f64,
+            });
+            continue;
+        }
+        let strict = strict_pairs(&r.mesh, &r.ties);
+        // At a tie both diagonals pass: flipping it gives a tie again (exact lengths where
+        // Ptolemy's theorem keeps them exact; an open sign is undecided).
+        for &e in &r.ties {
+            match tie_flip_sign(&r, e, kind, bits) {
+                Some(Sign::Zero) => {}
+                Some(_) => witnesses.push(Witness {
+                    element: e.to_string(),
+                    detail: format!(
+                        "seed {seed}: tie edge (D = 0) whose flip is certified not a tie"
+                    ),
+                    value: 0.0,
+                }),
+                None => undecided.push(Witness {
+                    element: e.to_string(),
+                    detail: format!(
+                        "seed {seed}: tie edge whose flip is not decided a tie at {bits} bits"
+                    ),
+                    value: 0.0,
+                }),
+            }
+        }
+        runs.push(CertifiedRun {
+            seed,
+            tied: !r.ties.is_empty(),
+            mesh: r.mesh,
+            strict,
+        });
+    }
+    witnesses.extend(compare_runs(&runs));
+    Verdict::certified(witnesses, undecided, max_bits)
+}
+
+/// The comparison of runs certified Delaunay for one metric: each against the first.
+fn compare_runs(runs: &[CertifiedRun]) -> Vec<Witness> {
+    let mut witnesses = Vec::new();
+    if let Some((first, rest)) = runs.split_first() {
+        for run in rest {
+            let seed = run.seed;
+            if !first.tied && !run.tied {
+                if !same_triangulation(&first.mesh, &run.mesh) {
+                    witnesses.push(Witness {
+                        element: "surface".into(),
+                        detail: format!(
+                            "seeds {} and {seed}: two Delaunay triangulations of the input metric without ties differ",
+                            first.seed
+                        ),
+                        value: seed as f64,
+                    });
+                }
+            } else if first.strict != run.strict {
                 witnesses.push(Witness {
                     element: "surface".into(),
                     detail: format!(
-                        "seed {seed}: not the same triangulation as the first run (no ties)"
+                        "seeds {} and {seed}: strictly Delaunay edges of the input metric differ",
+                        first.seed
                     ),
                     value: seed as f64,
                 });
             }
-            Some((_, r, _)) if *r != strict => witnesses.push(Witness {
-                element: "surface".into(),
-                detail: format!("seed {seed}: strictly Delaunay edges differ from the first run"),
-                value: seed as f64,
-            }),
-            Some(_) => {}
         }
     }
-    Verdict::certified(witnesses, undecided, settings.ladder.max_bits)
+    witnesses
+}
+
+/// First MPFR precision of the replays on the input metric (doubling to the ladder's top).
+const REPLAY_START_BITS: u32 = 128;
+
+/// Why a replay is not certified, in words.
+fn replay_gap(r: &Replayed) -> String {
+    match &r.broken {
+        Some((n, e, why)) => format!("flip {n} of the sequence, edge {e}: {why:?}"),
+        None => format!(
+            "{} edge(s) certified non-Delaunay, {} undecided",
+            r.negative.len(),
+            r.undecided.len()
+        ),
+    }
+}
+
+/// Vertex pairs of the edges of `mesh` that are not ties (strictly Delaunay interior
+/// edges, boundary and self-folded edges), with multiplicity.
+fn strict_pairs(mesh: &Mesh, ties: &[crate::mesh::Edge]) -> PairCounts {
+    let mut strict = PairCounts::new();
+    for e in mesh.edges() {
+        if !ties.contains(&e) {
+            *strict.entry(pair(mesh, e)).or_default() += 1;
+        }
+    }
+    strict
+}
+
+/// The certified sign of `D` of the tie `e` of the replay `r` after flipping it, its new
+/// length by Ptolemy's theorem (proof: B82).
+fn tie_flip_sign(r: &Replayed, e: crate::mesh::Edge, kind: FlipKind, bits: u32) -> Option<Sign> {
+    let q = QuadEdges::of(&r.mesh, e)?;
+    let new = tie_length(q.lengths(&r.lens), kind == FlipKind::Ptolemy, bits)?;
+    let (mut m, mut lens): (Mesh, Vec<Len>) = (r.mesh.clone(), r.lens.clone());
+    m.flip(e).ok()?;
+    lens[e.idx()] = new;
+    let q2 = QuadEdges::of(&m, e)?;
+    replay_sign(&lens, q2.edges, bits)
 }
 
 /// Flip the planar triangulation `faces` of `points` (convex boundary) with Euclidean flips

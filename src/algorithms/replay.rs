@@ -1,0 +1,323 @@
+//! Replaying a flip sequence on the *input* metric with certified arithmetic (proof: B80).
+//!
+//! A flip run in a rounded backend (`f64`, `Dd`, MPFR) certifies its result for the lengths
+//! it stores, which are rounded flips of the input (B65). To certify the same triangulation
+//! for the input metric itself, the recorded sequence is replayed here on exact lengths:
+//! rational lengths stay rational under Ptolemy flips (T28), lengths given by rational
+//! squares stay exact until a Euclidean flip, and everything else becomes an
+//! outward-rounded MPFR enclosure (B62). Every flip must be certified not strictly Delaunay
+//! (`D ≤ 0`) on the input metric at the time of its flip, so it is a legal step; a flip
+//! certified `D = 0` (a cocircular tie) takes its new length by Ptolemy's theorem, exact
+//! where the lengths are (B82). At the end every interior edge is classified: certified
+//! strictly Delaunay, a certified tie, certified non-Delaunay, or undecided.
+//!
+//! The replay costs one sign and one new length per flip, and one sign per edge at the
+//! end: linear in the length of the sequence plus the number of edges.
+
+use super::flip_to_delaunay::rational_bits;
+use super::flips::{
+    euclidean_length_enclosure, ptolemy_length_enclosure, ptolemy_length_exact, FlipKind,
+};
+use crate::io::Metric;
+use crate::mesh::{Edge, Mesh};
+use crate::predicates::delaunay::{delaunay_sign_squared, enclose_p, exact_p, Quad, QuadEdges};
+use crate::predicates::directed::valid;
+use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
+use rug::Rational;
+
+/// Bit size (numerator + denominator) past which exact Ptolemy lengths are replaced by
+/// enclosures in a replay.
+pub const EXACT_GUARD_BITS: u64 = 4096;
+
+/// The outward-rounded MPFR enclosure of the replay (proof: B62).
+pub type Enclosure = Interval<Mpfr>;
+
+/// The tightest enclosure of `q` at `bits` bits; `None` for a precision MPFR refuses.
+pub fn from_q(q: &Rational, bits: u32) -> Option<Enclosure> {
+    let p = Precision::new(u64::from(bits)).ok()?;
+    Some(Interval::from_rational(q, p))
+}
+
+/// Whether the enclosure is certified positive.
+pub fn positive(x: &Enclosure) -> bool {
+    x.sign() == Some(Sign::Positive)
+}
+
+/// A length in a replay: exact, the square root of an exact rational, or an enclosure.
+#[derive(Clone, Debug)]
+pub enum Len {
+    /// An exact rational length.
+    Exact(Rational),
+    /// The square root of this exact positive rational.
+    Root(Rational),
+    /// An outward-rounded enclosure of the length.
+    Enclosed(Enclosure),
+}
+
+impl Len {
+    /// The lengths of `metric`, exact.
+    pub fn of_metric(metric: &Metric) -> Vec<Len> {
+        match metric {
+            Metric::Lengths(l) => l.iter().cloned().map(Len::Exact).collect(),
+            Metric::SquaredLengths(s) => s.iter().cloned().map(Len::Root).collect(),
+        }
+    }
+    /// An enclosure at `bits` bits (the stored one for [`Len::Enclosed`]).
+    pub fn enclose(&self, bits: u32) -> Option<Enclosure> {
+        match self {
+            Len::Exact(q) => from_q(q, bits),
+            Len::Root(s) => valid(from_q(s, bits)?.sqrt()),
+            Len::Enclosed(e) => Some(e.clone()),
+        }
+    }
+    /// The exact length, if rational.
+    pub fn exact(&self) -> Option<&Rational> {
+        match self {
+            Len::Exact(q) => Some(q),
+            _ => None,
+        }
+    }
+    /// The exact squared length, if rational.
+    pub fn exact_square(&self) -> Option<Rational> {
+        match self {
+            Len::Exact(q) => Some(Rational::from(q * q)),
+            Len::Root(s) => Some(s.clone()),
+            Len::Enclosed(_) => None,
+        }
+    }
+}
+
+/// The certified sign of the Delaunay polynomial `D` of the quadrilateral `q` (proof: B80):
+/// from the outward-rounded enclosure of `D` when it excludes 0 (proof: B62), otherwise
+/// exact when the five lengths (or their squares) are rational (proof: B63, so ties are
+/// certified), otherwise `None`.
+pub fn sign(lens: &[Len], q: Quad<Edge>, bits: u32) -> Option<Sign> {
+    let l = q.map(|e| &lens[e.idx()]);
+    let arr = l.to_array();
+    // The enclosure first: it decides every sign away from zero, and costs less than exact
+    // arithmetic on long rationals; only a straddling enclosure goes to the exact rules.
+    let [a, b, c, d, e] = arr.map(|x| x.enclose(bits));
+    let enclosed = match (a, b, c, d, e) {
+        (Some(a), Some(b), Some(c), Some(d), Some(e)) => enclose_p(&[a, b, c, d, e]).sign(),
+        _ => None,
+    };
+    if let Some(s @ (Sign::Positive | Sign::Negative)) = enclosed {
+        return Some(s);
+    }
+    if let [Some(a), Some(b), Some(c), Some(d), Some(e)] = arr.map(Len::exact) {
+        return Some(Sign::of_ordering(exact_p([a, b, c, d, e]).cmp0()));
+    }
+    if let [Some(a), Some(b), Some(c), Some(d), Some(e)] = arr.map(Len::exact_square) {
+        let sq = Quad {
+            ij: &a,
+            jk: &b,
+            ki: &c,
+            il: &d,
+            lj: &e,
+        };
+        return Some(delaunay_sign_squared(sq));
+    }
+    enclosed
+}
+
+/// The length of the new diagonal after flipping the quadrilateral with lengths `quad`:
+/// exact for Ptolemy flips of exact lengths (below the bit guard), otherwise an
+/// outward-rounded enclosure (proof: B80); `None` when it cannot be enclosed as positive.
+pub fn new_length(quad: Quad<&Len>, ptolemy: bool, bits: u32) -> Option<Len> {
+    if ptolemy {
+        if let [Some(a), Some(b), Some(c), Some(d), Some(e)] = quad.to_array().map(Len::exact) {
+            let l = ptolemy_length_exact(Quad {
+                ij: a,
+                jk: b,
+                ki: c,
+                il: d,
+                lj: e,
+            });
+            return if rational_bits(&l) > EXACT_GUARD_BITS {
+                from_q(&l, bits).map(Len::Enclosed)
+            } else {
+                Some(Len::Exact(l))
+            };
+        }
+    }
+    let [a, b, c, d, e] = quad.to_array().map(|x| x.enclose(bits));
+    let (a, b, c, d, e) = (a?, b?, c?, d?, e?);
+    let q = Quad {
+        ij: &a,
+        jk: &b,
+        ki: &c,
+        il: &d,
+        lj: &e,
+    };
+    if ptolemy {
+        ptolemy_length_enclosure(q)
+    } else {
+        euclidean_length_enclosure(q)
+    }
+    .filter(positive)
+    .map(Len::Enclosed)
+}
+
+/// The exact square root of a non-negative rational, if it is a rational square.
+fn rational_sqrt(q: &Rational) -> Option<Rational> {
+    let (n, d) = (q.numer(), q.denom());
+    if n.cmp0() == std::cmp::Ordering::Less || !n.is_perfect_square() || !d.is_perfect_square() {
+        return None;
+    }
+    Some(Rational::from((n.clone().sqrt(), d.clone().sqrt())))
+}
+
+/// The new diagonal of a tie flip (proof: B82): a cyclic quadrilateral's diagonals satisfy
+/// Ptolemy's theorem, so the length is exact when the five lengths are rational, or their
+/// squares are and the product under the root of
+/// `ℓ_kl² = (s_ki s_lj + s_il s_jk + 2√(s_ki s_lj s_il s_jk))/s_ij` is a rational square;
+/// otherwise the enclosure of the flip kind.
+pub fn tie_length(quad: Quad<&Len>, ptolemy: bool, bits: u32) -> Option<Len> {
+    if quad.to_array().iter().all(|l| l.exact().is_some()) {
+        return new_length(quad, true, bits);
+    }
+    if let [Some(ij), Some(jk), Some(ki), Some(il), Some(lj)] =
+        quad.to_array().map(Len::exact_square)
+    {
+        let (p, r) = (Rational::from(&ki * &lj), Rational::from(&il * &jk));
+        if let Some(root) = rational_sqrt(&Rational::from(&p * &r)) {
+            let s = (p + r + root * 2u32) / ij;
+            if rational_bits(&s) <= EXACT_GUARD_BITS {
+                return Some(Len::Root(s));
+            }
+        }
+    }
+    new_length(quad, ptolemy, bits)
+}
+
+/// Why a step of a replay is not a certified legal flip.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum BrokenStep {
+    /// The edge is not flippable in the replayed mesh.
+    NotFlippable,
+    /// The edge is certified strictly Delaunay (`D > 0`) on the input metric.
+    StrictlyDelaunay,
+    /// The sign of `D` is not decided at the replay's precision.
+    Undecided,
+    /// The new length could not be enclosed as positive.
+    NoLength,
+}
+
+/// The outcome of [`replay_on_input`].
+#[derive(Clone, Debug)]
+pub struct Replayed {
+    /// The triangulation after the replayed flips (all of them when `broken` is `None`).
+    pub mesh: Mesh,
+    /// Its lengths for the input metric: exact or enclosed.
+    pub lens: Vec<Len>,
+    /// The first step that is not a certified legal flip, with its index and edge; the
+    /// replay stops there and the triangulation is then not certified for the input.
+    pub broken: Option<(usize, Edge, BrokenStep)>,
+    /// Interior edges certified `D = 0` (ties) at the end (empty when `broken`).
+    pub ties: Vec<Edge>,
+    /// Interior edges certified `D < 0` at the end (empty when `broken`).
+    pub negative: Vec<Edge>,
+    /// Interior edges whose sign is not decided at the end (empty when `broken`).
+    pub undecided: Vec<Edge>,
+}
+
+impl Replayed {
+    /// Whether the replayed triangulation is certified intrinsic Delaunay for the input
+    /// metric: every step legal and every interior edge certified `D ≥ 0`.
+    pub fn certified_delaunay(&self) -> bool {
+        self.broken.is_none() && self.negative.is_empty() && self.undecided.is_empty()
+    }
+}
+
+/// Replay `sequence` (flips of `kind`) on `mesh` with the exact `metric` at `bits` bits
+/// (module docs; proof: B80).
+pub fn replay_on_input(
+    mesh: &Mesh,
+    metric: &Metric,
+    sequence: &[Edge],
+    kind: FlipKind,
+    bits: u32,
+) -> Replayed {
+    let ptolemy = kind == FlipKind::Ptolemy;
+    let mut mesh = mesh.clone();
+    let mut lens = Len::of_metric(metric);
+    let out = |mesh: Mesh, lens: Vec<Len>, broken| Replayed {
+        mesh,
+        lens,
+        broken,
+        ties: Vec::new(),
+        negative: Vec::new(),
+        undecided: Vec::new(),
+    };
+    if lens.len() != mesh.n_edges() {
+        let e = Edge(0);
+        return out(mesh, lens, Some((0, e, BrokenStep::NoLength)));
+    }
+    for (n, &e) in sequence.iter().enumerate() {
+        let Some(q) = (e.idx() < mesh.n_edges())
+            .then(|| QuadEdges::of(&mesh, e))
+            .flatten()
+        else {
+            return out(mesh, lens, Some((n, e, BrokenStep::NotFlippable)));
+        };
+        let tie = match sign(&lens, q.edges, bits) {
+            Some(Sign::Zero) => true,
+            Some(Sign::Negative) => false,
+            Some(Sign::Positive) => {
+                return out(mesh, lens, Some((n, e, BrokenStep::StrictlyDelaunay)))
+            }
+            None => return out(mesh, lens, Some((n, e, BrokenStep::Undecided))),
+        };
+        let new = if tie {
+            tie_length(q.lengths(&lens), ptolemy, bits)
+        } else {
+            new_length(q.lengths(&lens), ptolemy, bits)
+        };
+        let Some(new) = new else {
+            return out(mesh, lens, Some((n, e, BrokenStep::NoLength)));
+        };
+        if mesh.flip(e).is_err() {
+            return out(mesh, lens, Some((n, e, BrokenStep::NotFlippable)));
+        }
+        lens[e.idx()] = new;
+    }
+    let mut r = out(mesh, lens, None);
+    for e in r.mesh.edges() {
+        let Some(q) = QuadEdges::of(&r.mesh, e) else {
+            continue;
+        };
+        match sign(&r.lens, q.edges, bits) {
+            Some(Sign::Positive) => {}
+            Some(Sign::Zero) => r.ties.push(e),
+            Some(Sign::Negative) => r.negative.push(e),
+            None => r.undecided.push(e),
+        }
+    }
+    r
+}
+
+/// [`replay_on_input`] from `start_bits`, doubling up to `max_bits` while a sign or a length
+/// is open (an undecided step, a length not enclosed, an undecided edge at the end); the
+/// last replay and its precision.
+pub fn replay_escalating(
+    mesh: &Mesh,
+    metric: &Metric,
+    sequence: &[Edge],
+    kind: FlipKind,
+    start_bits: u32,
+    max_bits: u32,
+) -> (Replayed, u32) {
+    let mut bits = start_bits.max(53);
+    loop {
+        let r = replay_on_input(mesh, metric, sequence, kind, bits);
+        let open = matches!(
+            r.broken,
+            Some((_, _, BrokenStep::Undecided | BrokenStep::NoLength))
+        ) || !r.undecided.is_empty();
+        let next = bits.saturating_mul(2);
+        if !open || next > max_bits {
+            return (r, bits);
+        }
+        bits = next;
+    }
+}
