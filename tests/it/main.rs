@@ -3,6 +3,7 @@
 mod claims;
 mod cli;
 mod cli_controls;
+mod cli_strict;
 mod cone_angles_kernel;
 mod controls;
 mod definition_two;
@@ -18,6 +19,7 @@ mod dual;
 mod exact;
 mod interval;
 mod io;
+mod io_strict_json;
 mod laplacian;
 mod mesh;
 mod mesh_core;
