@@ -24,6 +24,7 @@ mod laplacian;
 mod mesh;
 mod mesh_core;
 mod mesh_enumeration;
+mod mesh_gluing;
 mod meshgen;
 mod oracle;
 mod planar_gen;
