@@ -49,7 +49,7 @@ use crate::io::{Metric, Surface};
 use crate::mesh::{Edge, Mesh};
 use crate::predicates::delaunay::{delaunay_sign_squared, enclose_p, exact_p, Quad, QuadEdges};
 use crate::predicates::directed::valid;
-use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
+use crate::scalar::{nearest_f64, Interval, Mpfr, Precision, Real, Sign};
 use crate::theorems::Witness;
 use rug::Rational;
 use std::cmp::Ordering;
@@ -407,7 +407,7 @@ pub(super) fn compare(
         let (cmp, shown) = match (squared, ours_l) {
             (false, Len::Exact(x)) => (
                 within_exact(x, c, eps),
-                Rational::from(x - c).abs().to_f64(),
+                nearest_f64(&Rational::from(x - c).abs()),
             ),
             (false, Len::Root(s)) => {
                 let x = from_q(s, bits).and_then(|x| valid(x.sqrt()));
@@ -418,7 +418,7 @@ pub(super) fn compare(
                 let s = l.exact_square().unwrap_or_default();
                 (
                     within_exact(&s, c, eps),
-                    Rational::from(&s - c).abs().to_f64(),
+                    nearest_f64(&Rational::from(&s - c).abs()),
                 )
             }
             (_, l) => match l.enclose(bits) {

@@ -34,6 +34,7 @@ mod scalar_dd;
 mod scalar_dd_div;
 mod scalar_dd_exp;
 mod scalar_dd_reduction;
+mod scalar_nearest;
 #[cfg(feature = "strategies")]
 mod strategies;
 #[allow(dead_code)] // helpers used by some areas only
