@@ -7,6 +7,7 @@ use crate::support::cases;
 use penner::io::strict_json::{parse, JsonError};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use std::fmt::Write as _;
 
 /// A JSON value as written: objects keep their entries in order, repeats included.
 enum Doc {
@@ -70,7 +71,7 @@ fn write(doc: &Doc, path: &str, out: &mut String, first: &mut Option<Repeat>) {
                     let line = out.matches('\n').count() + 1;
                     *first = Some((path.to_string(), k.clone(), line));
                 }
-                out.push_str(&format!("{k:?}: "));
+                write!(out, "{k:?}: ").expect("writing to a String");
                 let child = if path.is_empty() {
                     k.clone()
                 } else {
