@@ -128,7 +128,7 @@ pub fn verify_equal_cross_ratios_exact(mesh: &Mesh, l: &[Rational], lt: &[Ration
     {
         if let (Some(a), Some(b)) = (a, b) {
             if a != b {
-                let d = nearest_f64(&Rational::from(b - a));
+                let d = nearest_f64(&(b - a));
                 tally.fail(format!("e{k}"), "c̃ ≠ c", d);
             }
         }

@@ -113,14 +113,14 @@ fn edge_cases() -> Vec<Rational> {
             Rational::from(&p + &hair),
             Rational::from(&p - &hair),
             // Midpoints between 2^k and its neighbours above (k−53) and below (k−54).
-            Rational::from(&p + scaled(1, k - 53)),
-            Rational::from(&p - scaled(1, k - 54)),
-            Rational::from(&p + scaled(1, k - 53) + &hair),
-            Rational::from(&p + scaled(1, k - 53) - &hair),
-            Rational::from(&p - scaled(1, k - 54) - &hair),
+            (&p + scaled(1, k - 53)),
+            (&p - scaled(1, k - 54)),
+            (&p + scaled(1, k - 53) + &hair),
+            (&p + scaled(1, k - 53) - &hair),
+            (&p - scaled(1, k - 54) - &hair),
             // Odd and even significands exactly halfway: 2^k·(1 + (2j+1)·2⁻⁵³).
-            Rational::from(&p + scaled(3, k - 53)),
-            Rational::from(&p + scaled(5, k - 53)),
+            (&p + scaled(3, k - 53)),
+            (&p + scaled(5, k - 53)),
         ] {
             out.push(-x.clone());
             out.push(x);
@@ -129,8 +129,8 @@ fn edge_cases() -> Vec<Rational> {
     for j in 0..8u32 {
         // Subnormal ties (2j+1)·2⁻¹⁰⁷⁵ and the double-rounding trap (j + ½ ∓ 2⁻⁶⁰)·2⁻¹⁰⁷⁴.
         let tie = scaled(2 * j + 1, -1075);
-        out.push(Rational::from(&tie - scaled(1, -1134)));
-        out.push(Rational::from(&tie + scaled(1, -1134)));
+        out.push(&tie - scaled(1, -1134));
+        out.push(&tie + scaled(1, -1134));
         out.push(tie);
     }
     let max = Rational::from_f64(f64::MAX).expect("finite");
@@ -178,7 +178,7 @@ fn b19_reference_rounds_hand_checked_values() {
         (q("2.4703282292062328e-324"), 5e-324),
         (scaled(3, -1075), 1e-323),
         (scaled(5, -1075), 1e-323),
-        (Rational::from(&threshold - q("1/10")), f64::MAX),
+        ((&threshold - q("1/10")), f64::MAX),
         (threshold, f64::INFINITY),
     ];
     for (x, want) in cases {
