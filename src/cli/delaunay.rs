@@ -74,7 +74,7 @@ fn read_scale_factors(path: &Path, prec: Prec, n_vertices: usize) -> Result<Vec<
         ));
     }
     let text = read_text(path)?;
-    let value: serde_json::Value = serde_json::from_str(&text)
+    let value = penner::io::strict_json::parse(&text)
         .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
     let serde_json::Value::Array(items) = value else {
         return Err(CliError::Input(format!(

@@ -1,6 +1,7 @@
 //! The penner JSON surface format (`docs/surface-format.md`): any Δ-complex, with an
 //! exact metric per edge or per face side, and optional exact positions.
 
+use super::strict_json::{self, JsonError};
 use super::surface::{squared_lengths_from_positions, Metric, Surface};
 use super::{text_of, ReadError};
 use crate::mesh::{Face, FaceSide, Mesh, MeshError};
@@ -37,20 +38,21 @@ pub fn read_bytes(bytes: &[u8]) -> Result<Surface, ReadError> {
     read(text_of(bytes)?)
 }
 
-/// Read a surface from JSON text.
+/// Read a surface from JSON text; a repeated key in any object is refused
+/// ([`strict_json`]), as is an unknown field.
 pub fn read(text: &str) -> Result<Surface, ReadError> {
-    let v: Value = serde_json::from_str(text).map_err(|e| {
-        if e.classify() == serde_json::error::Category::Eof {
+    let v = strict_json::parse(text).map_err(|e| match e {
+        JsonError::DuplicateKey(d) => ReadError::DuplicateKey(d),
+        JsonError::Syntax(e) if e.classify() == serde_json::error::Category::Eof => {
             ReadError::Truncated {
                 line: e.line(),
                 expected: "the rest of the JSON document".into(),
             }
-        } else {
-            ReadError::Syntax {
-                line: e.line(),
-                message: e.to_string(),
-            }
         }
+        JsonError::Syntax(e) => ReadError::Syntax {
+            line: e.line(),
+            message: e.to_string(),
+        },
     })?;
     from_value(&v)
 }
@@ -125,7 +127,10 @@ pub fn from_value(v: &Value) -> Result<Surface, ReadError> {
         .as_object()
         .ok_or_else(|| schema("surface", format!("expected an object, found {}", kind(v))))?;
     if let Some(k) = obj.keys().find(|k| !KEYS.contains(&k.as_str())) {
-        return Err(schema(k.clone(), "unknown field"));
+        return Err(schema(
+            k.clone(),
+            format!("unknown field (a surface has {})", KEYS.join(", ")),
+        ));
     }
     check_header(obj)?;
     let name = match obj.get("name") {

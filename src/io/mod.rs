@@ -19,6 +19,7 @@
 pub mod json;
 pub mod obj;
 pub mod off;
+pub mod strict_json;
 pub mod surface;
 mod text;
 
@@ -59,6 +60,10 @@ pub enum ReadError {
         /// What is wrong.
         message: String,
     },
+    /// A JSON object with a repeated key (readers disagree on which value counts, so
+    /// none is chosen: [`strict_json`]).
+    #[error("{0}")]
+    DuplicateKey(strict_json::DuplicateKey),
     /// A JSON document with the wrong shape (a missing field, a wrong type, …).
     #[error("{element}: {message}")]
     Schema {

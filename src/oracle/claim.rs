@@ -2,6 +2,7 @@
 //! parsed from JSON (`schema/claim-v1.schema.json`, `docs/oracle.md`).
 
 use crate::io::json::{exact_number, from_value};
+use crate::io::strict_json::{self, JsonError};
 use crate::io::{ReadError, Surface};
 use rug::Rational;
 use serde_json::Value;
@@ -144,18 +145,69 @@ fn epsilon(v: &Value) -> Result<Rational, ClaimError> {
     Ok(e)
 }
 
-/// Parse a claim document (JSON text); `name` names the source in messages.
+/// The fields every claim may carry.
+const COMMON_FIELDS: [&str; 5] = ["penner_claim", "id", "kind", "surface", "max_bits"];
+
+/// The claim kinds and the fields each may carry besides [`COMMON_FIELDS`]
+/// (`schema/claim-v1.schema.json`).
+const KIND_FIELDS: [(&str, &[&str]); 5] = [
+    ("intrinsic_delaunay", &[]),
+    ("delaunay_flip", &["flips", "result", "epsilon"]),
+    ("cone_angles", &["angles", "epsilon"]),
+    ("cotan_laplacian", &["weights", "epsilon"]),
+    ("conformal_equivalence", &["target", "u", "epsilon"]),
+];
+
+/// Refuse any field a claim of `kind` does not have: a misspelt optional field (say
+/// `epsilom`) would otherwise be ignored and its default answer a different question.
+fn check_fields(
+    obj: &serde_json::Map<String, Value>,
+    kind: &str,
+    own: &[&str],
+) -> Result<(), ClaimError> {
+    let allowed = || -> String {
+        COMMON_FIELDS
+            .iter()
+            .chain(own)
+            .copied()
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    for key in obj.keys() {
+        let key = key.as_str();
+        if COMMON_FIELDS.contains(&key) || own.contains(&key) {
+            continue;
+        }
+        let of_other_kind = KIND_FIELDS.iter().any(|(_, f)| f.contains(&key));
+        let what = if of_other_kind {
+            format!("not a field of {kind} claims")
+        } else {
+            "unknown field".to_string()
+        };
+        return Err(err(format!(
+            "{key}: {what} (a {kind} claim has {})",
+            allowed()
+        )));
+    }
+    Ok(())
+}
+
+/// Parse a claim document (JSON text); `name` names the source in messages. A repeated
+/// key in any object is refused ([`crate::io::strict_json`]), as is a field the claim's
+/// kind does not have.
 pub fn parse(text: &str, name: &str) -> Result<Claim, ClaimError> {
-    let v: Value = serde_json::from_str(text)
-        .map_err(|e| err(format!("{name}:{}:{}: {e}", e.line(), e.column())))?;
+    let v = strict_json::parse(text).map_err(|e| match e {
+        JsonError::Syntax(e) => err(format!("{name}:{}:{}: {e}", e.line(), e.column())),
+        JsonError::DuplicateKey(d) => err(format!("{name}: {d}")),
+    })?;
     parse_value(&v).map_err(|e| err(format!("{name}: {e}")))
 }
 
-/// Parse a claim document (JSON value).
+/// Parse a claim document (JSON value); a field the claim's kind does not have is refused.
 pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
-    if !v.is_object() {
+    let Some(obj) = v.as_object() else {
         return Err(err("a claim is a JSON object"));
-    }
+    };
     match v.get("penner_claim").and_then(Value::as_u64) {
         Some(PROTOCOL_VERSION) => {}
         Some(other) => {
@@ -181,11 +233,15 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
                 ))
             })? as u32,
     };
-    let surface = surface_at(v, "surface", "the surface the claim is about")?;
     let kind = v
         .get("kind")
         .and_then(Value::as_str)
         .ok_or_else(|| err("kind: required, one of intrinsic_delaunay, delaunay_flip, cone_angles, cotan_laplacian, conformal_equivalence"))?;
+    let Some((_, own)) = KIND_FIELDS.iter().find(|(k, _)| *k == kind) else {
+        return Err(err(format!("kind: unknown claim kind {kind:?}")));
+    };
+    check_fields(obj, kind, own)?;
+    let surface = surface_at(v, "surface", "the surface the claim is about")?;
     let assertion = match kind {
         "intrinsic_delaunay" => Assertion::IntrinsicDelaunay,
         "delaunay_flip" => {

@@ -14,6 +14,7 @@
 //! be cut out and given to `penner check` as it is.
 
 use super::precision::{parse_list, Prec};
+use crate::io::strict_json::{self, JsonError};
 use crate::io::{json as surface_json, Surface};
 use crate::theorems::Witness;
 use serde_json::{json, Value};
@@ -29,6 +30,17 @@ fn bad(msg: impl Into<String>) -> FailureFileError {
 
 /// Version of the failure-file format.
 pub const FORMAT_VERSION: u64 = 1;
+
+/// The fields of a failure file; any other is refused.
+const FIELDS: [&str; 7] = [
+    "penner_failure",
+    "check",
+    "precision",
+    "source",
+    "source_faces",
+    "witnesses",
+    "surface",
+];
 
 /// A failure file's contents.
 #[derive(Clone, Debug, PartialEq)]
@@ -61,10 +73,13 @@ impl Failure {
         })
     }
 
-    /// Read a failure file's text; `name` names the file in messages.
+    /// Read a failure file's text; `name` names the file in messages. A repeated key
+    /// ([`crate::io::strict_json`]) or an unknown field is refused.
     pub fn parse(text: &str, name: &str) -> Result<Failure, FailureFileError> {
-        let v: Value = serde_json::from_str(text)
-            .map_err(|e| bad(format!("{name}:{}:{}: {e}", e.line(), e.column())))?;
+        let v = strict_json::parse(text).map_err(|e| match e {
+            JsonError::Syntax(e) => bad(format!("{name}:{}:{}: {e}", e.line(), e.column())),
+            JsonError::DuplicateKey(d) => bad(format!("{name}: {d}")),
+        })?;
         match v.get("penner_failure").and_then(Value::as_u64) {
             Some(FORMAT_VERSION) => {}
             Some(other) => {
@@ -77,6 +92,15 @@ impl Failure {
                     "{name}: not a penner failure file (no \"penner_failure\": {FORMAT_VERSION})"
                 )))
             }
+        }
+        if let Some(key) = v
+            .as_object()
+            .and_then(|o| o.keys().find(|k| !FIELDS.contains(&k.as_str())))
+        {
+            return Err(bad(format!(
+                "{name}: {key}: unknown field (a failure file has {})",
+                FIELDS.join(", ")
+            )));
         }
         let check = v["check"]
             .as_str()

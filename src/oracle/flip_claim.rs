@@ -49,7 +49,7 @@ use crate::io::{Metric, Surface};
 use crate::mesh::{Edge, Mesh};
 use crate::predicates::delaunay::QuadEdges;
 use crate::predicates::directed::valid;
-use crate::scalar::{Mpfr, Precision, Real, Sign};
+use crate::scalar::{nearest_f64, Mpfr, Precision, Real, Sign};
 use crate::theorems::Witness;
 use rug::Rational;
 use std::cmp::Ordering;
@@ -298,7 +298,7 @@ pub(super) fn compare(
         let (cmp, shown) = match (squared, ours_l) {
             (false, Len::Exact(x)) => (
                 within_exact(x, c, eps),
-                Rational::from(x - c).abs().to_f64(),
+                nearest_f64(&Rational::from(x - c).abs()),
             ),
             (false, Len::Root(s)) => {
                 let x = from_q(s, bits).and_then(|x| valid(x.sqrt()));
@@ -309,7 +309,7 @@ pub(super) fn compare(
                 let s = l.exact_square().unwrap_or_default();
                 (
                     within_exact(&s, c, eps),
-                    Rational::from(&s - c).abs().to_f64(),
+                    nearest_f64(&Rational::from(&s - c).abs()),
                 )
             }
             (_, l) => match l.enclose(bits) {

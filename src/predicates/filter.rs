@@ -1,7 +1,7 @@
 //! Shared pieces of the f64 filters: input conversion and the filter decision.
 
 use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
-use rug::{Float, Rational};
+use rug::Rational;
 use std::ops::{Add, Mul, Sub};
 
 /// The ring operations the determinant formulas need, so one formula serves `f64` (the
@@ -42,9 +42,7 @@ pub(crate) fn input(q: &Rational) -> Option<f64> {
             return Some(x);
         }
     }
-    // Round to nearest at 53 bits with MPFR's exponent range, then read it as an f64 (exact
-    // whenever the result is a normal binary64).
-    let x = Float::with_val(53, q).to_f64();
+    let x = crate::scalar::nearest_f64(q);
     x.is_normal().then_some(x)
 }
 

@@ -18,10 +18,10 @@ impl Real for f64 {
         x
     }
 
+    /// The binary64 nearest to `q`, ties to even, subnormals included
+    /// ([`super::nearest_f64`]).
     fn from_rational(q: &rug::Rational, (): ()) -> f64 {
-        // `Rational::to_f64` truncates; a 53-bit MPFR float rounds to nearest, and its
-        // conversion to f64 is then exact outside the subnormal range.
-        rug::Float::with_val(53, q).to_f64()
+        super::nearest_f64(q)
     }
 
     #[inline]

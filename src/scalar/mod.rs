@@ -18,6 +18,7 @@ pub mod exp_length;
 mod f64_impl;
 pub mod interval;
 mod mpfr;
+mod nearest;
 pub mod parse;
 
 pub use certified::{Certified, Sign, Stage};
@@ -31,6 +32,7 @@ pub use dd::{PI_2_FIXED as DD_PI_2_FIXED, TWO_OVER_PI_BITS as DD_TWO_OVER_PI_BIT
 pub use dual::Dual;
 pub use interval::{Interval, IntervalBound};
 pub use mpfr::{Mpfr, Precision, PrecisionError};
+pub use nearest::nearest_f64;
 pub use parse::{parse_rational, NumberError};
 
 use std::fmt::Debug;

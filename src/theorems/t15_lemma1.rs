@@ -15,7 +15,7 @@ use super::report::Tally;
 use super::verdict::{Settings, Verdict};
 use crate::geometry::scaling::{reconstruct_scale_factors, reconstruct_scale_factors_exact};
 use crate::mesh::{HalfEdge, Mesh};
-use crate::scalar::Real;
+use crate::scalar::{nearest_f64, Real};
 use rug::Rational;
 
 /// T15, numerical: Lemma 1 factors of every corner by
@@ -99,7 +99,11 @@ pub fn verify_lemma1_exact(
             let rhs = Rational::from(lte * lte);
             if lhs != rhs {
                 let d = lhs - rhs;
-                tally.fail(format!("{h}"), "e^{u_a} e^{u_b} ℓ_ab² ≠ ℓ̃_ab²", d.to_f64());
+                tally.fail(
+                    format!("{h}"),
+                    "e^{u_a} e^{u_b} ℓ_ab² ≠ ℓ̃_ab²",
+                    nearest_f64(&d),
+                );
             }
         },
     )

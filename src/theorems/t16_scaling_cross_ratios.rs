@@ -15,7 +15,7 @@ use crate::geometry::cross_ratio::{
 };
 use crate::geometry::scaling::{conformal_scaling, conformal_scaling_exact};
 use crate::mesh::Mesh;
-use crate::scalar::Real;
+use crate::scalar::{nearest_f64, Real};
 use rug::Rational;
 
 /// T16, numerical: scales `l` by `u` ([`conformal_scaling`]) and compares cross ratios with
@@ -128,7 +128,7 @@ pub fn verify_equal_cross_ratios_exact(mesh: &Mesh, l: &[Rational], lt: &[Ration
     {
         if let (Some(a), Some(b)) = (a, b) {
             if a != b {
-                let d = (b - a).to_f64();
+                let d = nearest_f64(&(b - a));
                 tally.fail(format!("e{k}"), "c̃ ≠ c", d);
             }
         }

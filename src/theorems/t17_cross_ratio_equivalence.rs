@@ -16,7 +16,7 @@ use crate::geometry::scaling::{
     reconstruct_scale_factors, reconstruct_scale_factors_exact, Reconstruction,
 };
 use crate::mesh::{HalfEdge, Mesh};
-use crate::scalar::Real;
+use crate::scalar::{nearest_f64, Real};
 use rug::Rational;
 
 /// Per face half-edge, the value of the representative corner of its tail vertex.
@@ -114,7 +114,7 @@ pub fn check_conformal_equivalence_exact(mesh: &Mesh, l: &[Rational], lt: &[Rati
     let mut tally = Tally::new(true, 0);
     for (h, rep, x, xr) in corners_and_representatives(mesh, &r) {
         if x != xr {
-            let d = Rational::from(x - xr).to_f64();
+            let d = nearest_f64(&Rational::from(x - xr));
             tally.fail(
                 corner_name(mesh, h),
                 format!(

@@ -39,6 +39,7 @@ use super::{Verdict, Witness};
 use crate::algorithms::flips::flip_ptolemy_exact;
 use crate::mesh::{Edge, HalfEdge, Mesh};
 use crate::predicates::delaunay::QuadEdges;
+use crate::scalar::nearest_f64;
 use rug::Rational;
 
 /// Whether `l` has one positive length per edge of `mesh`.
@@ -138,7 +139,7 @@ pub fn verify_vertex_products(mesh: &Mesh, c: &[Option<Rational>]) -> Vec<Witnes
             Some(p) if *p != 1 => Some(Witness {
                 element: format!("v{v}"),
                 detail: format!("product of cross ratios is {p}, not 1"),
-                value: p.to_f64(),
+                value: nearest_f64(p),
             }),
             _ => None,
         })
@@ -223,7 +224,7 @@ pub fn verify_cluster_rule(
                 show(a),
                 show(p)
             ),
-            value: a.as_ref().map_or(f64::NAN, Rational::to_f64),
+            value: a.as_ref().map_or(f64::NAN, nearest_f64),
         })
         .collect()
 }
@@ -281,7 +282,7 @@ pub fn verify_involution(
         .map(|(f, (a, b))| Witness {
             element: format!("e{f}"),
             detail: format!("flipping {e} twice gives length {b}, not {a}"),
-            value: b.to_f64(),
+            value: nearest_f64(b),
         })
         .collect();
     if ends(twice, e) != ends(mesh, e) {
@@ -331,7 +332,7 @@ pub fn verify_scaling_commutes(
         .map(|(f, (a, b))| Witness {
             element: format!("e{f}"),
             detail: format!("flipping {e}: scale then flip gives {b}, flip then scale gives {a}"),
-            value: b.to_f64(),
+            value: nearest_f64(b),
         })
         .collect()
 }

@@ -8,6 +8,7 @@ use crate::algorithms::flips::flip_ptolemy_exact;
 use crate::geometry::cross_ratio::length_cross_ratios_exact;
 use crate::geometry::scaling::{conformal_scaling_exact, reconstruct_scale_factors_exact};
 use crate::mesh::{Edge, FlipError, Mesh};
+use crate::scalar::nearest_f64;
 use rug::Rational;
 
 /// Apply the Ptolemy flips `flips` in order to a copy of `(mesh, l)` (exact, notes Eq. 18).
@@ -94,7 +95,7 @@ pub fn check_definition_two_exact(
             witnesses.push(Witness {
                 element: e.to_string(),
                 detail: "cross ratios (shear data) of the two metrics differ".into(),
-                value: cb[e.idx()].as_ref().map_or(f64::NAN, Rational::to_f64),
+                value: cb[e.idx()].as_ref().map_or(f64::NAN, nearest_f64),
             });
         }
     }
@@ -108,7 +109,7 @@ pub fn check_definition_two_exact(
                 witnesses.push(Witness {
                     element: format!("v{v}"),
                     detail: format!("Lemma 1 factor at corner {h} differs from {r}"),
-                    value: c.to_f64(),
+                    value: nearest_f64(c),
                 });
             }
         }
@@ -125,7 +126,7 @@ pub fn check_definition_two_exact(
                 element: e.to_string(),
                 detail: "length is not the reconstructed scaling e^{(u_i+u_j)/2} of the other"
                     .into(),
-                value: got.to_f64(),
+                value: nearest_f64(&got),
             });
         }
     }

@@ -4,6 +4,7 @@ use crate::predicates::ladder::Ladder;
 
 /// One element where a check failed (or could not decide), with the offending value.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Witness {
     /// The element, as `v3`, `e7`, `f2`, `h5`, or `surface`.
     pub element: String,

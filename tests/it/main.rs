@@ -5,6 +5,7 @@ mod claims;
 mod cli;
 mod cli_controls;
 mod cli_delaunay;
+mod cli_strict;
 mod cone_angles_kernel;
 mod controls;
 mod definition_two;
@@ -21,10 +22,12 @@ mod exact;
 mod flip_verdicts;
 mod interval;
 mod io;
+mod io_strict_json;
 mod laplacian;
 mod mesh;
 mod mesh_core;
 mod mesh_enumeration;
+mod mesh_gluing;
 mod meshgen;
 mod never_fails;
 mod oracle;
@@ -35,6 +38,7 @@ mod scalar_dd;
 mod scalar_dd_div;
 mod scalar_dd_exp;
 mod scalar_dd_reduction;
+mod scalar_nearest;
 #[cfg(feature = "strategies")]
 mod strategies;
 #[allow(dead_code)] // helpers used by some areas only

@@ -221,7 +221,7 @@ impl Real for Dd {
     /// `hi = RN(q)`, `lo = RN(q − hi)`: relative error ≤ u²(1 + u) in the normal range.
     /// proof: B09
     fn from_rational(q: &rug::Rational, (): ()) -> Dd {
-        let hi = Float::with_val(53, q).to_f64();
+        let hi = crate::scalar::nearest_f64(q);
         if !hi.is_finite() {
             return Dd::from_f64(hi);
         }
@@ -231,7 +231,7 @@ impl Real for Dd {
         let rest = rug::Rational::from(q - &h);
         Dd {
             hi,
-            lo: Float::with_val(53, &rest).to_f64(),
+            lo: crate::scalar::nearest_f64(&rest),
         }
     }
 
