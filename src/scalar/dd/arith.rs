@@ -185,13 +185,31 @@ fn div_scaled(x: Dd, y: Dd) -> Dd {
     div_corrected(xs, ys).ldexp(ex - ey)
 }
 
-/// Square root of a double-word `x > 0` by one Newton correction of `RN(√x_h)` with the
-/// exact FMA residual (SQRTDWtoDW of Lefèvre, Louvet, Muller, Picot and Rideau, TOMS 2023),
-/// relative error ≤ 25/8 u². proof: B08
+/// Leading words below `2⁻⁹⁰⁰` go through [`sqrt`] scaled by `2⁶⁰⁰`: from here on the
+/// trailing word of `x`, the residual `x_h − s_h²` and the correction are normal (or exact
+/// zeros), the hypothesis of SQRTDWtoDW. proof: B08
+const SQRT_DIRECT_MIN: f64 = f64::from_bits((1023 - 900) << 52);
+
+/// Square root of a double-word `x > 0` (finite), relative error ≤ 25/8 u² for every
+/// positive finite `x`: [`sqrt_direct`] on `x` when `x_h ≥ 2⁻⁹⁰⁰`, otherwise
+/// `√(x·2⁶⁰⁰)·2⁻³⁰⁰`, both scalings exact (the result lies in `[2⁻⁵³⁷, 2⁵¹²)`, so both of
+/// its words stay normal). proof: B08
 #[inline]
 pub(crate) fn sqrt(x: Dd) -> Dd {
+    if x.hi < SQRT_DIRECT_MIN {
+        return sqrt_direct(x.ldexp(600)).ldexp(-300);
+    }
+    sqrt_direct(x)
+}
+
+/// Square root of a double-word `x` with `x_h ≥ 2⁻⁹⁰⁰` by one Newton correction of
+/// `RN(√x_h)` with the exact FMA residual (SQRTDWtoDW of Lefèvre, Louvet, Muller, Picot and
+/// Rideau, TOMS 2023), relative error ≤ 25/8 u². proof: B08
+#[inline]
+fn sqrt_direct(x: Dd) -> Dd {
     let sh = x.hi.sqrt();
-    // Exact: x_h − s_h² is representable (s_h = RN(√x_h)) and the FMA rounds once.
+    // Exact: x_h − s_h² is representable (s_h = RN(√x_h), x_h ≥ 2⁻⁹⁰⁰) and the FMA
+    // rounds once.
     let rho1 = (-sh).mul_add(sh, x.hi);
     let rho2 = x.lo + rho1;
     let sl = rho2 / (2.0 * sh);
