@@ -67,13 +67,18 @@ fn normalized(z: Dd) -> bool {
     z.hi.is_nan() || (z.lo.is_finite() && z.hi + z.lo == z.hi)
 }
 
+/// `ε·|f| + η·2⁻¹⁰⁷⁴` with `ε = eps_u2·u²`, exactly (η·2⁻¹⁰⁷⁴ itself may not be a double).
+fn allowed(f: &Rational, eps_u2: f64, eta: f64) -> Rational {
+    Rational::from_f64(eps_u2 * u2()).expect("finite") * f.clone().abs()
+        + (Rational::from_f64(eta).expect("finite") >> 1074u32)
+}
+
 /// `|z − f| / (ε·|f| + η·2⁻¹⁰⁷⁴)` with `ε = eps_u2·u²` (∞ for a non-finite `z`).
 fn bound_ratio(z: Dd, f: &Rational, eps_u2: f64, eta: f64) -> f64 {
     let Some(zq) = z.to_rational() else {
         return f64::INFINITY;
     };
-    let allowed = Rational::from_f64(eps_u2 * u2()).expect("finite") * f.clone().abs()
-        + Rational::from_f64(eta * SUBNORMAL).expect("finite");
+    let allowed = allowed(f, eps_u2, eta);
     if allowed == 0 {
         return if zq == *f { 0.0 } else { f64::INFINITY };
     }
@@ -83,8 +88,7 @@ fn bound_ratio(z: Dd, f: &Rational, eps_u2: f64, eta: f64) -> f64 {
 /// `z` moved away from `f` by `k` times the allowed error (the negative control of
 /// [`bound_ratio`]), as the double-double nearest to the moved value.
 fn perturbed(z: Dd, f: &Rational, eps_u2: f64, eta: f64, k: f64) -> Dd {
-    let allowed = Rational::from_f64(eps_u2 * u2()).expect("finite") * f.clone().abs()
-        + Rational::from_f64(eta * SUBNORMAL).expect("finite");
+    let allowed = allowed(f, eps_u2, eta);
     let moved = q(z) + allowed * Rational::from_f64(k).expect("finite");
     Dd::from_rational(&moved, ())
 }

@@ -122,6 +122,16 @@ fn pow2(k: i32) -> f64 {
     f64::from_bits(((i64::from(k.clamp(-1022, 1023)) + 1023) as u64) << 52)
 }
 
+/// `RN(q)` in binary64, subnormals included: rounded once to 53 bits by MPFR, then, in the
+/// subnormal range, to the shorter significand with the direction of the first rounding
+/// known (`subnormalize_ieee_round`), so a value just above a midpoint between two
+/// subnormals is not rounded to the midpoint first and then to even. proof: B09
+fn nearest_f64(q: &rug::Rational) -> f64 {
+    let (mut f, dir) = Float::with_val_round(53, q, rug::float::Round::Nearest);
+    f.subnormalize_ieee_round(dir, rug::float::Round::Nearest);
+    f.to_f64()
+}
+
 /// Below this leading word a scaled trailing word may have been rounded to the subnormal
 /// grid (`|lo| ≤ 2⁻⁵³|hi| < 2⁻¹⁰²¹`), so [`Dd::ldexp`] renormalizes. proof: B10
 const LDEXP_RENORMALIZE_BELOW: f64 = f64::from_bits((1023 - 968) << 52);
@@ -263,7 +273,7 @@ impl Real for Dd {
     /// `hi = RN(q)`, `lo = RN(q − hi)`: relative error ≤ u²(1 + u) in the normal range.
     /// proof: B09
     fn from_rational(q: &rug::Rational, (): ()) -> Dd {
-        let hi = Float::with_val(53, q).to_f64();
+        let hi = nearest_f64(q);
         if !hi.is_finite() {
             return Dd::from_f64(hi);
         }
@@ -273,7 +283,7 @@ impl Real for Dd {
         let rest = rug::Rational::from(q - &h);
         Dd {
             hi,
-            lo: Float::with_val(53, &rest).to_f64(),
+            lo: nearest_f64(&rest),
         }
     }
 
