@@ -33,8 +33,10 @@ use std::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
 /// A double-double number: the unevaluated sum `hi + lo` of two `f64` with
 /// `|lo| ≤ ulp(hi)/2` (a normalized double-word, JMP17 Definition 1.1).
 ///
-/// About 106 significand bits; the exponent range is that of `f64` (results near the
-/// underflow threshold lose the `lo` part). Arithmetic follows JMP17 with FMA
+/// About 106 significand bits; the exponent range is that of `f64`. Below 2⁻⁹⁶⁸ the `lo`
+/// word holds only multiples of 2⁻¹⁰⁷⁴, so results there carry an absolute error of a few
+/// 2⁻¹⁰⁷⁴ on top of the relative bounds (each `Bnn` states it); every operation returns a
+/// normalized pair (`hi = RN(hi + lo)`) and overflows to `(±∞, 0)`. Arithmetic follows JMP17 with FMA
 /// (MATH.md §9, proofs B01–B09, division B17); the functions have measured bounds (proofs
 /// B10–B14, reduction mod π/2 for large arguments B18).
 ///

@@ -146,7 +146,8 @@ fn abs(a: Dd) -> Dd {
 /// Largest of `|x_h|, |y_h|` outside `[2⁻⁵⁰⁰, 2⁵⁰⁰)`: both are scaled by the same power of
 /// two, which leaves `atan2` unchanged, so that `d + c·n` cannot overflow and `n − c·d`
 /// keeps its trailing words normal. proof: B13
-const ATAN2_DIRECT: std::ops::Range<f64> = f64::from_bits((1023 - 500) << 52)..f64::from_bits((1023 + 500) << 52);
+const ATAN2_DIRECT: std::ops::Range<f64> =
+    f64::from_bits((1023 - 500) << 52)..f64::from_bits((1023 + 500) << 52);
 
 /// `(x, y)·2ᵏ` with the larger leading word in `[1, 2)` when it lies outside
 /// [`ATAN2_DIRECT`] (nonnegative finite nonzero inputs); otherwise unchanged. proof: B13
