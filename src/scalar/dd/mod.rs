@@ -75,10 +75,8 @@ impl Dd {
             return Dd::from_f64(hi);
         }
         let rest = Float::with_val(x.prec().max(64) + 64, x - hi);
-        Dd {
-            hi,
-            lo: rest.to_f64(),
-        }
+        // Renormalized (exact): `lo` may round to exactly ±ulp(hi)/2 next to an odd `hi`.
+        Dd::from_parts(hi, rest.to_f64())
     }
 
     /// `self · 2ᵏ` for any `k`: each word is rounded once (exact while it stays normal),
@@ -283,10 +281,8 @@ impl Real for Dd {
             return Dd::from_f64(hi);
         };
         let rest = rug::Rational::from(q - &h);
-        Dd {
-            hi,
-            lo: nearest_f64(&rest),
-        }
+        // Renormalized (exact): `lo` may round to exactly ±ulp(hi)/2 next to an odd `hi`.
+        Dd::from_parts(hi, nearest_f64(&rest))
     }
 
     fn pi((): ()) -> Dd {
