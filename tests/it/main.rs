@@ -36,6 +36,7 @@ mod predicates_planar;
 mod registry_extra;
 mod scalar_dd;
 mod scalar_dd_div;
+mod scalar_dd_edges;
 mod scalar_dd_exp;
 mod scalar_dd_reduction;
 mod scalar_nearest;

@@ -47,10 +47,36 @@ pub(crate) fn two_prod(a: f64, b: f64) -> (f64, f64) {
         let h = c - (c - x);
         (h, x - h)
     };
+    if a.abs() > SPLIT_MAX || b.abs() > SPLIT_MAX {
+        return two_prod_large(a, b);
+    }
     let p = a * b;
     let (ah, al) = split(a);
     let (bh, bl) = split(b);
     (p, ((ah * bh - p) + ah * bl + al * bh) + al * bl)
+}
+
+/// Largest factor Veltkamp's splitting takes without overflowing `(2²⁷ + 1)·x`: 2⁹⁹⁵.
+/// proof: B02
+#[cfg(not(target_feature = "fma"))]
+const SPLIT_MAX: f64 = f64::from_bits((1023 + 995) << 52);
+
+/// [`two_prod`] with a factor above 2⁹⁹⁵: that factor is scaled by 2⁻⁶⁴ (exact), the
+/// product taken, and both words scaled back (exact; `RN` commutes with the scaling since
+/// the scaled product `≥ 2⁹³¹·2⁻¹⁰⁷⁴` stays normal). Two factors above 2⁹⁹⁵ overflow.
+/// proof: B02
+#[cfg(not(target_feature = "fma"))]
+#[cold]
+fn two_prod_large(a: f64, b: f64) -> (f64, f64) {
+    /// 2⁻⁶⁴ and 2⁶⁴.
+    const DOWN: f64 = f64::from_bits((1023 - 64) << 52);
+    const UP: f64 = f64::from_bits((1023 + 64) << 52);
+    let (a, b) = if a.abs() >= b.abs() { (a, b) } else { (b, a) };
+    if b.abs() > SPLIT_MAX || !a.is_finite() || !b.is_finite() {
+        return (a * b, 0.0);
+    }
+    let (p, e) = two_prod(a * DOWN, b);
+    (p * UP, e * UP)
 }
 
 /// JMP17 Algorithm 4 (DWPlusFP): `x + y` for a double-word `x` and a float `y`, relative
@@ -60,7 +86,24 @@ pub(crate) fn add_f64(x: Dd, y: f64) -> Dd {
     let (sh, sl) = two_sum(x.hi, y);
     let v = x.lo + sl;
     let (hi, lo) = fast_two_sum(sh, v);
-    Dd { hi, lo }
+    if hi.is_finite() {
+        Dd { hi, lo }
+    } else {
+        overflowed(sh, x.hi + y)
+    }
+}
+
+/// The result of a sum or product whose leading word is not finite: `±∞` (trailing word
+/// 0) with the sign of the finite rounded leading part `lead` when that overflowed later,
+/// otherwise the IEEE value `ieee` of the leading words (∞ for an overflow or an infinite
+/// operand, NaN for ∞ − ∞, 0·∞ or NaN). proof: B04
+#[cold]
+fn overflowed(lead: f64, ieee: f64) -> Dd {
+    if lead.is_finite() {
+        Dd::from_f64(f64::INFINITY.copysign(lead))
+    } else {
+        Dd::from_f64(ieee)
+    }
 }
 
 /// JMP17 Algorithm 6 (AccurateDWPlusDW): `x + y`, relative error ≤ 3u² + 13u³ even under
@@ -73,7 +116,11 @@ pub(crate) fn add(x: Dd, y: Dd) -> Dd {
     let (vh, vl) = fast_two_sum(sh, c);
     let w = tl + vl;
     let (hi, lo) = fast_two_sum(vh, w);
-    Dd { hi, lo }
+    if hi.is_finite() {
+        Dd { hi, lo }
+    } else {
+        overflowed(sh, x.hi + y.hi)
+    }
 }
 
 /// JMP17 Algorithm 9 (DWTimesFP3, with FMA): `x · y` for a float `y`, relative error ≤ 2u².
@@ -83,7 +130,11 @@ pub(crate) fn mul_f64(x: Dd, y: f64) -> Dd {
     let (ch, cl1) = two_prod(x.hi, y);
     let cl3 = x.lo.mul_add(y, cl1);
     let (hi, lo) = fast_two_sum(ch, cl3);
-    Dd { hi, lo }
+    if hi.is_finite() {
+        Dd { hi, lo }
+    } else {
+        overflowed(ch, x.hi * y)
+    }
 }
 
 /// JMP17 Algorithm 12 (DWTimesDW3, with FMA): `x · y`, relative error ≤ 5u² (JMP17),
@@ -96,7 +147,11 @@ pub(crate) fn mul(x: Dd, y: Dd) -> Dd {
     let cl2 = x.lo.mul_add(y.hi, tl1);
     let cl3 = cl1 + cl2;
     let (hi, lo) = fast_two_sum(ch, cl3);
-    Dd { hi, lo }
+    if hi.is_finite() {
+        Dd { hi, lo }
+    } else {
+        overflowed(ch, x.hi * y.hi)
+    }
 }
 
 /// JMP17 Algorithm 18 (DWDivDW3, with FMA): `x / y`, relative error ≤ 9.8u² when no
@@ -185,13 +240,31 @@ fn div_scaled(x: Dd, y: Dd) -> Dd {
     div_corrected(xs, ys).ldexp(ex - ey)
 }
 
-/// Square root of a double-word `x > 0` by one Newton correction of `RN(√x_h)` with the
-/// exact FMA residual (SQRTDWtoDW of Lefèvre, Louvet, Muller, Picot and Rideau, TOMS 2023),
-/// relative error ≤ 25/8 u². proof: B08
+/// Leading words below `2⁻⁹⁰⁰` go through [`sqrt`] scaled by `2⁶⁰⁰`: from here on the
+/// trailing word of `x`, the residual `x_h − s_h²` and the correction are normal (or exact
+/// zeros), the hypothesis of SQRTDWtoDW. proof: B08
+const SQRT_DIRECT_MIN: f64 = f64::from_bits((1023 - 900) << 52);
+
+/// Square root of a double-word `x > 0` (finite), relative error ≤ 25/8 u² for every
+/// positive finite `x`: [`sqrt_direct`] on `x` when `x_h ≥ 2⁻⁹⁰⁰`, otherwise
+/// `√(x·2⁶⁰⁰)·2⁻³⁰⁰`, both scalings exact (the result lies in `[2⁻⁵³⁷, 2⁵¹²)`, so both of
+/// its words stay normal). proof: B08
 #[inline]
 pub(crate) fn sqrt(x: Dd) -> Dd {
+    if x.hi < SQRT_DIRECT_MIN {
+        return sqrt_direct(x.ldexp(600)).ldexp(-300);
+    }
+    sqrt_direct(x)
+}
+
+/// Square root of a double-word `x` with `x_h ≥ 2⁻⁹⁰⁰` by one Newton correction of
+/// `RN(√x_h)` with the exact FMA residual (SQRTDWtoDW of Lefèvre, Louvet, Muller, Picot and
+/// Rideau, TOMS 2023), relative error ≤ 25/8 u². proof: B08
+#[inline]
+fn sqrt_direct(x: Dd) -> Dd {
     let sh = x.hi.sqrt();
-    // Exact: x_h − s_h² is representable (s_h = RN(√x_h)) and the FMA rounds once.
+    // Exact: x_h − s_h² is representable (s_h = RN(√x_h), x_h ≥ 2⁻⁹⁰⁰) and the FMA
+    // rounds once.
     let rho1 = (-sh).mul_add(sh, x.hi);
     let rho2 = x.lo + rho1;
     let sl = rho2 / (2.0 * sh);

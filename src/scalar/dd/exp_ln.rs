@@ -66,14 +66,9 @@ pub(super) fn exp(x: Dd) -> Dd {
     let r = add(r, Dd { hi: c, lo: d });
     let r = add_f64(r, -k * LN2_PARTS[2]);
     let p = expm1_reduced(r);
-    let z = add_f64(p, 1.0).ldexp(k as i32);
-    if k < -1021.0 {
-        // Below 2⁻¹⁰²² each word rounds to a subnormal on its own (≤ 2⁻¹⁰⁷⁵ each);
-        // renormalize, exactly (sums of subnormals do not round). proof: B10
-        Dd::from_parts(z.hi, z.lo)
-    } else {
-        z
-    }
+    // Below 2⁻⁹⁶⁸ the words round to the subnormal grid on their own (≤ 2⁻¹⁰⁷⁵ each) and
+    // `ldexp` renormalizes the pair, exactly (sums on that grid do not round). proof: B10
+    add_f64(p, 1.0).ldexp(k as i32)
 }
 
 /// `ln x` for `x > 0`; `ln 0 = −∞`, NaN for negative or NaN input, `ln ∞ = ∞`.

@@ -26,15 +26,17 @@ pub use arith::{div_jmp17, sloppy_add};
 #[doc(hidden)]
 pub use reduce::{PI_2_FIXED, TWO_OVER_PI_BITS};
 
-use super::Real;
+use super::{nearest_f64, Real};
 use rug::Float;
 use std::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
 
 /// A double-double number: the unevaluated sum `hi + lo` of two `f64` with
 /// `|lo| ≤ ulp(hi)/2` (a normalized double-word, JMP17 Definition 1.1).
 ///
-/// About 106 significand bits; the exponent range is that of `f64` (results near the
-/// underflow threshold lose the `lo` part). Arithmetic follows JMP17 with FMA
+/// About 106 significand bits; the exponent range is that of `f64`. Below 2⁻⁹⁶⁸ the `lo`
+/// word holds only multiples of 2⁻¹⁰⁷⁴, so results there carry an absolute error of a few
+/// 2⁻¹⁰⁷⁴ on top of the relative bounds (each `Bnn` states it); every operation returns a
+/// normalized pair (`hi = RN(hi + lo)`) and overflows to `(±∞, 0)`. Arithmetic follows JMP17 with FMA
 /// (MATH.md §9, proofs B01–B09, division B17); the functions have measured bounds (proofs
 /// B10–B14, reduction mod π/2 for large arguments B18).
 ///
@@ -73,22 +75,28 @@ impl Dd {
             return Dd::from_f64(hi);
         }
         let rest = Float::with_val(x.prec().max(64) + 64, x - hi);
-        Dd {
-            hi,
-            lo: rest.to_f64(),
-        }
+        // Renormalized (exact): `lo` may round to exactly ±ulp(hi)/2 next to an odd `hi`.
+        Dd::from_parts(hi, rest.to_f64())
     }
 
-    /// `self · 2ᵏ`, exact unless the result overflows or leaves the normal range.
+    /// `self · 2ᵏ` for any `k`: each word is rounded once (exact while it stays normal),
+    /// and a result below `2⁻⁹⁶⁸`, whose trailing word may have rounded on the subnormal
+    /// grid, is renormalized by TwoSum (exact). So the result is normalized, within
+    /// `2⁻¹⁰⁷⁴` (half a subnormal unit per word) of `self · 2ᵏ`, and `±∞` with a zero
+    /// trailing word when the leading word overflows. proof: B10
     pub fn ldexp(self, k: i32) -> Dd {
-        // Two steps so that 2^k itself never overflows for |k| ≤ 2046.
-        let k1 = k / 2;
-        let k2 = k - k1;
-        let s1 = pow2(k1);
-        let s2 = pow2(k2);
-        Dd {
-            hi: self.hi * s1 * s2,
-            lo: self.lo * s1 * s2,
+        let (hi, lo) = if (-1022..=1023).contains(&k) {
+            let f = pow2(k);
+            (self.hi * f, self.lo * f)
+        } else {
+            (scale_word(self.hi, k), scale_word(self.lo, k))
+        };
+        if hi.abs() < LDEXP_RENORMALIZE_BELOW {
+            Dd::from_parts(hi, lo)
+        } else if hi.is_finite() {
+            Dd { hi, lo }
+        } else {
+            Dd::from_f64(hi)
         }
     }
 
@@ -112,6 +120,40 @@ impl Dd {
 
 fn pow2(k: i32) -> f64 {
     f64::from_bits(((i64::from(k.clamp(-1022, 1023)) + 1023) as u64) << 52)
+}
+
+/// Below this leading word a scaled trailing word may have been rounded to the subnormal
+/// grid (`|lo| ≤ 2⁻⁵³|hi| < 2⁻¹⁰²¹`), so [`Dd::ldexp`] renormalizes. proof: B10
+const LDEXP_RENORMALIZE_BELOW: f64 = f64::from_bits((1023 - 968) << 52);
+
+/// `RN(w · 2ᵏ)` for any `k` (one rounding, also into the subnormals): `w = m·2ᵉ` with
+/// `1 ≤ |m| < 2` exactly, then `m` times the power of two `2^{e+k}`, itself a subnormal
+/// for `−1074 ≤ e + k < −1022`. proof: B10
+#[cold]
+fn scale_word(w: f64, k: i32) -> f64 {
+    if w == 0.0 || !w.is_finite() {
+        return w;
+    }
+    let (w, e0) = if w.abs() < f64::MIN_POSITIVE {
+        (w * pow2(64), -64)
+    } else {
+        (w, 0)
+    };
+    let bits = w.to_bits();
+    let e = ((bits >> 52) & 0x7ff) as i32 - 1023;
+    // The significand with the exponent field of 2⁰: exact, sign kept.
+    let m = f64::from_bits((bits & !(0x7ff << 52)) | (1023 << 52));
+    let t = (e + e0).saturating_add(k.clamp(-4000, 4000));
+    if t > 1023 {
+        m * f64::INFINITY
+    } else if t >= -1022 {
+        m * pow2(t)
+    } else if t >= -1074 {
+        m * f64::from_bits(1u64 << (t + 1074))
+    } else {
+        // |m·2ᵗ| < 2⁻¹⁰⁷³: m·2^{max(t+1074, −60)} is exact, then one rounding by 2⁻¹⁰⁷⁴.
+        (m * pow2((t + 1074).max(-60))) * f64::from_bits(1)
+    }
 }
 
 impl Neg for Dd {
@@ -221,7 +263,7 @@ impl Real for Dd {
     /// `hi = RN(q)`, `lo = RN(q − hi)`: relative error ≤ u²(1 + u) in the normal range.
     /// proof: B09
     fn from_rational(q: &rug::Rational, (): ()) -> Dd {
-        let hi = crate::scalar::nearest_f64(q);
+        let hi = nearest_f64(q);
         if !hi.is_finite() {
             return Dd::from_f64(hi);
         }
@@ -229,10 +271,8 @@ impl Real for Dd {
             return Dd::from_f64(hi);
         };
         let rest = rug::Rational::from(q - &h);
-        Dd {
-            hi,
-            lo: crate::scalar::nearest_f64(&rest),
-        }
+        // Renormalized (exact): `lo` may round to exactly ±ulp(hi)/2 next to an odd `hi`.
+        Dd::from_parts(hi, nearest_f64(&rest))
     }
 
     fn pi((): ()) -> Dd {
@@ -288,12 +328,10 @@ impl Real for Dd {
     fn approx_f64(&self) -> f64 {
         self.hi + self.lo
     }
-    /// Both parts times `2ᵏ`: exact while `lo` stays normal.
+    /// [`Dd::ldexp`]: exact while `lo` stays normal, normalized below. proof: B10
     #[inline]
     fn ldexp_assign(&mut self, k: i32) {
-        let f = super::pow2(k);
-        self.hi *= f;
-        self.lo *= f;
+        *self = self.ldexp(k);
     }
     fn unit_roundoff((): ()) -> f64 {
         (-104.0_f64).exp2()

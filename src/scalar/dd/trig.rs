@@ -143,6 +143,29 @@ fn abs(a: Dd) -> Dd {
     }
 }
 
+/// Largest of `|x_h|, |y_h|` outside `[2⁻⁵⁰⁰, 2⁵⁰⁰)`: both are scaled by the same power of
+/// two, which leaves `atan2` unchanged, so that `d + c·n` cannot overflow and `n − c·d`
+/// keeps its trailing words normal. proof: B13
+const ATAN2_DIRECT: std::ops::Range<f64> =
+    f64::from_bits((1023 - 500) << 52)..f64::from_bits((1023 + 500) << 52);
+
+/// `(x, y)·2ᵏ` with the larger leading word in `[1, 2)` when it lies outside
+/// [`ATAN2_DIRECT`] (nonnegative finite nonzero inputs); otherwise unchanged. proof: B13
+fn scaled_to_unit(x: Dd, y: Dd) -> (Dd, Dd) {
+    let m = x.hi.max(y.hi);
+    if ATAN2_DIRECT.contains(&m) {
+        return (x, y);
+    }
+    // m = 2ᵉ·(1 + f); a subnormal m is first brought up by 2⁶⁰⁰ (exactly).
+    let (m, pre) = if m < f64::MIN_POSITIVE {
+        (m * f64::from_bits((1023 + 600) << 52), 600)
+    } else {
+        (m, 0)
+    };
+    let e = ((m.to_bits() >> 52) & 0x7ff) as i32 - 1023 - pre;
+    (x.ldexp(-e), y.ldexp(-e))
+}
+
 /// `atan2(y, x)` in (−π, π], with the IEEE conventions for signed zeros.
 pub(super) fn atan2(y: Dd, x: Dd) -> Dd {
     if !y.hi.is_finite() || !x.hi.is_finite() {
@@ -157,7 +180,7 @@ pub(super) fn atan2(y: Dd, x: Dd) -> Dd {
     if x.hi == 0.0 {
         return if y_neg { -PI_2 } else { PI_2 };
     }
-    let (ax, ay) = (abs(x), abs(y));
+    let (ax, ay) = scaled_to_unit(abs(x), abs(y));
     let swap = greater(ay, ax);
     let mut a = if swap {
         add(PI_2, -atan_first_octant(ax, ay))
