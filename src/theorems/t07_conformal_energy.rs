@@ -156,7 +156,10 @@ pub fn energy_error_bound<T: Real>(mesh: &Mesh, lengths: &[T], f: &[[T; 2]]) -> 
         // The quotient's first-order error needs a relative area error ≤ 1/8 (proofs/B48),
         // for the backend and for this evaluation from f64 approximations (B40).
         let kappa = darea / (e * area2.abs());
-        if !(kappa * EPS_F64 <= 0.125) {
+        if (kappa * EPS_F64)
+            .partial_cmp(&0.125)
+            .is_none_or(std::cmp::Ordering::is_gt)
+        {
             return f64::INFINITY;
         }
         cr_err += dnum / (4.0 * area2.abs()) + term.abs() * (darea / area2.abs() + 2.0 * e);

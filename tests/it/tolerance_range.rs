@@ -35,7 +35,7 @@ fn tetrahedron(l: &Rational) -> Surface {
 }
 
 /// A closed surface: two triangles `(a, b, c)` glued along all three sides.
-fn two_triangles(sq: [Rational; 3]) -> Surface {
+fn two_triangles(sq: &[Rational; 3]) -> Surface {
     let mesh = penner::mesh::builders::two_triangle_sphere();
     let mut v = Vec::new();
     for e in mesh.edges() {
@@ -82,14 +82,14 @@ fn b40_tolerances_at_high_precision_and_extreme_scales() {
         // A cap and a needle pair, scaled.
         let s2 = Rational::from(s * s);
         let cap = [1, 1, 3].map(|x| Rational::from(x * &s2));
-        bad.extend(failures(&two_triangles(cap), &precs));
+        bad.extend(failures(&two_triangles(&cap), &precs));
         let needle = [
             Rational::from(1),
             Rational::from(1),
             Rational::from((1, 1_000_000)),
         ]
         .map(|x| x * &s2);
-        bad.extend(failures(&two_triangles(needle), &precs));
+        bad.extend(failures(&two_triangles(&needle), &precs));
     }
     assert!(bad.is_empty(), "false refutations:\n{}", bad.join("\n"));
 }
@@ -153,7 +153,7 @@ fn b51_caps_and_needles_are_semidefinite_at_every_precision() {
         // Closed: two caps (1, 1, 2 − h) glued.
         let c = Rational::from(2) - &h;
         bad.extend(failures(
-            &two_triangles([
+            &two_triangles(&[
                 Rational::from(1),
                 Rational::from(1),
                 Rational::from(&c * &c),
