@@ -21,8 +21,8 @@
 
 use crate::mesh::{Edge, FlipError, Mesh};
 use crate::predicates::delaunay::{Quad, QuadEdges};
-use crate::predicates::directed::{div_positive, enclose_f64, valid};
-use crate::scalar::{Interval, Mpfr, Real};
+use crate::predicates::directed::{div_positive, valid};
+use crate::scalar::{Interval, IntervalBound, Real};
 use rug::Rational;
 
 /// Which flip updates the length of the new diagonal.
@@ -48,7 +48,7 @@ pub fn ptolemy_length_exact(q: Quad<&Rational>) -> Rational {
 
 /// The Ptolemy length of enclosed lengths, rounded outward (proof: B62); `None` if `ℓ_ij`
 /// may be ≤ 0.
-pub fn ptolemy_length_enclosure(q: Quad<&Interval<Mpfr>>) -> Option<Interval<Mpfr>> {
+pub fn ptolemy_length_enclosure<B: IntervalBound>(q: Quad<&Interval<B>>) -> Option<Interval<B>> {
     div_positive(&(q.ki.clone() * q.lj + &(q.il.clone() * q.jk)), q.ij)
 }
 
@@ -127,15 +127,14 @@ fn four_area<T: Real>(p: &T, q: &T, r: &T) -> T {
 /// The Euclidean length of [`euclidean_length`] on enclosed lengths, rounded outward;
 /// `None` if a triangle may violate the triangle inequality (its area factor may be
 /// negative) or `ℓ_ij` may be ≤ 0 (proof: B62).
-pub fn euclidean_length_enclosure(q: Quad<&Interval<Mpfr>>) -> Option<Interval<Mpfr>> {
-    let prec = q.ij.ctx();
-    let one = enclose_f64(1.0, prec);
+pub fn euclidean_length_enclosure<B: IntervalBound>(q: Quad<&Interval<B>>) -> Option<Interval<B>> {
+    let one = Interval::point(q.ij.lo().one_like());
     let b = div_positive(q.jk, q.ij)?;
     let c = div_positive(q.ki, q.ij)?;
     let d = div_positive(q.il, q.ij)?;
     let e = div_positive(q.lj, q.ij)?;
     // 4·Area of the triangle (1, b, c) by Heron's product, scaled by ℓ_ij.
-    let four_area = |b: &Interval<Mpfr>, c: &Interval<Mpfr>| {
+    let four_area = |b: &Interval<B>, c: &Interval<B>| {
         let s = (b.clone() + c - &one)
             * &(one.clone() - b + c)
             * &(one.clone() + b - c)
@@ -145,7 +144,7 @@ pub fn euclidean_length_enclosure(q: Quad<&Interval<Mpfr>>) -> Option<Interval<M
     let x = (c.clone() - &b) * &(c.clone() + &b) + &((e.clone() - &d) * &(e.clone() + &d));
     let y = four_area(&b, &c)? + &four_area(&d, &e)?;
     let r = valid((x.clone() * &x + &(y.clone() * &y)).sqrt())?;
-    valid(r * q.ij * &enclose_f64(0.5, prec))
+    valid(r * q.ij * &Interval::point(q.ij.lo().lit(0.5)))
 }
 
 fn quad_or_refuse(mesh: &Mesh, e: Edge) -> Result<QuadEdges, FlipError> {

@@ -92,6 +92,38 @@ impl Len {
 /// exact when the five lengths (or their squares) are rational (proof: B63, so ties are
 /// certified), otherwise `None`.
 pub fn sign(lens: &[Len], q: Quad<Edge>, bits: u32) -> Option<Sign> {
+    sign_after_f64(lens, None, q, bits)
+}
+
+/// An outward `f64` enclosure of a replay length (B21): `None` for a length already held as
+/// an MPFR enclosure, or one `f64` cannot hold.
+pub fn f64_enclosure(len: &Len) -> Option<Interval<f64>> {
+    let x = match len {
+        Len::Exact(q) => Interval::<f64>::from_rational(q, ()),
+        Len::Root(s) => valid(Interval::<f64>::from_rational(s, ())).map(|x| x.sqrt())?,
+        Len::Enclosed(_) => return None,
+    };
+    valid(x).filter(|x| x.lo().is_finite() && x.hi().is_finite())
+}
+
+/// [`sign`], first from `f64` enclosures `fast` of the lengths when given (one per edge,
+/// see [`f64_enclosure`]): a sign of `D` certified there is final (B21, B62); otherwise the
+/// MPFR and exact rungs of [`sign`] decide.
+pub fn sign_after_f64(
+    lens: &[Len],
+    fast: Option<&[Option<Interval<f64>>]>,
+    q: Quad<Edge>,
+    bits: u32,
+) -> Option<Sign> {
+    if let Some(fast) = fast {
+        let f = q.map(|e| fast[e.idx()].as_ref()).to_array();
+        if let [Some(a), Some(b), Some(c), Some(d), Some(e)] = f {
+            let p = enclose_p(&[a.clone(), b.clone(), c.clone(), d.clone(), e.clone()]);
+            if let Some(s @ (Sign::Positive | Sign::Negative)) = p.sign() {
+                return Some(s);
+            }
+        }
+    }
     let l = q.map(|e| &lens[e.idx()]);
     let arr = l.to_array();
     // The enclosure first: it decides every sign away from zero, and costs less than exact
@@ -241,6 +273,7 @@ pub fn replay_on_input(
     let ptolemy = kind == FlipKind::Ptolemy;
     let mut mesh = mesh.clone();
     let mut lens = Len::of_metric(metric);
+    let mut fast: Vec<Option<Interval<f64>>> = lens.iter().map(f64_enclosure).collect();
     let out = |mesh: Mesh, lens: Vec<Len>, broken| Replayed {
         mesh,
         lens,
@@ -260,7 +293,7 @@ pub fn replay_on_input(
         else {
             return out(mesh, lens, Some((n, e, BrokenStep::NotFlippable)));
         };
-        let tie = match sign(&lens, q.edges, bits) {
+        let tie = match sign_after_f64(&lens, Some(&fast), q.edges, bits) {
             Some(Sign::Zero) => true,
             Some(Sign::Negative) => false,
             Some(Sign::Positive) => {
@@ -279,6 +312,7 @@ pub fn replay_on_input(
         if mesh.flip(e).is_err() {
             return out(mesh, lens, Some((n, e, BrokenStep::NotFlippable)));
         }
+        fast[e.idx()] = f64_enclosure(&new);
         lens[e.idx()] = new;
     }
     let mut r = out(mesh, lens, None);
@@ -286,7 +320,7 @@ pub fn replay_on_input(
         let Some(q) = QuadEdges::of(&r.mesh, e) else {
             continue;
         };
-        match sign(&r.lens, q.edges, bits) {
+        match sign_after_f64(&r.lens, Some(&fast), q.edges, bits) {
             Some(Sign::Positive) => {}
             Some(Sign::Zero) => r.ties.push(e),
             Some(Sign::Negative) => r.negative.push(e),

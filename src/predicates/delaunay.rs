@@ -50,7 +50,7 @@
 use super::directed::scaled_length;
 use super::ladder::{decide, Ladder, SignPredicate};
 use crate::mesh::{Edge, Face, HalfEdge, Mesh};
-use crate::scalar::{Certified, Interval, Mpfr, Precision, Real, Sign, Stage};
+use crate::scalar::{Certified, Interval, IntervalBound, Mpfr, Precision, Real, Sign, Stage};
 use rug::Rational;
 
 /// The five lengths of the quadrilateral around edge `ij`: `ij` the edge, `jk, ki` the
@@ -398,7 +398,7 @@ fn filter_not_positive(k: f64, n: f64) -> Option<Sign> {
 // Rungs 2 and 3: enclosures and exact rationals.
 
 /// `P` evaluated on interval inputs `[a, b, c, d, e]` with outward rounding (proof: B62).
-pub fn enclose_p(q: &[Interval<Mpfr>; 5]) -> Interval<Mpfr> {
+pub fn enclose_p<B: IntervalBound>(q: &[Interval<B>; 5]) -> Interval<B> {
     let [a, b, c, d, e] = q;
     let a2 = a.clone() * a;
     let x = b.clone() * b + &(c.clone() * c) - &a2;
@@ -477,7 +477,10 @@ impl SignPredicate for RationalQuad<'_> {
         }
     }
     fn enclosure_sign(&self, prec: Precision) -> Option<Sign> {
-        let ins = self.0.to_array().map(|q| Interval::from_rational(q, prec));
+        let ins = self
+            .0
+            .to_array()
+            .map(|q| Interval::<Mpfr>::from_rational(q, prec));
         enclose_p(&ins).sign()
     }
     fn exact_sign(&self) -> Option<Sign> {

@@ -58,7 +58,7 @@ impl SignPredicate for ExpQuad<'_> {
         let ins = self
             .0
             .to_array()
-            .map(|l| Interval::from_rational(&l.shifted_rational(e), prec));
+            .map(|l| Interval::<crate::scalar::Mpfr>::from_rational(&l.shifted_rational(e), prec));
         enclose_p(&ins).sign()
     }
     fn exact_sign(&self) -> Option<Sign> {

@@ -17,7 +17,8 @@
 //! assert!(!overlaps(&enclose_f64(2.0, p), &enclose_f64(3.0, p)));
 //! ```
 
-use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
+use crate::scalar::{Interval, IntervalBound, Mpfr, Precision, Real, Sign};
+use std::cmp::Ordering;
 
 /// The point enclosure `[x, x]` of a finite `f64` (exact at any precision ≥ 53 bits).
 pub fn enclose_f64(x: f64, prec: Precision) -> Interval<Mpfr> {
@@ -33,19 +34,23 @@ pub fn scaled_length(length: f64, u_i: f64, u_j: f64, prec: Precision) -> Interv
 }
 
 /// Whether two valid enclosures share a point (then their exact values may be equal);
-/// `false` if either is invalid.
-pub fn overlaps(a: &Interval<Mpfr>, b: &Interval<Mpfr>) -> bool {
-    a.is_valid() && b.is_valid() && a.lo().0 <= b.hi().0 && b.lo().0 <= a.hi().0
+/// `false` if either is invalid. Any bound type ([`IntervalBound`]: MPFR, or `f64` with
+/// directed rounding by error terms, B21).
+pub fn overlaps<B: IntervalBound>(a: &Interval<B>, b: &Interval<B>) -> bool {
+    a.is_valid()
+        && b.is_valid()
+        && a.lo().cmp_bound(b.hi()).is_some_and(Ordering::is_le)
+        && b.lo().cmp_bound(a.hi()).is_some_and(Ordering::is_le)
 }
 
 /// Whether every point of `a` lies strictly below every point of `b` (both valid).
-pub fn strictly_below(a: &Interval<Mpfr>, b: &Interval<Mpfr>) -> bool {
-    a.is_valid() && b.is_valid() && a.hi().0 < b.lo().0
+pub fn strictly_below<B: IntervalBound>(a: &Interval<B>, b: &Interval<B>) -> bool {
+    a.is_valid() && b.is_valid() && a.hi().cmp_bound(b.lo()) == Some(Ordering::Less)
 }
 
 /// `a / b` when `b` is certified strictly positive; `None` otherwise or when the quotient
 /// is invalid.
-pub fn div_positive(a: &Interval<Mpfr>, b: &Interval<Mpfr>) -> Option<Interval<Mpfr>> {
+pub fn div_positive<B: IntervalBound>(a: &Interval<B>, b: &Interval<B>) -> Option<Interval<B>> {
     if b.sign() != Some(Sign::Positive) {
         return None;
     }
@@ -53,6 +58,6 @@ pub fn div_positive(a: &Interval<Mpfr>, b: &Interval<Mpfr>) -> Option<Interval<M
 }
 
 /// `Some(x)` when `x` is a valid enclosure (no domain error occurred), `None` otherwise.
-pub fn valid(x: Interval<Mpfr>) -> Option<Interval<Mpfr>> {
+pub fn valid<B: IntervalBound>(x: Interval<B>) -> Option<Interval<B>> {
     x.is_valid().then_some(x)
 }

@@ -9,6 +9,7 @@
 use super::{Settings, Verdict, Witness};
 use crate::algorithms::flips::{euclidean_length_enclosure, ptolemy_length_enclosure};
 use crate::mesh::Mesh;
+use crate::predicates::delaunay::Quad;
 use crate::predicates::delaunay::{QuadEdges, RealQuad};
 use crate::predicates::directed::{overlaps, strictly_below};
 use crate::predicates::ladder::decide;
@@ -47,10 +48,27 @@ pub fn verify_cocircularity_signs<T: Real>(
     }
     let mut witnesses = Vec::new();
     let mut undecided = Vec::new();
+    let fast = f64_enclosures(lengths);
     for e in mesh.edges() {
         let Some(q) = QuadEdges::of(mesh, e) else {
             continue;
         };
+        if let Some(sign) = signs[e.idx()] {
+            match compare_f64(&fast, q, sign) {
+                Some(true) => continue,
+                Some(false) => {
+                    witnesses.push(Witness {
+                        element: e.to_string(),
+                        detail: format!(
+                            "D is {sign}, but the Euclidean and Ptolemy lengths disagree with that"
+                        ),
+                        value: 1.0,
+                    });
+                    continue;
+                }
+                None => {}
+            }
+        }
         let quad = q.lengths(lengths);
         let Some(sign) = signs[e.idx()] else {
             undecided.push(Witness {
@@ -127,4 +145,51 @@ pub fn verify_cocircularity_signs<T: Real>(
         }
     }
     Verdict::certified(witnesses, undecided, settings.ladder.max_bits)
+}
+
+/// Outward `f64` enclosures of the lengths (B21): the point itself for `f64` values, the
+/// directed roundings of the exact value otherwise; `None` for a non-finite length.
+fn f64_enclosures<T: Real>(lengths: &[T]) -> Vec<Option<Interval<f64>>> {
+    let exact_f64 = T::is_point()
+        && lengths
+            .first()
+            .is_some_and(|x| T::precision_bits(x.ctx()) == 53);
+    lengths
+        .iter()
+        .map(|x| {
+            if exact_f64 {
+                let v = x.approx_f64();
+                v.is_finite().then(|| Interval::point(v))
+            } else {
+                x.to_rational()
+                    .map(|q| Interval::<f64>::from_rational(&q, ()))
+            }
+        })
+        .collect()
+}
+
+/// The first rung of T29's comparison, on `f64` enclosures (B21): `Some(true)` when the
+/// enclosures of the Euclidean and Ptolemy lengths agree with a nonzero sign of `D`
+/// (Ptolemy strictly above), `Some(false)` when they certifiably contradict the sign
+/// (disjoint at `D = 0`, Ptolemy strictly below otherwise), `None` when this rung cannot
+/// tell (the MPFR rungs follow; at `D = 0` they judge the intersection at their width).
+fn compare_f64(fast: &[Option<Interval<f64>>], q: QuadEdges, sign: Sign) -> Option<bool> {
+    let [a, b, c, d, e] = q.edges.to_array().map(|e| fast[e.idx()].as_ref());
+    let quad = Quad {
+        ij: a?,
+        jk: b?,
+        ki: c?,
+        il: d?,
+        lj: e?,
+    };
+    let eu = euclidean_length_enclosure(quad)?;
+    let pt = ptolemy_length_enclosure(quad)?;
+    match sign {
+        // Intersecting f64 enclosures are weaker evidence than the MPFR rung's: only a
+        // refutation is final here.
+        Sign::Zero => (!overlaps(&eu, &pt)).then_some(false),
+        _ if strictly_below(&eu, &pt) => Some(true),
+        _ if strictly_below(&pt, &eu) => Some(false),
+        _ => None,
+    }
 }
