@@ -57,13 +57,7 @@ pub fn verify_cocircularity_signs<T: Real>(
             match compare_f64(&fast, q, sign) {
                 Some(true) => continue,
                 Some(false) => {
-                    witnesses.push(Witness {
-                        element: e.to_string(),
-                        detail: format!(
-                            "D is {sign}, but the Euclidean and Ptolemy lengths disagree with that"
-                        ),
-                        value: 1.0,
-                    });
+                    witnesses.push(disagreement(e, sign));
                     continue;
                 }
                 None => {}
@@ -130,13 +124,7 @@ pub fn verify_cocircularity_signs<T: Real>(
         match outcome {
             // `Some(None)`: a triangle may violate the triangle inequality (no Euclidean flip).
             Some(None | Some(true)) => {}
-            Some(Some(false)) => witnesses.push(Witness {
-                element: e.to_string(),
-                detail: format!(
-                    "D is {sign}, but the Euclidean and Ptolemy lengths disagree with that"
-                ),
-                value: 1.0,
-            }),
+            Some(Some(false)) => witnesses.push(disagreement(e, sign)),
             None => undecided.push(Witness {
                 element: e.to_string(),
                 detail: "enclosures of the two new lengths overlap at every precision".into(),
@@ -191,5 +179,14 @@ fn compare_f64(fast: &[Option<Interval<f64>>], q: QuadEdges, sign: Sign) -> Opti
         _ if strictly_below(&eu, &pt) => Some(true),
         _ if strictly_below(&pt, &eu) => Some(false),
         _ => None,
+    }
+}
+
+/// The witness of an edge whose new lengths contradict the sign of `D`.
+fn disagreement(e: crate::mesh::Edge, sign: Sign) -> Witness {
+    Witness {
+        element: e.to_string(),
+        detail: format!("D is {sign}, but the Euclidean and Ptolemy lengths disagree with that"),
+        value: 1.0,
     }
 }
