@@ -95,13 +95,18 @@ pub fn sign(lens: &[Len], q: Quad<Edge>, bits: u32) -> Option<Sign> {
     sign_after_f64(lens, None, q, bits)
 }
 
-/// An outward `f64` enclosure of a replay length (B21): `None` for a length already held as
-/// an MPFR enclosure, or one `f64` cannot hold.
+/// An outward `f64` enclosure of a replay length (B21; an MPFR enclosure is widened to the
+/// binary64 numbers below and above its ends): `None` for a length `f64` cannot hold.
 pub fn f64_enclosure(len: &Len) -> Option<Interval<f64>> {
     let x = match len {
         Len::Exact(q) => Interval::<f64>::from_rational(q, ()),
         Len::Root(s) => valid(Interval::<f64>::from_rational(s, ())).map(|x| x.sqrt())?,
-        Len::Enclosed(_) => return None,
+        Len::Enclosed(e) => {
+            // Outward to binary64 (directed roundings of each end point).
+            let lo = e.lo().0.to_f64_round(rug::float::Round::Down);
+            let hi = e.hi().0.to_f64_round(rug::float::Round::Up);
+            Interval::<f64>::new(lo, hi)
+        }
     };
     valid(x).filter(|x| x.lo().is_finite() && x.hi().is_finite())
 }
