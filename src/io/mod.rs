@@ -16,12 +16,15 @@
 //!                        "lengths": ["1", "1", "2"]}"#).is_err()); // degenerate
 //! ```
 
+pub mod decimal;
+pub mod decimal_surface;
 pub mod json;
 pub mod obj;
 pub mod off;
 pub mod surface;
 mod text;
 
+pub use decimal_surface::DecimalSurface;
 pub use surface::{Metric, MetricError, Surface};
 
 use crate::mesh::MeshError;

@@ -5,14 +5,22 @@
 //! are refused ([`ReadError::NotTriangle`]); `COFF`, `NOFF` and other variants are not
 //! read. Counts are checked against the file size before anything is allocated.
 
+use super::decimal::Coordinate;
+use super::decimal_surface::DecimalSurface;
 use super::surface::Surface;
 use super::text::{content_lines, coordinate, surface_from_soup};
 use super::{text_of, ReadError};
-use rug::Rational;
 
 /// Read an OFF surface from bytes (refusing non-UTF-8 data).
 pub fn read_bytes(bytes: &[u8]) -> Result<Surface, ReadError> {
     read(text_of(bytes)?)
+}
+
+/// Read a surface from text into its compact form (exact coordinates, metric computed per
+/// edge): the fast path for large meshes. [`read`] is this followed by
+/// [`DecimalSurface::into_surface`].
+pub fn read_decimal(text: &str) -> Result<DecimalSurface, ReadError> {
+    read_soup(text)
 }
 
 fn count(tok: Option<&str>, line: usize, what: &str) -> Result<u64, ReadError> {
@@ -37,6 +45,10 @@ fn count(tok: Option<&str>, line: usize, what: &str) -> Result<u64, ReadError> {
 /// assert_eq!(s.mesh.n_faces(), 4);
 /// ```
 pub fn read(text: &str) -> Result<Surface, ReadError> {
+    read_soup(text).map(DecimalSurface::into_surface)
+}
+
+fn read_soup(text: &str) -> Result<DecimalSurface, ReadError> {
     let last_line = text.lines().count().max(1);
     let mut lines = content_lines(text).peekable();
     let Some((hline, header)) = lines.next() else {
@@ -84,7 +96,7 @@ pub fn read(text: &str) -> Result<Surface, ReadError> {
             count: nf,
         });
     }
-    let mut positions: Vec<[Rational; 3]> = Vec::with_capacity(nv as usize);
+    let mut positions: Vec<[Coordinate; 3]> = Vec::with_capacity(nv as usize);
     let mut vertex_lines = Vec::with_capacity(nv as usize);
     for i in 0..nv {
         let (line, l) = lines.next().ok_or_else(|| ReadError::Truncated {
@@ -118,7 +130,7 @@ fn short(s: &str) -> String {
     s.chars().take(40).collect()
 }
 
-fn vertex_line(line: usize, l: &str) -> Result<[Rational; 3], ReadError> {
+fn vertex_line(line: usize, l: &str) -> Result<[Coordinate; 3], ReadError> {
     let t: Vec<&str> = l.split_ascii_whitespace().collect();
     if t.len() != 3 {
         return Err(ReadError::Syntax {

@@ -18,6 +18,7 @@ mod dual;
 mod exact;
 mod interval;
 mod io;
+mod io_decimal;
 mod laplacian;
 mod mesh;
 mod mesh_core;
