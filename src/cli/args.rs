@@ -61,6 +61,10 @@ pub enum Command {
         /// nothing overflows; f64 significands).
         #[arg(long, value_name = "FILE")]
         scale_factors: Option<PathBuf>,
+        /// With `-o out.obj` or `-o out.off`: also write the lengths (a JSON array, one per
+        /// line, in the edge order of surface JSON) to this file (must not exist).
+        #[arg(long, value_name = "FILE")]
+        lengths_out: Option<PathBuf>,
     },
     /// Re-run a saved failure file and report whether it still fails.
     Replay {

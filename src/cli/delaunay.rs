@@ -2,16 +2,17 @@
 
 use super::args::FlipKind as ArgFlipKind;
 use super::error::{code, CliError};
-use super::files::{emit, read_text, write_new};
+use super::files::read_text;
+use super::input::FlipCase;
+use super::output::{self, FlipValues};
 use penner::algorithms::flip_scaled::flip_to_delaunay_scaled;
 use penner::algorithms::flip_to_delaunay::{
     flip_to_delaunay, flip_to_delaunay_exact, ExactLengths, FlipKind, FlipOptions, FlipReport,
 };
-use penner::io::{json, Metric, Surface};
 use penner::oracle::Prec;
 use penner::scalar::exp_length::ExpLength;
 use penner::scalar::{Dd, Mpfr, Real};
-use rug::Rational;
+use std::any::Any;
 use std::io::IsTerminal;
 use std::path::Path;
 use std::time::Duration;
@@ -32,6 +33,8 @@ pub struct Options<'a> {
     pub output: Option<&'a Path>,
     /// Per-vertex log scale factors (JSON array): flip `e^{(u_i+u_j)/2}·ℓ_ij` instead.
     pub scale_factors: Option<&'a Path>,
+    /// A lengths file to write next to an OBJ or OFF output.
+    pub lengths_out: Option<&'a Path>,
 }
 
 /// Read a JSON array of one finite number per vertex (`u_v`), naming the file and the
@@ -76,36 +79,47 @@ fn read_scale_factors(path: &Path, prec: Prec, n_vertices: usize) -> Result<Vec<
 /// Flip the conformally scaled metric of `case` (lengths kept as `m·2ᵏ`, B67) and return
 /// the report and the exact values of the final lengths.
 fn flip_scaled(
-    case: &mut Surface,
+    case: &mut FlipCase,
     u: &[f64],
     kind: FlipKind,
-) -> Result<(FlipReport, Vec<Rational>), CliError> {
+) -> Result<(FlipReport, FlipValues), CliError> {
     let base: Vec<f64> = case.lengths(());
+    let name = case.name().to_string();
     let (report, lengths) =
-        flip_to_delaunay_scaled(&mut case.mesh, &base, u, kind, &FlipOptions::default())
-            .map_err(|e| CliError::Input(format!("{}: {e}", case.name)))?;
-    Ok((report, lengths.iter().map(ExpLength::to_rational).collect()))
+        flip_to_delaunay_scaled(case.mesh_mut(), &base, u, kind, &FlipOptions::default())
+            .map_err(|e| CliError::Input(format!("{name}: {e}")))?;
+    Ok((
+        report,
+        FlipValues::Exact(lengths.iter().map(ExpLength::to_rational).collect()),
+    ))
 }
 
 /// Flip real lengths of backend `T` and return the report and the exact values of the
-/// stored lengths.
-fn flip_real<T: Real>(
-    case: &mut Surface,
+/// stored lengths (`f64` values as they are: each is exact).
+fn flip_real<T: Real + 'static>(
+    case: &mut FlipCase,
     ctx: T::Ctx,
     kind: FlipKind,
-) -> Result<(FlipReport, Vec<Rational>), CliError> {
+) -> Result<(FlipReport, FlipValues), CliError> {
     let mut l: Vec<T> = case.lengths(ctx);
-    let report = flip_to_delaunay(&mut case.mesh, &mut l, kind, &FlipOptions::default())
-        .map_err(|e| CliError::Input(format!("{}: {e}", case.name)))?;
+    let name = case.name().to_string();
+    let report = flip_to_delaunay(case.mesh_mut(), &mut l, kind, &FlipOptions::default())
+        .map_err(|e| CliError::Input(format!("{name}: {e}")))?;
+    let l = match (Box::new(l) as Box<dyn Any>).downcast::<Vec<f64>>() {
+        Ok(binary64) => return Ok((report, FlipValues::Binary64(*binary64))),
+        Err(other) => other
+            .downcast::<Vec<T>>()
+            .map_err(|_| CliError::Input(format!("{name}: length type")))?,
+    };
     let exact = l
         .iter()
         .enumerate()
         .map(|(i, x)| {
             x.to_rational()
-                .ok_or_else(|| CliError::Input(format!("{}: edge {i} overflowed", case.name)))
+                .ok_or_else(|| CliError::Input(format!("{name}: edge {i} overflowed")))
         })
         .collect::<Result<_, _>>()?;
-    Ok((report, exact))
+    Ok((report, FlipValues::Exact(exact)))
 }
 
 /// Refuse an output file that exists before doing any work (never overwrite).
@@ -130,7 +144,9 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         ));
     };
     refuse_existing(o.output)?;
-    let mut case = super::input::load_case(o.path)?;
+    refuse_existing(o.lengths_out)?;
+    let format = output::format_of(o.output, o.lengths_out)?;
+    let mut case = super::input::load_flip_case(o.path)?;
     let kind = match o.flips {
         ArgFlipKind::Euclidean => FlipKind::Euclidean,
         ArgFlipKind::Ptolemy => FlipKind::Ptolemy,
@@ -140,24 +156,24 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         b.set_message(format!(
             "flipping {} ({} faces) to intrinsic Delaunay",
             o.path.display(),
-            case.mesh.n_faces()
+            case.mesh().n_faces()
         ));
         b.enable_steady_tick(Duration::from_millis(120));
         b
     });
     let scale = match o.scale_factors {
-        Some(path) => Some(read_scale_factors(path, prec, case.mesh.n_vertices())?),
+        Some(path) => Some(read_scale_factors(path, prec, case.mesh().n_vertices())?),
         None => None,
     };
-    let result = match (prec, kind, &case.metric, &scale) {
+    let exact_lengths = case.exact_lengths().cloned();
+    let result = match (prec, kind, exact_lengths, &scale) {
         (.., Some(u)) => flip_scaled(&mut case, u, kind),
-        (Prec::Exact, FlipKind::Ptolemy, Metric::Lengths(l), None) => {
-            let l = l.clone();
+        (Prec::Exact, FlipKind::Ptolemy, Some(l), None) => {
             let (report, lengths) =
-                flip_to_delaunay_exact(&mut case.mesh, l, EXACT_GUARD_BITS, &FlipOptions::default())
+                flip_to_delaunay_exact(case.mesh_mut(), l, EXACT_GUARD_BITS, &FlipOptions::default())
                     .map_err(|e| CliError::Input(format!("{}: {e}", o.path.display())))?;
             match lengths {
-                ExactLengths::Exact(v) => Ok((report, v)),
+                ExactLengths::Exact(v) => Ok((report, FlipValues::Exact(v))),
                 ExactLengths::Enclosed(_) => Err(CliError::Input(format!(
                     "{}: exact lengths outgrew {EXACT_GUARD_BITS} bits after {} flips; use a bit count such as --precision 1024",
                     o.path.display(),
@@ -179,15 +195,9 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         b.finish_and_clear();
     }
     let (report, lengths) = result?;
-    let out_case = Surface {
-        name: case.name.clone(),
-        mesh: case.mesh.clone(),
-        metric: Metric::Lengths(lengths),
-        positions: None,
-    };
     // The output is a plain surface file (readable by `penner check`); the flip count
     // and the certificate go to standard error.
-    let text = format!("{:#}\n", json::to_value(&out_case));
+    output::write_flipped(&case, &lengths, format, o.output, o.lengths_out)?;
     let summary = format!(
         "{} {} flip(s) at {prec}; {}",
         report.flips,
@@ -207,10 +217,8 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         }
     );
     if let Some(p) = o.output {
-        write_new(p, &text)?;
         eprintln!("{summary}; written to {}", p.display());
     } else {
-        emit(&text);
         eprintln!("{summary}");
     }
     Ok(if report.all_certified_delaunay() {

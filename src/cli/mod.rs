@@ -7,6 +7,7 @@ mod delaunay;
 mod error;
 mod files;
 mod input;
+mod output;
 mod replay;
 mod report;
 
@@ -56,12 +57,14 @@ pub fn main() -> ExitCode {
             precision,
             output,
             scale_factors,
+            lengths_out,
         }) => delaunay::run(&delaunay::Options {
             path: &surface,
             flips,
             precision: &precision,
             output: output.as_deref(),
             scale_factors: scale_factors.as_deref(),
+            lengths_out: lengths_out.as_deref(),
         }),
     };
     match result {

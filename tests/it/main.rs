@@ -3,6 +3,7 @@
 mod claims;
 mod cli;
 mod cli_controls;
+mod cli_io;
 mod cone_angles_kernel;
 mod controls;
 mod definition_two;
