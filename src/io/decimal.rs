@@ -151,9 +151,20 @@ fn fast_decimal(b: &[u8]) -> Option<(i64, i32)> {
     Some((if negative { -m } else { m }, exp - frac))
 }
 
-/// `10ᵏ` for `0 ≤ k ≤ 38` (the powers that fit `i128`).
+/// `10ᵏ` for `0 ≤ k ≤ 38`, the powers that fit `i128`.
+const POW10: [i128; 39] = {
+    let mut t = [1i128; 39];
+    let mut k = 1;
+    while k < 39 {
+        t[k] = t[k - 1] * 10;
+        k += 1;
+    }
+    t
+};
+
+/// `10ᵏ` when it fits `i128`.
 fn pow10(k: u32) -> Option<i128> {
-    10i128.checked_pow(k)
+    POW10.get(k as usize).copied()
 }
 
 /// The mantissas of `cs` (all [`Coordinate::Decimal`]) brought to their smallest exponent

@@ -49,11 +49,12 @@ pub fn read(text: &str) -> Result<Surface, ReadError> {
 }
 
 fn read_soup(text: &str) -> Result<DecimalSurface, ReadError> {
-    let last_line = text.lines().count().max(1);
+    // Only an error at the end of the file needs the last line's number.
+    let last = || text.lines().count().max(1);
     let mut lines = content_lines(text).peekable();
     let Some((hline, header)) = lines.next() else {
         return Err(ReadError::Truncated {
-            line: last_line,
+            line: last(),
             expected: "the `OFF` header".into(),
         });
     };
@@ -67,7 +68,7 @@ fn read_soup(text: &str) -> Result<DecimalSurface, ReadError> {
     let rest: Vec<&str> = toks.collect();
     let (cline, counts): (usize, Vec<&str>) = if rest.is_empty() {
         let (l, c) = lines.next().ok_or_else(|| ReadError::Truncated {
-            line: last_line,
+            line: last(),
             expected: "the counts line `V F E`".into(),
         })?;
         (l, c.split_ascii_whitespace().collect())
@@ -100,7 +101,7 @@ fn read_soup(text: &str) -> Result<DecimalSurface, ReadError> {
     let mut vertex_lines = Vec::with_capacity(nv as usize);
     for i in 0..nv {
         let (line, l) = lines.next().ok_or_else(|| ReadError::Truncated {
-            line: last_line,
+            line: last(),
             expected: format!("vertex {} of {nv}", i + 1),
         })?;
         positions.push(vertex_line(line, l)?);
@@ -110,7 +111,7 @@ fn read_soup(text: &str) -> Result<DecimalSurface, ReadError> {
     let mut face_lines = Vec::with_capacity(nf as usize);
     for i in 0..nf {
         let (line, l) = lines.next().ok_or_else(|| ReadError::Truncated {
-            line: last_line,
+            line: last(),
             expected: format!("face {} of {nf}", i + 1),
         })?;
         let tri = face_line(line, l, nv)?;
@@ -131,17 +132,20 @@ fn short(s: &str) -> String {
 }
 
 fn vertex_line(line: usize, l: &str) -> Result<[Coordinate; 3], ReadError> {
-    let t: Vec<&str> = l.split_ascii_whitespace().collect();
-    if t.len() != 3 {
+    let mut t = l.split_ascii_whitespace();
+    let (Some(x), Some(y), Some(z), None) = (t.next(), t.next(), t.next(), t.next()) else {
         return Err(ReadError::Syntax {
             line,
-            message: format!("a vertex line needs 3 coordinates, found {}", t.len()),
+            message: format!(
+                "a vertex line needs 3 coordinates, found {}",
+                l.split_ascii_whitespace().count()
+            ),
         });
-    }
+    };
     Ok([
-        coordinate(t[0], line)?,
-        coordinate(t[1], line)?,
-        coordinate(t[2], line)?,
+        coordinate(x, line)?,
+        coordinate(y, line)?,
+        coordinate(z, line)?,
     ])
 }
 
