@@ -8,7 +8,6 @@
 #![allow(missing_docs)] // criterion_group! generates an undocumented function
 
 #[path = "../tests/it/meshgen.rs"]
-#[allow(dead_code)]
 mod meshgen;
 
 use criterion::{criterion_group, criterion_main, Criterion};

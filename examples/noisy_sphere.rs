@@ -13,7 +13,6 @@
 //! writes nothing but standard output; with no arguments it prints a small sphere.
 
 #[path = "../tests/it/meshgen.rs"]
-#[allow(dead_code)]
 mod meshgen;
 
 use std::io::Write;

@@ -63,24 +63,21 @@ fn stream(
     path: Option<&Path>,
     body: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
 ) -> Result<(), CliError> {
-    match path {
-        Some(p) => {
-            let file = create_new(p)?;
-            let mut w = BufWriter::with_capacity(1 << 20, file);
-            body(&mut w)
-                .and_then(|()| w.flush())
-                .and_then(|()| w.get_ref().sync_all())
-                .map_err(|e| CliError::Write {
-                    path: p.to_path_buf(),
-                    reason: e.to_string(),
-                })
-        }
-        None => {
-            let mut w = BufWriter::with_capacity(1 << 20, std::io::stdout().lock());
-            body(&mut w)
-                .and_then(|()| w.flush())
-                .map_err(|e| stdout_error(&e))
-        }
+    if let Some(p) = path {
+        let file = create_new(p)?;
+        let mut w = BufWriter::with_capacity(1 << 20, file);
+        body(&mut w)
+            .and_then(|()| w.flush())
+            .and_then(|()| w.get_ref().sync_all())
+            .map_err(|e| CliError::Write {
+                path: p.to_path_buf(),
+                reason: e.to_string(),
+            })
+    } else {
+        let mut w = BufWriter::with_capacity(1 << 20, std::io::stdout().lock());
+        body(&mut w)
+            .and_then(|()| w.flush())
+            .map_err(|e| stdout_error(&e))
     }
 }
 

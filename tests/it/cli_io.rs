@@ -36,13 +36,11 @@ fn run_with(args: &[&str], stdout: Stdio) -> Output {
     std::thread::spawn(move || {
         let _ = tx.send(child.wait_with_output());
     });
-    match rx.recv_timeout(Duration::from_secs(60)) {
-        Ok(out) => out.expect("output"),
-        Err(_) => {
-            let _ = Command::new("kill").arg("-9").arg(id.to_string()).status();
-            panic!("penner {args:?} blocked for 60 s");
-        }
-    }
+    let Ok(out) = rx.recv_timeout(Duration::from_secs(60)) else {
+        let _ = Command::new("kill").arg("-9").arg(id.to_string()).status();
+        panic!("penner {args:?} blocked for 60 s");
+    };
+    out.expect("output")
 }
 
 fn dev_full() -> Stdio {

@@ -104,7 +104,7 @@ fn decimal_literals_match_parse_rational_in_value_and_error() {
     let generated: Vec<String> = (0..cases(20_000, 2_000_000))
         .map(|_| literal(&mut rng))
         .collect();
-    for s in EDGE_CASES.iter().map(|s| s.to_string()).chain(generated) {
+    for s in EDGE_CASES.iter().map(ToString::to_string).chain(generated) {
         let ours = parse_coordinate(&s);
         let exact = parse_rational(&s);
         match (&ours, &exact) {
@@ -330,11 +330,12 @@ fn obj_reader_equals_the_off_reader() {
     let lines: Vec<&str> = text.lines().collect();
     let nv = s.mesh.n_vertices();
     for l in &lines[2..2 + nv] {
-        obj_text += &format!("v {l}\n");
+        obj_text.push_str(&["v ", l, "\n"].concat());
     }
     for l in &lines[2 + nv..] {
         let t: Vec<u32> = l.split_whitespace().map(|x| x.parse().unwrap()).collect();
-        obj_text += &format!("f {} {} {}\n", t[1] + 1, t[2] + 1, t[3] + 1);
+        let f = [t[1] + 1, t[2] + 1, t[3] + 1].map(|x| x.to_string());
+        obj_text.push_str(&["f ", &f.join(" "), "\n"].concat());
     }
     assert_eq!(obj::read(&obj_text).unwrap(), s);
     assert_eq!(
