@@ -37,6 +37,10 @@ pub enum Command {
         /// a fixed perturbation, expected to fail; failures are written as failure files.
         #[arg(long)]
         negative_controls: bool,
+        /// Use these lengths instead of the file's metric: a JSON array, one length per
+        /// edge in the edge order of surface JSON (as `delaunay --lengths-out` writes).
+        #[arg(long, value_name = "FILE")]
+        lengths: Option<PathBuf>,
     },
     /// Answer a JSON claim (protocol v1, schema/claim-v1.schema.json) with a verdict.
     Certify {

@@ -24,6 +24,8 @@ pub struct Options<'a> {
     pub no_failure_files: bool,
     /// Run the negative controls ([`penner::oracle::controls`]) instead of the checks.
     pub negative_controls: bool,
+    /// A lengths file replacing the surface's metric.
+    pub lengths: Option<&'a Path>,
 }
 
 /// Run `penner check`.
@@ -38,7 +40,10 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     } else {
         select(o.only)?
     };
-    let case = super::input::load_case(o.path)?;
+    let mut case = super::input::load_case(o.path)?;
+    if let Some(l) = o.lengths {
+        case = super::input::with_lengths(case, l)?;
+    }
     let settings = Settings::default();
     let rows = registry::run_case(&case, &checks, &precs, &settings);
     let mut written: Vec<(String, PathBuf, usize)> = Vec::new();

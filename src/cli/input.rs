@@ -105,3 +105,20 @@ pub fn load_flip_case(path: &Path) -> Result<FlipCase, CliError> {
     }
     Ok(FlipCase::Decimal(s))
 }
+
+/// `case` with its metric replaced by the lengths file at `path` (a JSON array in the edge
+/// order of surface JSON, `penner::io::write::read_lengths`), validated; messages name the
+/// lengths file and the entry or face.
+pub fn with_lengths(case: Surface, path: &Path) -> Result<Surface, CliError> {
+    let shown = path.display().to_string();
+    let text = read_text(path)?;
+    let lengths = penner::io::write::read_lengths(&text, &case.mesh)
+        .map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
+    Surface::new(
+        case.name,
+        case.mesh,
+        Metric::Lengths(lengths),
+        case.positions,
+    )
+    .map_err(|e| CliError::Input(format!("{shown}: {e}")))
+}

@@ -41,6 +41,7 @@ pub fn main() -> ExitCode {
             json,
             no_failure_files,
             negative_controls,
+            lengths,
         }) => check::run(&check::Options {
             path: &surface,
             precision: &precision,
@@ -48,6 +49,7 @@ pub fn main() -> ExitCode {
             json,
             no_failure_files,
             negative_controls,
+            lengths: lengths.as_deref(),
         }),
         Some(Command::Replay { file, json }) => replay::run(&file, json),
         Some(Command::Certify { claim }) => certify::run(&claim),

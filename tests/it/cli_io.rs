@@ -276,6 +276,27 @@ fn every_format_delaunay_writes_reads_back_bit_identical() {
         assert_eq!(s.positions.as_ref().unwrap(), &positions, "{ext}");
         let back = writer::read_lengths(&std::fs::read_to_string(&lf).unwrap(), &s.mesh).unwrap();
         assert_eq!(ordered(&s.mesh, &back), want, "{ext}");
+        // `penner check` reads the pair back: the flipped triangulation is Delaunay (T21
+        // holds on it), and a lengths file of the wrong size is refused naming it.
+        let c = penner(&[
+            "check",
+            o.to_str().unwrap(),
+            "--lengths",
+            lf.to_str().unwrap(),
+            "--only",
+            "T21",
+            "--precision",
+            "f64",
+        ]);
+        assert_eq!(c.status.code(), Some(0), "{ext}: {}", text(&c.stderr));
+        let short = write(&d, "short.json", b"[1, 1, 1]");
+        let c = penner(&[
+            "check",
+            o.to_str().unwrap(),
+            "--lengths",
+            short.to_str().unwrap(),
+        ]);
+        assert_refused(&c, 3, &["short.json", "values for"]);
     }
     // At 256 bits: exact strings; the reference is the library's MPFR flip.
     delaunay(
