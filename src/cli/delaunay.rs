@@ -165,7 +165,12 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         Some(path) => Some(read_scale_factors(path, prec, case.mesh().n_vertices())?),
         None => None,
     };
-    let exact_lengths = case.exact_lengths().cloned();
+    // Cloned only for the exact rung, which consumes them.
+    let exact_lengths = if prec == Prec::Exact {
+        case.exact_lengths().cloned()
+    } else {
+        None
+    };
     let result = match (prec, kind, exact_lengths, &scale) {
         (.., Some(u)) => flip_scaled(&mut case, u, kind),
         (Prec::Exact, FlipKind::Ptolemy, Some(l), None) => {

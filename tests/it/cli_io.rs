@@ -228,6 +228,67 @@ fn delaunay(input: &Path, extra: &[&str]) {
     );
 }
 
+/// `delaunay -o b.off|b.obj --lengths-out …` on `input`: the input positions, the
+/// flipped faces of `mesh`, and the lengths `want` (edge order of surface JSON), read back
+/// by the library and by `penner check --lengths`.
+fn off_and_obj_read_back(
+    d: &Path,
+    input: &Path,
+    mesh: &Mesh,
+    want: &[Rational],
+    positions: &[[Rational; 3]],
+) {
+    let path = |n: &str| -> PathBuf { d.join(n) };
+    // OFF and OBJ with a lengths file: the input positions, the flipped faces.
+    for ext in ["off", "obj"] {
+        let o = path(&format!("b.{ext}"));
+        let lf = path(&format!("b-{ext}.lengths.json"));
+        delaunay(
+            input,
+            &[
+                "--precision",
+                "f64",
+                "-o",
+                o.to_str().unwrap(),
+                "--lengths-out",
+                lf.to_str().unwrap(),
+            ],
+        );
+        let t = std::fs::read_to_string(&o).unwrap();
+        let s = if ext == "off" {
+            off::read(&t)
+        } else {
+            obj::read(&t)
+        };
+        let s = s.unwrap();
+        assert_eq!(s.mesh.face_list(), mesh.face_list(), "{ext}");
+        assert_eq!(s.positions.as_deref().unwrap(), positions, "{ext}");
+        let back = writer::read_lengths(&std::fs::read_to_string(&lf).unwrap(), &s.mesh).unwrap();
+        assert_eq!(ordered(&s.mesh, &back), want, "{ext}");
+        // `penner check` reads the pair back: the flipped triangulation is Delaunay (T21
+        // holds on it), and a lengths file of the wrong size is refused naming it.
+        let c = penner(&[
+            "check",
+            o.to_str().unwrap(),
+            "--lengths",
+            lf.to_str().unwrap(),
+            "--only",
+            "T21",
+            "--precision",
+            "f64",
+        ]);
+        assert_eq!(c.status.code(), Some(0), "{ext}: {}", text(&c.stderr));
+        let short = write(d, "short.json", b"[1, 1, 1]");
+        let c = penner(&[
+            "check",
+            o.to_str().unwrap(),
+            "--lengths",
+            short.to_str().unwrap(),
+        ]);
+        assert_refused(&c, 3, &["short.json", "values for"]);
+    }
+}
+
 #[test]
 fn every_format_delaunay_writes_reads_back_bit_identical() {
     let d = scratch("io-roundtrip");
@@ -250,54 +311,7 @@ fn every_format_delaunay_writes_reads_back_bit_identical() {
     assert_eq!(a.mesh.face_list(), mesh.face_list());
     assert_eq!(glued(&a.mesh), glued(&mesh));
     assert_eq!(ordered(&a.mesh, a.metric.values()), want);
-    // OFF and OBJ with a lengths file: the input positions, the flipped faces.
-    for ext in ["off", "obj"] {
-        let o = path(&format!("b.{ext}"));
-        let lf = path(&format!("b-{ext}.lengths.json"));
-        delaunay(
-            &input,
-            &[
-                "--precision",
-                "f64",
-                "-o",
-                o.to_str().unwrap(),
-                "--lengths-out",
-                lf.to_str().unwrap(),
-            ],
-        );
-        let t = std::fs::read_to_string(&o).unwrap();
-        let s = if ext == "off" {
-            off::read(&t)
-        } else {
-            obj::read(&t)
-        };
-        let s = s.unwrap();
-        assert_eq!(s.mesh.face_list(), mesh.face_list(), "{ext}");
-        assert_eq!(s.positions.as_ref().unwrap(), &positions, "{ext}");
-        let back = writer::read_lengths(&std::fs::read_to_string(&lf).unwrap(), &s.mesh).unwrap();
-        assert_eq!(ordered(&s.mesh, &back), want, "{ext}");
-        // `penner check` reads the pair back: the flipped triangulation is Delaunay (T21
-        // holds on it), and a lengths file of the wrong size is refused naming it.
-        let c = penner(&[
-            "check",
-            o.to_str().unwrap(),
-            "--lengths",
-            lf.to_str().unwrap(),
-            "--only",
-            "T21",
-            "--precision",
-            "f64",
-        ]);
-        assert_eq!(c.status.code(), Some(0), "{ext}: {}", text(&c.stderr));
-        let short = write(&d, "short.json", b"[1, 1, 1]");
-        let c = penner(&[
-            "check",
-            o.to_str().unwrap(),
-            "--lengths",
-            short.to_str().unwrap(),
-        ]);
-        assert_refused(&c, 3, &["short.json", "values for"]);
-    }
+    off_and_obj_read_back(&d, &input, &mesh, &want, &positions);
     // At 256 bits: exact strings; the reference is the library's MPFR flip.
     delaunay(
         &input,
