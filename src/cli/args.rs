@@ -37,6 +37,10 @@ pub enum Command {
         /// a fixed perturbation, expected to fail; failures are written as failure files.
         #[arg(long)]
         negative_controls: bool,
+        /// Use these lengths instead of the file's metric: a JSON array, one length per
+        /// edge in the edge order of surface JSON (as `delaunay --lengths-out` writes).
+        #[arg(long, value_name = "FILE")]
+        lengths: Option<PathBuf>,
     },
     /// Answer a JSON claim (protocol v1, schema/claim-v1.schema.json) with a verdict.
     Certify {
@@ -69,6 +73,10 @@ pub enum Command {
         /// for the rounded metric only, and says so.
         #[arg(long)]
         no_input_replay: bool,
+        /// With `-o out.obj` or `-o out.off`: also write the lengths (a JSON array, one per
+        /// line, in the edge order of surface JSON) to this file (must not exist).
+        #[arg(long, value_name = "FILE")]
+        lengths_out: Option<PathBuf>,
     },
     /// Re-run a saved failure file and report whether it still fails.
     Replay {

@@ -8,9 +8,9 @@ use serde_json::json;
 use std::path::Path;
 
 /// Print a machine-readable refusal on stdout (the human message goes to stderr through
-/// the returned error).
+/// the returned error); when that answer cannot be written, the write error is returned.
 fn refuse(e: CliError) -> CliError {
-    emit(&format!(
+    let written = emit(&format!(
         "{:#}\n",
         json!({
             "penner_answer": claim::PROTOCOL_VERSION,
@@ -18,7 +18,10 @@ fn refuse(e: CliError) -> CliError {
             "error": e.to_string(),
         })
     ));
-    e
+    match written {
+        Ok(()) => e,
+        Err(w) => w,
+    }
 }
 
 /// Run `penner certify`.
@@ -27,7 +30,7 @@ pub fn run(path: &Path) -> Result<u8, CliError> {
     let name = path.display().to_string();
     let c = claim::parse(&text, &name).map_err(|e| refuse(CliError::Input(e.to_string())))?;
     let answer = certify(&c).map_err(|e| refuse(CliError::Input(format!("{name}: {e}"))))?;
-    emit(&format!("{:#}\n", answer.to_json()));
+    emit(&format!("{:#}\n", answer.to_json()))?;
     Ok(match answer.verdict {
         ClaimVerdict::Holds => code::HOLDS,
         ClaimVerdict::Refuted => code::FAILS,

@@ -24,6 +24,8 @@ pub struct Options<'a> {
     pub no_failure_files: bool,
     /// Run the negative controls ([`penner::oracle::controls`]) instead of the checks.
     pub negative_controls: bool,
+    /// A lengths file replacing the surface's metric.
+    pub lengths: Option<&'a Path>,
 }
 
 /// Run `penner check`.
@@ -38,7 +40,10 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     } else {
         select(o.only)?
     };
-    let case = super::input::load_case(o.path)?;
+    let mut case = super::input::load_case(o.path)?;
+    if let Some(l) = o.lengths {
+        case = super::input::with_lengths(case, l)?;
+    }
     let settings = Settings::default();
     let rows = run_with_progress(&case, &checks, &precs, &settings, o.json);
     let mut written: Vec<(String, PathBuf, usize)> = Vec::new();
@@ -74,7 +79,7 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
                 serde_json::json!({ "check": id, "file": p.display().to_string(), "faces": faces })
             })
             .collect();
-        emit(&format!("{doc:#}\n"));
+        emit(&format!("{doc:#}\n"))?;
     } else {
         emit(&format!(
             "{}: {} vertices, {} edges, {} faces, χ = {}\n\n",
@@ -83,19 +88,19 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
             case.mesh.n_edges(),
             case.mesh.n_faces(),
             case.mesh.euler_characteristic()
-        ));
-        emit(&report::table(&rows));
-        emit(&super::report::summary(&rows));
+        ))?;
+        emit(&report::table(&rows))?;
+        emit(&super::report::summary(&rows))?;
         for (id, p, faces) in &written {
             emit(&format!(
                 "{id} fails: witnesses and a reproducing surface ({faces} face(s)) written to {} (re-run with `penner replay {}`)\n",
                 p.display(),
                 p.display()
-            ));
+            ))?;
         }
     }
     if o.negative_controls {
-        return Ok(controls_verdict(&rows, &checks, o.json));
+        return controls_verdict(&rows, &checks, o.json);
     }
     Ok(super::status_code(report::status(&rows)))
 }
@@ -126,7 +131,7 @@ fn select_controls(only: &[String]) -> Result<Vec<Check>, CliError> {
 /// Exit code of `--negative-controls`: 0 when every control that ran (verdict other than
 /// not applicable) failed as expected, 1 when one held (the check did not see its
 /// perturbation on this surface), 5 when one crashed. Prints a line per control.
-fn controls_verdict(rows: &[registry::Row], checks: &[Check], json: bool) -> u8 {
+fn controls_verdict(rows: &[registry::Row], checks: &[Check], json: bool) -> Result<u8, CliError> {
     let mut code = super::error::code::HOLDS;
     for c in checks {
         let mine: Vec<&registry::Row> = rows.iter().filter(|r| r.id == c.id).collect();
@@ -150,10 +155,10 @@ fn controls_verdict(rows: &[registry::Row], checks: &[Check], json: bool) -> u8 
                 (f, 0) => format!("rejected as expected at {f} precision(s)"),
                 (f, h) => format!("NOT rejected at {h} precision(s) (rejected at {f})"),
             };
-            emit(&format!("{} ({}): {word}\n", c.id, c.title));
+            emit(&format!("{} ({}): {word}\n", c.id, c.title))?;
         }
     }
-    code
+    Ok(code)
 }
 
 /// The checks named by `--only`, or all.

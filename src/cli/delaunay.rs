@@ -2,18 +2,19 @@
 
 use super::args::FlipKind as ArgFlipKind;
 use super::error::{code, CliError};
-use super::files::{emit, read_text, write_new};
+use super::files::{create_new, read_text};
+use super::input::FlipCase;
+use super::output::{self, FlipValues};
 use penner::algorithms::flip_scaled::flip_to_delaunay_scaled;
 use penner::algorithms::flip_to_delaunay::{
     flip_to_delaunay, flip_to_delaunay_exact, ExactLengths, FlipKind, FlipOptions, FlipReport,
 };
 use penner::algorithms::replay::{replay_escalating, BrokenStep, Replayed};
-use penner::io::{json, Metric, Surface};
 use penner::oracle::Prec;
 use penner::predicates::delaunay::QuadEdges;
 use penner::scalar::exp_length::ExpLength;
 use penner::scalar::{Dd, Mpfr, Real};
-use rug::Rational;
+use std::any::Any;
 use std::io::IsTerminal;
 use std::path::Path;
 use std::time::Duration;
@@ -38,6 +39,8 @@ pub struct Options<'a> {
     pub summary: Option<&'a Path>,
     /// Replay the flip sequence on the exact input metric (B80) after a rounded run.
     pub input_replay: bool,
+    /// A lengths file to write next to an OBJ or OFF output.
+    pub lengths_out: Option<&'a Path>,
 }
 
 /// First and last MPFR precision of the replay on the input metric.
@@ -106,35 +109,46 @@ fn read_scale_factors(path: &Path, prec: Prec, n_vertices: usize) -> Result<Vec<
 /// Flip the conformally scaled metric of `case` (lengths kept as `m·2ᵏ`, B67) and return
 /// the report and the exact values of the final lengths.
 fn flip_scaled(
-    case: &mut Surface,
+    case: &mut FlipCase,
     u: &[f64],
     kind: FlipKind,
-) -> Result<(FlipReport, Vec<Rational>), CliError> {
+) -> Result<(FlipReport, FlipValues), CliError> {
     let base: Vec<f64> = case.lengths(());
-    let (report, lengths) = flip_to_delaunay_scaled(&mut case.mesh, &base, u, kind, &record())
-        .map_err(|e| CliError::Input(format!("{}: {e}", case.name)))?;
-    Ok((report, lengths.iter().map(ExpLength::to_rational).collect()))
+    let name = case.name().to_string();
+    let (report, lengths) = flip_to_delaunay_scaled(case.mesh_mut(), &base, u, kind, &record())
+        .map_err(|e| CliError::Input(format!("{name}: {e}")))?;
+    Ok((
+        report,
+        FlipValues::Exact(lengths.iter().map(ExpLength::to_rational).collect()),
+    ))
 }
 
 /// Flip real lengths of backend `T` and return the report and the exact values of the
-/// stored lengths.
-fn flip_real<T: Real>(
-    case: &mut Surface,
+/// stored lengths (`f64` values as they are: each is exact).
+fn flip_real<T: Real + 'static>(
+    case: &mut FlipCase,
     ctx: T::Ctx,
     kind: FlipKind,
-) -> Result<(FlipReport, Vec<Rational>), CliError> {
+) -> Result<(FlipReport, FlipValues), CliError> {
     let mut l: Vec<T> = case.lengths(ctx);
-    let report = flip_to_delaunay(&mut case.mesh, &mut l, kind, &record())
-        .map_err(|e| CliError::Input(format!("{}: {e}", case.name)))?;
+    let name = case.name().to_string();
+    let report = flip_to_delaunay(case.mesh_mut(), &mut l, kind, &record())
+        .map_err(|e| CliError::Input(format!("{name}: {e}")))?;
+    let l = match (Box::new(l) as Box<dyn Any>).downcast::<Vec<f64>>() {
+        Ok(binary64) => return Ok((report, FlipValues::Binary64(*binary64))),
+        Err(other) => other
+            .downcast::<Vec<T>>()
+            .map_err(|_| CliError::Input(format!("{name}: length type")))?,
+    };
     let exact = l
         .iter()
         .enumerate()
         .map(|(i, x)| {
             x.to_rational()
-                .ok_or_else(|| CliError::Input(format!("{}: edge {i} overflowed", case.name)))
+                .ok_or_else(|| CliError::Input(format!("{name}: edge {i} overflowed")))
         })
         .collect::<Result<_, _>>()?;
-    Ok((report, exact))
+    Ok((report, FlipValues::Exact(exact)))
 }
 
 /// The flip options of every run: default, with the sequence recorded (for the replay).
@@ -181,26 +195,37 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     };
     refuse_existing(o.output)?;
     refuse_existing(o.summary)?;
-    let mut case = super::input::load_case(o.path)?;
-    let input_mesh = case.mesh.clone();
+    refuse_existing(o.lengths_out)?;
+    let format = output::format_of(o.output, o.lengths_out)?;
+    let mut case = super::input::load_flip_case(o.path)?;
+    let input_mesh = case.mesh().clone();
+    // The exact input metric, for the replay of a rounded run (taken before flipping: the
+    // squared lengths of positions follow the mesh's edges).
+    let input_metric = (o.input_replay && prec != Prec::Exact && o.scale_factors.is_none())
+        .then(|| case.exact_metric());
     let kind = match o.flips {
         ArgFlipKind::Euclidean => FlipKind::Euclidean,
         ArgFlipKind::Ptolemy => FlipKind::Ptolemy,
     };
-    let bar = spinner(o.path, case.mesh.n_faces());
+    let bar = spinner(o.path, case.mesh().n_faces());
     let scale = match o.scale_factors {
-        Some(path) => Some(read_scale_factors(path, prec, case.mesh.n_vertices())?),
+        Some(path) => Some(read_scale_factors(path, prec, case.mesh().n_vertices())?),
         None => None,
     };
-    let result = match (prec, kind, &case.metric, &scale) {
+    // Cloned only for the exact rung, which consumes them.
+    let exact_lengths = if prec == Prec::Exact {
+        case.exact_lengths().cloned()
+    } else {
+        None
+    };
+    let result = match (prec, kind, exact_lengths, &scale) {
         (.., Some(u)) => flip_scaled(&mut case, u, kind),
-        (Prec::Exact, FlipKind::Ptolemy, Metric::Lengths(l), None) => {
-            let l = l.clone();
+        (Prec::Exact, FlipKind::Ptolemy, Some(l), None) => {
             let (report, lengths) =
-                flip_to_delaunay_exact(&mut case.mesh, l, EXACT_GUARD_BITS, &record())
+                flip_to_delaunay_exact(case.mesh_mut(), l, EXACT_GUARD_BITS, &record())
                     .map_err(|e| CliError::Input(format!("{}: {e}", o.path.display())))?;
             match lengths {
-                ExactLengths::Exact(v) => Ok((report, v)),
+                ExactLengths::Exact(v) => Ok((report, FlipValues::Exact(v))),
                 ExactLengths::Enclosed(_) => Err(CliError::Input(format!(
                     "{}: exact lengths outgrew {EXACT_GUARD_BITS} bits after {} flips; use a bit count such as --precision 1024",
                     o.path.display(),
@@ -225,20 +250,17 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     // Exact Ptolemy flipping has no rounding: its certificate is for the input metric.
     let exact_run = prec == Prec::Exact;
     let rounded_ok = report.all_certified_delaunay();
-    let replay = (rounded_ok && !exact_run && scale.is_none() && o.input_replay).then(|| {
-        let (lo, hi) = REPLAY_BITS;
-        replay_escalating(&input_mesh, &case.metric, &report.sequence, kind, lo, hi)
-    });
+    let replay = input_metric
+        .as_ref()
+        .filter(|_| rounded_ok && !exact_run)
+        .map(|metric| {
+            let (lo, hi) = REPLAY_BITS;
+            replay_escalating(&input_mesh, metric, &report.sequence, kind, lo, hi)
+        });
     let (certificate, not_for_input) = certificate_of(rounded_ok, exact_run, replay.as_ref());
-    let out_case = Surface {
-        name: case.name.clone(),
-        mesh: case.mesh.clone(),
-        metric: Metric::Lengths(lengths),
-        positions: None,
-    };
     // The output is a plain surface file (readable by `penner check`); the flip count
     // and the certificate go to standard error (and to the summary file).
-    let text = format!("{:#}\n", json::to_value(&out_case));
+    output::write_flipped(&case, &lengths, format, o.output, o.lengths_out)?;
     let what = certificate_words(
         certificate,
         not_for_input,
@@ -255,15 +277,15 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         },
     );
     if let Some(p) = o.output {
-        write_new(p, &text)?;
         eprintln!("{summary}; written to {}", p.display());
     } else {
-        emit(&text);
         eprintln!("{summary}");
     }
     if let Some(p) = o.summary {
-        let doc = summary_json(&report, kind, prec, certificate, not_for_input);
-        write_new(p, &format!("{doc:#}\n"))?;
+        write_summary(
+            p,
+            &summary_json(&report, kind, prec, certificate, not_for_input),
+        )?;
     }
     Ok(match (certificate, not_for_input) {
         (Certificate::InputMetric, _) | (Certificate::RoundedMetric, None) => code::HOLDS,
@@ -285,6 +307,18 @@ fn certificate_of(
         (Some((r, _)), true) if r.certified_delaunay() => (Certificate::InputMetric, Some(0)),
         (Some((r, _)), true) => (Certificate::RoundedMetric, Some(not_certified(r))),
     }
+}
+
+/// Write the `--summary` document to the new file `p` (never overwriting; exit 4 on a
+/// write error).
+fn write_summary(p: &Path, doc: &serde_json::Value) -> Result<(), CliError> {
+    let mut f = create_new(p)?;
+    std::io::Write::write_all(&mut f, format!("{doc:#}\n").as_bytes()).map_err(|e| {
+        CliError::Write {
+            path: p.to_path_buf(),
+            reason: e.to_string(),
+        }
+    })
 }
 
 /// The `--summary` document: flips, precision and what is certified.

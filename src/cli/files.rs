@@ -9,37 +9,54 @@ use std::path::{Path, PathBuf};
 /// or endless input cannot exhaust memory.
 pub const MAX_INPUT_BYTES: u64 = 256 << 20;
 
-/// Read a text file (or standard input for `-`), refusing files over
-/// [`MAX_INPUT_BYTES`] and bytes that are not UTF-8 (naming the line).
+/// Largest surface JSON file read that starts as penner writes them
+/// ([`penner::io::write::JSON_MARKER`]): penner's own output of a large mesh at high
+/// precision exceeds [`MAX_INPUT_BYTES`] and must read back.
+pub const MAX_PENNER_JSON_BYTES: u64 = 4 << 30;
+
+/// Read a text file (or standard input for `-`), refusing what is not a regular file
+/// (before opening it), files over [`MAX_INPUT_BYTES`] ([`MAX_PENNER_JSON_BYTES`] for
+/// surface JSON as penner writes it) and bytes that are not UTF-8 (naming the line).
 pub fn read_text(path: &Path) -> Result<String, CliError> {
     let read_err = |source| CliError::Read {
         path: path.to_path_buf(),
         source,
     };
     let mut bytes = Vec::new();
-    if path == Path::new("-") {
-        std::io::stdin()
-            .take(MAX_INPUT_BYTES + 1)
+    let marker = penner::io::write::JSON_MARKER.as_bytes();
+    let limit = if path == Path::new("-") {
+        let mut input = std::io::stdin().lock();
+        (&mut input)
+            .take(marker.len() as u64)
             .read_to_end(&mut bytes)
             .map_err(read_err)?;
+        let limit = input_limit(&bytes);
+        input
+            .take(limit + 1 - bytes.len() as u64)
+            .read_to_end(&mut bytes)
+            .map_err(read_err)?;
+        limit
     } else {
-        let file = std::fs::File::open(path).map_err(read_err)?;
-        let meta = file.metadata().map_err(read_err)?;
-        if meta.is_dir() {
-            return Err(CliError::Input(format!(
-                "{} is a directory, not a file",
-                path.display()
-            )));
-        }
-        file.take(MAX_INPUT_BYTES + 1)
+        penner::io::regular_file(path).map_err(|e| CliError::Input(e.to_string()))?;
+        let mut file = std::fs::File::open(path).map_err(read_err)?;
+        (&mut file)
+            .take(marker.len() as u64)
             .read_to_end(&mut bytes)
             .map_err(read_err)?;
-    }
-    if bytes.len() as u64 > MAX_INPUT_BYTES {
+        let limit = input_limit(&bytes);
+        if let Ok(meta) = file.metadata() {
+            bytes.reserve(meta.len().min(limit + 1) as usize);
+        }
+        file.take(limit + 1 - bytes.len() as u64)
+            .read_to_end(&mut bytes)
+            .map_err(read_err)?;
+        limit
+    };
+    if bytes.len() as u64 > limit {
         return Err(CliError::Input(format!(
             "{}: larger than the {} MiB input limit",
             path.display(),
-            MAX_INPUT_BYTES >> 20
+            limit >> 20
         )));
     }
     String::from_utf8(bytes).map_err(|e| {
@@ -52,9 +69,18 @@ pub fn read_text(path: &Path) -> Result<String, CliError> {
     })
 }
 
-/// Create `path` and write `contents`, refusing to overwrite an existing file.
-pub fn write_new(path: &Path, contents: &str) -> Result<(), CliError> {
-    let mut f = OpenOptions::new()
+/// The size limit of an input starting with `head`.
+fn input_limit(head: &[u8]) -> u64 {
+    if head == penner::io::write::JSON_MARKER.as_bytes() {
+        MAX_PENNER_JSON_BYTES
+    } else {
+        MAX_INPUT_BYTES
+    }
+}
+
+/// Create `path` for writing, refusing to overwrite an existing file.
+pub fn create_new(path: &Path) -> Result<std::fs::File, CliError> {
+    OpenOptions::new()
         .write(true)
         .create_new(true)
         .open(path)
@@ -65,12 +91,6 @@ pub fn write_new(path: &Path, contents: &str) -> Result<(), CliError> {
             } else {
                 e.to_string()
             },
-        })?;
-    f.write_all(contents.as_bytes())
-        .and_then(|()| f.flush())
-        .map_err(|e| CliError::Write {
-            path: path.to_path_buf(),
-            reason: e.to_string(),
         })
 }
 
@@ -110,9 +130,19 @@ pub fn write_fresh_failure(input: &Path, contents: &str) -> Result<PathBuf, CliE
     })
 }
 
-/// Print to standard output, ignoring a closed pipe (`penner … | head`).
-pub fn emit(text: &str) {
+/// Print to standard output. A failed write (a full disk, a closed standard output or
+/// pipe) is an output error (exit code 4): the output is incomplete.
+pub fn emit(text: &str) -> Result<(), CliError> {
     let mut out = std::io::stdout().lock();
-    let _ = out.write_all(text.as_bytes());
-    let _ = out.flush();
+    out.write_all(text.as_bytes())
+        .and_then(|()| out.flush())
+        .map_err(|e| stdout_error(&e))
+}
+
+/// The output error of a failed write to standard output.
+pub fn stdout_error(e: &std::io::Error) -> CliError {
+    CliError::Write {
+        path: PathBuf::from("standard output"),
+        reason: e.to_string(),
+    }
 }

@@ -2,7 +2,10 @@
 
 use super::error::CliError;
 use super::files::read_text;
-use penner::io::{json, obj, off, Surface};
+use penner::io::{json, obj, off, DecimalSurface, Metric, Surface};
+use penner::mesh::Mesh;
+use penner::scalar::Real;
+use rug::Rational;
 use std::path::Path;
 
 /// Read the surface at `path` (size-limited, UTF-8 checked), choosing the reader by the
@@ -29,4 +32,103 @@ pub fn load_case(path: &Path) -> Result<Surface, CliError> {
         s.name = shown;
     }
     Ok(s)
+}
+
+/// A surface loaded for flipping: exact (JSON) or with compact decimal positions (OBJ,
+/// OFF), whose lengths are computed per edge without building the exact metric.
+pub enum FlipCase {
+    /// A surface with an exact metric.
+    Exact(Surface),
+    /// A surface from positions (OBJ, OFF).
+    Decimal(DecimalSurface),
+}
+
+impl FlipCase {
+    /// The triangulation.
+    pub fn mesh(&self) -> &Mesh {
+        match self {
+            FlipCase::Exact(s) => &s.mesh,
+            FlipCase::Decimal(s) => &s.mesh,
+        }
+    }
+    /// The triangulation, to be flipped.
+    pub fn mesh_mut(&mut self) -> &mut Mesh {
+        match self {
+            FlipCase::Exact(s) => &mut s.mesh,
+            FlipCase::Decimal(s) => &mut s.mesh,
+        }
+    }
+    /// The name for messages.
+    pub fn name(&self) -> &str {
+        match self {
+            FlipCase::Exact(s) => &s.name,
+            FlipCase::Decimal(s) => &s.name,
+        }
+    }
+    /// The lengths in backend `T` (`Surface::lengths`).
+    pub fn lengths<T: Real + 'static>(&self, ctx: T::Ctx) -> Vec<T> {
+        match self {
+            FlipCase::Exact(s) => s.lengths(ctx),
+            FlipCase::Decimal(s) => s.lengths(ctx),
+        }
+    }
+    /// The exact lengths, when the metric is given by lengths (not squared lengths).
+    pub fn exact_lengths(&self) -> Option<&Vec<Rational>> {
+        match self {
+            FlipCase::Exact(Surface {
+                metric: Metric::Lengths(l),
+                ..
+            }) => Some(l),
+            _ => None,
+        }
+    }
+    /// The exact metric on the current mesh: the surface's own, or the squared lengths of
+    /// the exact positions (for OBJ and OFF input), edge by edge.
+    pub fn exact_metric(&self) -> Metric {
+        match self {
+            FlipCase::Exact(s) => s.metric.clone(),
+            FlipCase::Decimal(s) => {
+                Metric::SquaredLengths(s.mesh.edges().map(|e| s.squared_length(e)).collect())
+            }
+        }
+    }
+}
+
+/// Read the surface at `path` for flipping: OBJ and OFF into the compact form, JSON as in
+/// [`load_case`].
+pub fn load_flip_case(path: &Path) -> Result<FlipCase, CliError> {
+    let shown = path.display().to_string();
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    let reader: fn(&str) -> Result<DecimalSurface, penner::io::ReadError> = match ext.as_deref() {
+        Some("obj") => obj::read_decimal,
+        Some("off") => off::read_decimal,
+        _ => return load_case(path).map(FlipCase::Exact),
+    };
+    let text = read_text(path)?;
+    let mut s = reader(&text).map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
+    drop(text);
+    if s.name.is_empty() {
+        s.name = shown;
+    }
+    Ok(FlipCase::Decimal(s))
+}
+
+/// `case` with its metric replaced by the lengths file at `path` (a JSON array in the edge
+/// order of surface JSON, `penner::io::write::read_lengths`), validated; messages name the
+/// lengths file and the entry or face.
+pub fn with_lengths(case: Surface, path: &Path) -> Result<Surface, CliError> {
+    let shown = path.display().to_string();
+    let text = read_text(path)?;
+    let lengths = penner::io::write::read_lengths(&text, &case.mesh)
+        .map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
+    Surface::new(
+        case.name,
+        case.mesh,
+        Metric::Lengths(lengths),
+        case.positions,
+    )
+    .map_err(|e| CliError::Input(format!("{shown}: {e}")))
 }

@@ -7,6 +7,7 @@ mod delaunay;
 mod error;
 mod files;
 mod input;
+mod output;
 mod replay;
 mod report;
 
@@ -40,6 +41,7 @@ pub fn main() -> ExitCode {
             json,
             no_failure_files,
             negative_controls,
+            lengths,
         }) => check::run(&check::Options {
             path: &surface,
             precision: &precision,
@@ -47,6 +49,7 @@ pub fn main() -> ExitCode {
             json,
             no_failure_files,
             negative_controls,
+            lengths: lengths.as_deref(),
         }),
         Some(Command::Replay { file, json }) => replay::run(&file, json),
         Some(Command::Certify { claim }) => certify::run(&claim),
@@ -58,6 +61,7 @@ pub fn main() -> ExitCode {
             scale_factors,
             summary,
             no_input_replay,
+            lengths_out,
         }) => delaunay::run(&delaunay::Options {
             path: &surface,
             flips,
@@ -66,6 +70,7 @@ pub fn main() -> ExitCode {
             scale_factors: scale_factors.as_deref(),
             summary: summary.as_deref(),
             input_replay: !no_input_replay,
+            lengths_out: lengths_out.as_deref(),
         }),
     };
     match result {

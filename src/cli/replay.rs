@@ -30,9 +30,9 @@ pub fn run(path: &Path, json: bool) -> Result<u8, CliError> {
     if json {
         let mut doc = report::json(&rows);
         doc["still_fails"] = serde_json::Value::Bool(still);
-        emit(&format!("{doc:#}\n"));
+        emit(&format!("{doc:#}\n"))?;
     } else {
-        emit(&report::table(&rows));
+        emit(&report::table(&rows))?;
         emit(&format!(
             "{} at {}: {}\n",
             failure.check,
@@ -42,7 +42,7 @@ pub fn run(path: &Path, json: bool) -> Result<u8, CliError> {
             } else {
                 "no longer fails"
             }
-        ));
+        ))?;
     }
     Ok(match report::status(&rows) {
         report::Status::Holds => code::HOLDS,

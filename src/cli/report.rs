@@ -17,7 +17,7 @@ pub fn run(precision: &str, json: bool) -> Result<u8, CliError> {
     }
     let st = report::status(&rows);
     if json {
-        emit(&format!("{:#}\n", report::json(&rows)));
+        emit(&format!("{:#}\n", report::json(&rows)))?;
     } else {
         emit(&format!(
             "penner {}: {} check(s) × {} surface(s) × {} precision(s)\n\n",
@@ -25,9 +25,9 @@ pub fn run(precision: &str, json: bool) -> Result<u8, CliError> {
             checks.len(),
             corpus.len(),
             precs.len()
-        ));
-        emit(&report::table(&rows));
-        emit(&summary(&rows));
+        ))?;
+        emit(&report::table(&rows))?;
+        emit(&summary(&rows))?;
     }
     Ok(super::status_code(st))
 }

@@ -16,13 +16,17 @@
 //!                        "lengths": ["1", "1", "2"]}"#).is_err()); // degenerate
 //! ```
 
+pub mod decimal;
+pub mod decimal_surface;
 pub mod json;
 pub mod obj;
 pub mod off;
 pub mod strict_json;
 pub mod surface;
 mod text;
+pub mod write;
 
+pub use decimal_surface::DecimalSurface;
 pub use surface::{Metric, MetricError, Surface};
 
 use crate::mesh::MeshError;
@@ -39,6 +43,15 @@ pub enum ReadError {
         path: String,
         /// The operating system's message.
         message: String,
+    },
+    /// The path is not a regular file (a directory, a FIFO, a device, a socket): refused
+    /// before it is opened, since reading a FIFO or a device may block or never end.
+    #[error("{path} is {kind}, not a regular file")]
+    NotAFile {
+        /// The path.
+        path: String,
+        /// What it is (`a directory`, `a FIFO`, …).
+        kind: &'static str,
     },
     /// The bytes are not UTF-8 text (binary data).
     #[error("not UTF-8 text: invalid byte at offset {offset}")]
@@ -175,6 +188,7 @@ pub fn read_path(path: &Path) -> Result<Surface, ReadError> {
         Some("off") => off::read_bytes,
         _ => return Err(ReadError::UnknownFormat { path: shown }),
     };
+    regular_file(path)?;
     let bytes = std::fs::read(path).map_err(|e| ReadError::File {
         path: shown.clone(),
         message: e.to_string(),
@@ -184,4 +198,46 @@ pub fn read_path(path: &Path) -> Result<Surface, ReadError> {
         s.name = shown;
     }
     Ok(s)
+}
+
+/// Refuse a path that is not a regular file (after following symbolic links) without
+/// opening it: opening a FIFO blocks until a writer appears, and a device may never end.
+pub fn regular_file(path: &Path) -> Result<(), ReadError> {
+    let shown = || path.display().to_string();
+    let meta = std::fs::metadata(path).map_err(|e| ReadError::File {
+        path: shown(),
+        message: e.to_string(),
+    })?;
+    if meta.is_file() {
+        return Ok(());
+    }
+    let kind = if meta.is_dir() {
+        "a directory"
+    } else {
+        file_kind(&meta)
+    };
+    Err(ReadError::NotAFile {
+        path: shown(),
+        kind,
+    })
+}
+
+#[cfg(unix)]
+fn file_kind(meta: &std::fs::Metadata) -> &'static str {
+    use std::os::unix::fs::FileTypeExt;
+    let t = meta.file_type();
+    if t.is_fifo() {
+        "a FIFO"
+    } else if t.is_char_device() || t.is_block_device() {
+        "a device"
+    } else if t.is_socket() {
+        "a socket"
+    } else {
+        "not a regular file"
+    }
+}
+
+#[cfg(not(unix))]
+fn file_kind(_: &std::fs::Metadata) -> &'static str {
+    "a special file"
 }

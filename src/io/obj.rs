@@ -7,14 +7,22 @@
 //! `g`, `o`, `s`, `usemtl`, `mtllib`, `l` and `p` lines are ignored; any other statement
 //! is an error.
 
+use super::decimal::Coordinate;
+use super::decimal_surface::DecimalSurface;
 use super::surface::Surface;
 use super::text::{content_lines, coordinate, surface_from_soup};
 use super::{text_of, ReadError};
-use rug::Rational;
 
 /// Read an OBJ surface from bytes (refusing non-UTF-8 data).
 pub fn read_bytes(bytes: &[u8]) -> Result<Surface, ReadError> {
     read(text_of(bytes)?)
+}
+
+/// Read a surface from text into its compact form (exact coordinates, metric computed per
+/// edge): the fast path for large meshes. [`read`] is this followed by
+/// [`DecimalSurface::into_surface`].
+pub fn read_decimal(text: &str) -> Result<DecimalSurface, ReadError> {
+    read_soup(text)
 }
 
 /// Read an OBJ surface from text.
@@ -25,7 +33,11 @@ pub fn read_bytes(bytes: &[u8]) -> Result<Surface, ReadError> {
 /// assert_eq!(s.mesh.euler_characteristic(), 2);
 /// ```
 pub fn read(text: &str) -> Result<Surface, ReadError> {
-    let mut positions: Vec<[Rational; 3]> = Vec::new();
+    read_soup(text).map(DecimalSurface::into_surface)
+}
+
+fn read_soup(text: &str) -> Result<DecimalSurface, ReadError> {
+    let mut positions: Vec<[Coordinate; 3]> = Vec::new();
     let mut vertex_lines = Vec::new();
     // Corners as written (resolved after all vertices are known), with their line.
     let mut raw_faces: Vec<([i64; 3], usize, usize)> = Vec::new();
@@ -41,14 +53,15 @@ pub fn read(text: &str) -> Result<Surface, ReadError> {
                         message: format!("`v` needs 3 coordinates, found {}", args.len()),
                     });
                 }
-                let mut q: [Rational; 3] = Default::default();
-                for k in 0..3 {
-                    q[k] = coordinate(args[k], line)?;
-                }
+                let q = [
+                    coordinate(args[0], line)?,
+                    coordinate(args[1], line)?,
+                    coordinate(args[2], line)?,
+                ];
                 for extra in &args[3..] {
                     coordinate(extra, line)?;
                 }
-                if args.len() == 4 && coordinate(args[3], line)? != 1 {
+                if args.len() == 4 && coordinate(args[3], line)?.to_rational() != 1 {
                     return Err(ReadError::Syntax {
                         line,
                         message: "homogeneous coordinate w ≠ 1 is not supported".into(),

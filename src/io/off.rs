@@ -5,14 +5,22 @@
 //! are refused ([`ReadError::NotTriangle`]); `COFF`, `NOFF` and other variants are not
 //! read. Counts are checked against the file size before anything is allocated.
 
+use super::decimal::Coordinate;
+use super::decimal_surface::DecimalSurface;
 use super::surface::Surface;
 use super::text::{content_lines, coordinate, surface_from_soup};
 use super::{text_of, ReadError};
-use rug::Rational;
 
 /// Read an OFF surface from bytes (refusing non-UTF-8 data).
 pub fn read_bytes(bytes: &[u8]) -> Result<Surface, ReadError> {
     read(text_of(bytes)?)
+}
+
+/// Read a surface from text into its compact form (exact coordinates, metric computed per
+/// edge): the fast path for large meshes. [`read`] is this followed by
+/// [`DecimalSurface::into_surface`].
+pub fn read_decimal(text: &str) -> Result<DecimalSurface, ReadError> {
+    read_soup(text)
 }
 
 fn count(tok: Option<&str>, line: usize, what: &str) -> Result<u64, ReadError> {
@@ -37,11 +45,16 @@ fn count(tok: Option<&str>, line: usize, what: &str) -> Result<u64, ReadError> {
 /// assert_eq!(s.mesh.n_faces(), 4);
 /// ```
 pub fn read(text: &str) -> Result<Surface, ReadError> {
-    let last_line = text.lines().count().max(1);
+    read_soup(text).map(DecimalSurface::into_surface)
+}
+
+fn read_soup(text: &str) -> Result<DecimalSurface, ReadError> {
+    // Only an error at the end of the file needs the last line's number.
+    let last = || text.lines().count().max(1);
     let mut lines = content_lines(text).peekable();
     let Some((hline, header)) = lines.next() else {
         return Err(ReadError::Truncated {
-            line: last_line,
+            line: last(),
             expected: "the `OFF` header".into(),
         });
     };
@@ -55,7 +68,7 @@ pub fn read(text: &str) -> Result<Surface, ReadError> {
     let rest: Vec<&str> = toks.collect();
     let (cline, counts): (usize, Vec<&str>) = if rest.is_empty() {
         let (l, c) = lines.next().ok_or_else(|| ReadError::Truncated {
-            line: last_line,
+            line: last(),
             expected: "the counts line `V F E`".into(),
         })?;
         (l, c.split_ascii_whitespace().collect())
@@ -84,11 +97,11 @@ pub fn read(text: &str) -> Result<Surface, ReadError> {
             count: nf,
         });
     }
-    let mut positions: Vec<[Rational; 3]> = Vec::with_capacity(nv as usize);
+    let mut positions: Vec<[Coordinate; 3]> = Vec::with_capacity(nv as usize);
     let mut vertex_lines = Vec::with_capacity(nv as usize);
     for i in 0..nv {
         let (line, l) = lines.next().ok_or_else(|| ReadError::Truncated {
-            line: last_line,
+            line: last(),
             expected: format!("vertex {} of {nv}", i + 1),
         })?;
         positions.push(vertex_line(line, l)?);
@@ -98,7 +111,7 @@ pub fn read(text: &str) -> Result<Surface, ReadError> {
     let mut face_lines = Vec::with_capacity(nf as usize);
     for i in 0..nf {
         let (line, l) = lines.next().ok_or_else(|| ReadError::Truncated {
-            line: last_line,
+            line: last(),
             expected: format!("face {} of {nf}", i + 1),
         })?;
         let tri = face_line(line, l, nv)?;
@@ -118,18 +131,21 @@ fn short(s: &str) -> String {
     s.chars().take(40).collect()
 }
 
-fn vertex_line(line: usize, l: &str) -> Result<[Rational; 3], ReadError> {
-    let t: Vec<&str> = l.split_ascii_whitespace().collect();
-    if t.len() != 3 {
+fn vertex_line(line: usize, l: &str) -> Result<[Coordinate; 3], ReadError> {
+    let mut t = l.split_ascii_whitespace();
+    let (Some(x), Some(y), Some(z), None) = (t.next(), t.next(), t.next(), t.next()) else {
         return Err(ReadError::Syntax {
             line,
-            message: format!("a vertex line needs 3 coordinates, found {}", t.len()),
+            message: format!(
+                "a vertex line needs 3 coordinates, found {}",
+                l.split_ascii_whitespace().count()
+            ),
         });
-    }
+    };
     Ok([
-        coordinate(t[0], line)?,
-        coordinate(t[1], line)?,
-        coordinate(t[2], line)?,
+        coordinate(x, line)?,
+        coordinate(y, line)?,
+        coordinate(z, line)?,
     ])
 }
 

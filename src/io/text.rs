@@ -1,11 +1,12 @@
 //! Shared pieces of the line-based readers (OBJ, OFF): comment stripping, exact
-//! coordinates, and turning a face soup with exact positions into a located [`Surface`].
+//! coordinates, and turning a face soup with exact positions into a located
+//! [`DecimalSurface`].
 
-use super::surface::{squared_lengths_from_positions, Metric, MetricError, Surface};
+use super::decimal::{parse_coordinate, Coordinate};
+use super::decimal_surface::DecimalSurface;
+use super::surface::MetricError;
 use super::ReadError;
 use crate::mesh::{Mesh, MeshError};
-use crate::scalar::parse_rational;
-use rug::Rational;
 
 /// Non-empty lines with comments (`#` to end of line) removed, with 1-based line numbers.
 pub fn content_lines(text: &str) -> impl Iterator<Item = (usize, &str)> {
@@ -16,8 +17,8 @@ pub fn content_lines(text: &str) -> impl Iterator<Item = (usize, &str)> {
 }
 
 /// An exact coordinate at `line`.
-pub fn coordinate(tok: &str, line: usize) -> Result<Rational, ReadError> {
-    parse_rational(tok).map_err(|source| ReadError::Number {
+pub fn coordinate(tok: &str, line: usize) -> Result<Coordinate, ReadError> {
+    parse_coordinate(tok).map_err(|source| ReadError::Number {
         element: format!("line {line}"),
         source,
     })
@@ -26,11 +27,11 @@ pub fn coordinate(tok: &str, line: usize) -> Result<Rational, ReadError> {
 /// Build the surface from faces (0-based vertex ids) and exact positions, naming the line
 /// of the face or vertex an error concerns.
 pub fn surface_from_soup(
-    positions: Vec<[Rational; 3]>,
+    positions: Vec<[Coordinate; 3]>,
     faces: &[[u32; 3]],
     vertex_lines: &[usize],
     face_lines: &[usize],
-) -> Result<Surface, ReadError> {
+) -> Result<DecimalSurface, ReadError> {
     let vline = |v: u32| vertex_lines.get(v as usize).copied().unwrap_or(0);
     let fline = |f: u32| face_lines.get(f as usize).copied().unwrap_or(0);
     let nv = u32::try_from(positions.len()).map_err(|_| ReadError::HugeCount {
@@ -54,12 +55,11 @@ pub fn surface_from_soup(
         };
         ReadError::Mesh { element, source: e }
     })?;
-    let metric = Metric::SquaredLengths(squared_lengths_from_positions(&mesh, &positions));
     let ends: Vec<(u32, u32)> = mesh
         .edges()
         .map(|e| (mesh.tail(e.halfedge()).0, mesh.tip(e.halfedge()).0))
         .collect();
-    Surface::new("", mesh, metric, Some(positions)).map_err(|source| {
+    DecimalSurface::new("", mesh, positions).map_err(|source| {
         let element = match &source {
             MetricError::TriangleInequality { face, .. } => format!("line {}", fline(*face)),
             MetricError::NonPositive { edge, .. } => {

@@ -2,7 +2,6 @@
 //! ambiguous (loops, multi-edges, self-glued faces), from an explicit gluing of face sides.
 
 use super::{HalfEdge, Mesh, Vertex, NO_FACE};
-use std::collections::HashMap;
 
 /// A side of a face: side `s` of face `f` runs from corner `s` to corner `(s+1) mod 3`.
 pub type FaceSide = (u32, u8);
@@ -103,30 +102,78 @@ impl Mesh {
     /// ```
     pub fn from_faces(n_vertices: u32, faces: &[[u32; 3]]) -> Result<Mesh, MeshError> {
         check_faces(n_vertices, faces)?;
-        let mut by_pair: HashMap<(u32, u32), FaceSide> = HashMap::new();
-        for (f, tri) in faces.iter().enumerate() {
-            for s in 0..3u8 {
-                let (a, b) = (tri[s as usize], tri[(s as usize + 1) % 3]);
+        let side = |p: usize| -> (u32, u32) {
+            let t = faces[p / 3];
+            (t[p % 3], t[(p % 3 + 1) % 3])
+        };
+        let n_sides = 3 * faces.len();
+        // Sides bucketed by tail vertex (a counting sort), each bucket sorted by (tip,
+        // position): equal directed sides are adjacent, and a side's opposite is found by
+        // binary search in its tip's bucket. Linear memory, no hashing.
+        let mut start = vec![0u32; n_vertices as usize + 1];
+        for p in 0..n_sides {
+            start[side(p).0 as usize + 1] += 1;
+        }
+        for v in 0..n_vertices as usize {
+            start[v + 1] += start[v];
+        }
+        let mut fill = start.clone();
+        let mut by_tail = vec![(0u32, 0u32); n_sides];
+        for p in 0..n_sides {
+            let (a, b) = side(p);
+            let slot = &mut fill[a as usize];
+            by_tail[*slot as usize] = (b, p as u32);
+            *slot += 1;
+        }
+        // The first error in face order, as a scan inserting side after side finds it: a
+        // loop, or the second occurrence of a directed side.
+        let mut first: Option<(u32, MeshError)> = None;
+        let mut keep_first = |pos: u32, e: MeshError| {
+            if first.as_ref().is_none_or(|(q, _)| pos < *q) {
+                first = Some((pos, e));
+            }
+        };
+        for a in 0..n_vertices {
+            let lo = start[a as usize] as usize;
+            let hi = start[a as usize + 1] as usize;
+            by_tail[lo..hi].sort_unstable();
+            for w in by_tail[lo..hi].windows(2) {
+                if w[0].0 == w[1].0 {
+                    keep_first(w[1].1, MeshError::NonManifoldEdge { a, b: w[0].0 });
+                }
+            }
+            for &(b, p) in &by_tail[lo..hi] {
                 if a == b {
-                    return Err(MeshError::AmbiguousLoop {
-                        face: f as u32,
-                        vertex: a,
-                    });
-                }
-                if by_pair.insert((a, b), (f as u32, s)).is_some() {
-                    return Err(MeshError::NonManifoldEdge { a, b });
+                    keep_first(
+                        p,
+                        MeshError::AmbiguousLoop {
+                            face: p / 3,
+                            vertex: a,
+                        },
+                    );
                 }
             }
         }
+        if let Some((_, e)) = first {
+            return Err(e);
+        }
+        // Glue each side a→b (a < b) to the side b→a, in order of the first side: the
+        // list comes out sorted.
+        let bucket = |a: u32| &by_tail[start[a as usize] as usize..start[a as usize + 1] as usize];
         let mut gluing = Vec::new();
-        for (&(a, b), &side) in &by_pair {
+        for p in 0..n_sides {
+            let (a, b) = side(p);
             if a < b {
-                if let Some(&other) = by_pair.get(&(b, a)) {
-                    gluing.push((side, other));
+                let twins = bucket(b);
+                if let Ok(k) = twins.binary_search_by(|&(t, _)| t.cmp(&a)) {
+                    let q = twins[k].1 as usize;
+                    gluing.push((
+                        ((p / 3) as u32, (p % 3) as u8),
+                        ((q / 3) as u32, (q % 3) as u8),
+                    ));
                 }
             }
         }
-        gluing.sort_unstable();
         Mesh::from_gluing(n_vertices, faces, &gluing)
     }
 

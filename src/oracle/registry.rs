@@ -8,6 +8,7 @@ use super::precision::Prec;
 use crate::io::Surface;
 use crate::theorems::{Settings, Verdict};
 use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::Arc;
 use std::time::Instant;
 
 /// One runnable check of the catalogue.
@@ -105,8 +106,8 @@ pub enum Outcome {
 /// One row of a report: one check on one case at one precision.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Row {
-    /// The case's name.
-    pub case: String,
+    /// The case's name, shared by every row of the case (stored once however many rows).
+    pub case: Arc<str>,
     /// Catalogue ID.
     pub id: &'static str,
     /// Short statement.
@@ -127,16 +128,17 @@ pub struct Row {
 /// from 1 ([`Surface::normalized_scale`], proofs/B40 "Range"): verdicts are about the
 /// user's metric, since every statement is scale invariant.
 pub fn run_one(check: &Check, case: &Surface, prec: Prec, settings: &Settings) -> Option<Row> {
+    let name: Arc<str> = Arc::from(case.name.as_str());
     match case.normalized_scale() {
-        Some((scaled, _)) => run_one_as_is(check, case, &scaled, prec, settings),
-        None => run_one_as_is(check, case, case, prec, settings),
+        Some((scaled, _)) => run_one_as_is(check, &name, &scaled, prec, settings),
+        None => run_one_as_is(check, &name, case, prec, settings),
     }
 }
 
-/// [`run_one`] on `input` (the case or its rescaled copy), reported under `case`'s name.
+/// [`run_one`] on `input` (the case or its rescaled copy), reported under `name`.
 fn run_one_as_is(
     check: &Check,
-    case: &Surface,
+    name: &Arc<str>,
     input: &Surface,
     prec: Prec,
     settings: &Settings,
@@ -150,7 +152,7 @@ fn run_one_as_is(
         Err(payload) => Outcome::Crashed(panic_message(payload.as_ref())),
     };
     Some(Row {
-        case: case.name.clone(),
+        case: Arc::clone(name),
         id: check.id,
         title: check.title,
         precision: prec,
@@ -180,6 +182,7 @@ pub fn run_case_with(
     use rayon::prelude::*;
     let scaled = case.normalized_scale().map(|(s, _)| s);
     let input = scaled.as_ref().unwrap_or(case);
+    let name: Arc<str> = Arc::from(case.name.as_str());
     let tasks: Vec<(&Check, Prec)> = checks
         .iter()
         .flat_map(|c| precs.iter().map(move |&p| (c, p)))
@@ -187,7 +190,7 @@ pub fn run_case_with(
     let rows: Vec<Option<Row>> = tasks
         .par_iter()
         .map(|&(check, p)| {
-            let row = run_one_as_is(check, case, input, p, settings);
+            let row = run_one_as_is(check, &name, input, p, settings);
             if let Some(r) = &row {
                 done(r);
             }

@@ -154,7 +154,7 @@ pub fn table(rows: &[Row]) -> String {
                 *w = (*w).max(s.chars().count());
             }
         }
-        let _ = writeln!(out, "{case}");
+        let _ = writeln!(out, "{}", shown_name(case));
         let line = |cols: &[&str]| {
             let mut l = String::from(" ");
             for (k, s) in cols.iter().enumerate() {
@@ -178,6 +178,22 @@ pub fn table(rows: &[Row]) -> String {
     out
 }
 
+/// Longest case name printed in full in a report; longer names are cut there (with the
+/// byte count), so a huge name cannot multiply into every row.
+pub const SHOWN_NAME_CHARS: usize = 256;
+
+/// `name`, or its first [`SHOWN_NAME_CHARS`] characters and the size of the rest.
+pub fn shown_name(name: &str) -> std::borrow::Cow<'_, str> {
+    match name.char_indices().nth(SHOWN_NAME_CHARS) {
+        None => std::borrow::Cow::Borrowed(name),
+        Some((cut, _)) => std::borrow::Cow::Owned(format!(
+            "{}… ({} more bytes)",
+            &name[..cut],
+            name.len() - cut
+        )),
+    }
+}
+
 /// One row as JSON: case, theorem, title, precision, verdict (with its fields), time.
 pub fn row_json(r: &Row) -> Value {
     let verdict = match &r.outcome {
@@ -185,7 +201,7 @@ pub fn row_json(r: &Row) -> Value {
         Outcome::Crashed(m) => json!({ "verdict": "error", "message": m }),
     };
     json!({
-        "case": r.case,
+        "case": shown_name(&r.case),
         "theorem": r.id,
         "title": r.title,
         "precision": r.precision.to_string(),

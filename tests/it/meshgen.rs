@@ -77,6 +77,27 @@ impl Embedded {
             }
         }
     }
+    /// Move every vertex along its position vector: `p ← p·(1 + amount·U(−1, 1))`, one
+    /// uniform draw per vertex from a seeded ChaCha stream (radial noise on a sphere).
+    pub fn jitter_radial(&mut self, amount: f64, seed: u64) {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        for p in &mut self.pos {
+            let r = 1.0 + amount * rng.gen_range(-1.0..1.0);
+            *p = p.map(|c| c * r);
+        }
+    }
+    /// Write as OFF to `out`: coordinates with 17 significant digits (`{:.16e}`, which
+    /// round-trips every binary64 value), faces `3 a b c`, 0-based.
+    pub fn write_off(&self, out: &mut impl std::io::Write) -> std::io::Result<()> {
+        writeln!(out, "OFF\n{} {} 0", self.pos.len(), self.faces.len())?;
+        for p in &self.pos {
+            writeln!(out, "{:.16e} {:.16e} {:.16e}", p[0], p[1], p[2])?;
+        }
+        for f in &self.faces {
+            writeln!(out, "3 {} {} {}", f[0], f[1], f[2])?;
+        }
+        Ok(())
+    }
     /// Write as Wavefront OBJ.
     pub fn obj(&self) -> String {
         use std::fmt::Write;
