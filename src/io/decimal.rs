@@ -211,25 +211,46 @@ pub fn non_degenerate(
     let (m, _) = common_scale([
         &a[0], &a[1], &a[2], &b[0], &b[1], &b[2], &c[0], &c[1], &c[2],
     ])?;
-    let u = [
-        m[3].checked_sub(m[0])?,
-        m[4].checked_sub(m[1])?,
-        m[5].checked_sub(m[2])?,
-    ];
-    let v = [
-        m[6].checked_sub(m[0])?,
-        m[7].checked_sub(m[1])?,
-        m[8].checked_sub(m[2])?,
-    ];
-    for (i, j) in [(1, 2), (2, 0), (0, 1)] {
-        let w = u[i]
-            .checked_mul(v[j])?
-            .checked_sub(u[j].checked_mul(v[i])?)?;
-        if w != 0 {
-            return Some(true);
+    let narrow = || -> Option<bool> {
+        let u = [
+            m[3].checked_sub(m[0])?,
+            m[4].checked_sub(m[1])?,
+            m[5].checked_sub(m[2])?,
+        ];
+        let v = [
+            m[6].checked_sub(m[0])?,
+            m[7].checked_sub(m[1])?,
+            m[8].checked_sub(m[2])?,
+        ];
+        for (i, j) in [(1, 2), (2, 0), (0, 1)] {
+            let w = u[i]
+                .checked_mul(v[j])?
+                .checked_sub(u[j].checked_mul(v[i])?)?;
+            if w != 0 {
+                return Some(true);
+            }
         }
-    }
-    Some(false)
+        Some(false)
+    };
+    // Past i128 (mantissas aligned across distant exponents): the same cross product in
+    // big integers, still exact and without a rational's gcd.
+    narrow().or_else(|| {
+        let z = |k: usize| Integer::from(m[k]);
+        let u = [z(3) - z(0), z(4) - z(1), z(5) - z(2)];
+        let v = [z(6) - z(0), z(7) - z(1), z(8) - z(2)];
+        Some(
+            [(1, 2), (2, 0), (0, 1)]
+                .iter()
+                .any(|&(i, j)| Integer::from(&u[i] * &v[j]) != Integer::from(&u[j] * &v[i])),
+        )
+    })
+}
+
+/// Whether two points differ, decided on their mantissas aligned to a common exponent
+/// (`None` when a coordinate is not a decimal or the alignment overflows `i128`).
+pub fn distinct_points(a: &[Coordinate; 3], b: &[Coordinate; 3]) -> Option<bool> {
+    let (m, _) = common_scale([&a[0], &a[1], &a[2], &b[0], &b[1], &b[2]])?;
+    Some((0..3).any(|k| m[3 + k] != m[k]))
 }
 
 /// The exact rational `n · 10^e`.

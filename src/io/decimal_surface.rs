@@ -7,7 +7,8 @@
 //! [`Surface::lengths`] of that surface bit for bit.
 
 use super::decimal::{
-    decimal_to_f64, decimal_to_rational, non_degenerate, squared_distance, Coordinate,
+    common_scale, decimal_to_f64, decimal_to_rational, distinct_points, non_degenerate,
+    squared_distance, Coordinate,
 };
 use super::surface::{heron16, Metric, MetricError, Surface};
 use crate::mesh::{Edge, Face, Mesh};
@@ -49,9 +50,14 @@ impl DecimalSurface {
             });
         }
         for e in s.mesh.edges() {
-            let zero = match s.squared_decimal(e) {
-                Some((n, _)) => n == 0,
-                None => s.squared_length(e).cmp0() != Ordering::Greater,
+            let zero = if let Some((n, _)) = s.squared_decimal(e) {
+                n == 0
+            } else {
+                let (a, b) = s.ends(e);
+                match distinct_points(a, b) {
+                    Some(distinct) => !distinct,
+                    None => s.squared_length(e).cmp0() != Ordering::Greater,
+                }
             };
             if zero {
                 return Err(MetricError::NonPositive {
@@ -102,6 +108,24 @@ impl DecimalSurface {
         squared_distance(a, b)
     }
 
+    /// `ℓ_e²` rounded to the nearest `f64` when `N` of `N·10^(2E)` outgrows `u128` (e.g.
+    /// coordinates near 0 written with an exponent, whose mantissas are aligned to the
+    /// smallest exponent): `N` exact as a big integer, its decimal digits then read by the
+    /// standard library's correctly rounded parser — the value `f64::from_rational` gives
+    /// for a normal result, without a rational's gcd. `None` when a coordinate is not a
+    /// decimal or the result is not a normal `f64` (the exact path decides).
+    fn squared_f64_wide(&self, e: Edge) -> Option<f64> {
+        let (a, b) = self.ends(e);
+        let (m, k) = common_scale([&a[0], &a[1], &a[2], &b[0], &b[1], &b[2]])?;
+        let mut n = rug::Integer::new();
+        for i in 0..3 {
+            let d = rug::Integer::from(m[3 + i]) - m[i];
+            n += rug::Integer::from(&d * &d);
+        }
+        let x: f64 = format!("{n}e{}", 2 * i64::from(k)).parse().ok()?;
+        x.is_normal().then_some(x)
+    }
+
     /// The exact squared length `ℓ_e² = |p_tip − p_tail|²`.
     pub fn squared_length(&self, e: Edge) -> Rational {
         if let Some((n, k)) = self.squared_decimal(e) {
@@ -124,6 +148,7 @@ impl DecimalSurface {
             .map(|e| {
                 self.squared_decimal(e)
                     .and_then(|(n, k)| decimal_to_f64(n, 2 * k))
+                    .or_else(|| self.squared_f64_wide(e))
                     .unwrap_or_else(|| f64::from_rational(&self.squared_length(e), ()))
                     .sqrt()
             })

@@ -13,6 +13,7 @@ use penner::scalar::{parse_rational, Dd, Mpfr, Real};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rug::{Integer, Rational};
+use std::fmt::Write as _;
 
 /// A random literal of the decimal grammar, or near it: signs, digit runs of 0–25
 /// characters, optional point and exponent, and now and then a malformed piece.
@@ -376,4 +377,57 @@ fn degenerate_and_coincident_vertices_give_the_exact_errors() {
 
 fn p256() -> penner::scalar::Precision {
     penner::scalar::Precision::new(256).expect("valid precision")
+}
+
+/// A sphere written with `%.17g`-style literals: coordinates below 10⁻⁴ in exponent form,
+/// so that aligning mantissas to the smallest exponent outgrows `u128` for the squared
+/// lengths (the wide-integer path of the `f64` lengths).
+fn sphere_with_tiny_coordinates(n: u32) -> String {
+    let mut text = String::new();
+    let (nv, nf) = (n * n + 2, 2 * n * n);
+    let _ = writeln!(text, "OFF\n{nv} {nf} 0");
+    // A UV sphere: poles plus n rings of n vertices; some coordinates tiny but nonzero.
+    let mut pts = vec![[0.0_f64, 0.0, 1.0]];
+    for r in 0..n {
+        let th = std::f64::consts::PI * f64::from(r + 1) / f64::from(n + 1);
+        for k in 0..n {
+            let ph = 2.0 * std::f64::consts::PI * f64::from(k) / f64::from(n) + 1e-6 * f64::from(r);
+            pts.push([th.sin() * ph.cos(), th.sin() * ph.sin(), th.cos()]);
+        }
+    }
+    pts.push([0.0, 1.2345678901234567e-5, -1.0]);
+    for p in &pts {
+        let _ = writeln!(text, "{:e} {:e} {:e}", p[0], p[1], p[2]);
+    }
+    let v = |r: u32, k: u32| 1 + r * n + (k % n);
+    for k in 0..n {
+        let _ = writeln!(text, "3 0 {} {}", v(0, k), v(0, k + 1));
+        let _ = writeln!(text, "3 {} {} {}", nv - 1, v(n - 1, k + 1), v(n - 1, k));
+    }
+    for r in 0..n - 1 {
+        for k in 0..n {
+            let _ = writeln!(text, "3 {} {} {}", v(r, k), v(r + 1, k), v(r + 1, k + 1));
+            let _ = writeln!(text, "3 {} {} {}", v(r, k), v(r + 1, k + 1), v(r, k + 1));
+        }
+    }
+    text
+}
+
+#[test]
+fn f64_lengths_past_u128_equal_the_exact_conversion() {
+    let text = sphere_with_tiny_coordinates(12);
+    let exact = exact_off(&text).unwrap();
+    let compact = off::read_decimal(&text).unwrap();
+    let l64 = compact.lengths::<f64>(());
+    let e64: Vec<f64> = exact.lengths(());
+    assert_eq!(
+        l64.iter().map(|x| x.to_bits()).collect::<Vec<_>>(),
+        e64.iter().map(|x| x.to_bits()).collect::<Vec<_>>()
+    );
+    // The family does reach the wide path: some squared length does not fit u128 after
+    // alignment (a coordinate of 17 digits at 10⁻⁵ next to one at 10⁻¹).
+    assert!(
+        text.contains("e-5") || text.contains("e-6"),
+        "no tiny coordinate"
+    );
 }
