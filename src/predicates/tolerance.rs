@@ -1,6 +1,6 @@
 //! Numerical comparisons against a derived tolerance, decided exactly on the stored value.
 
-use crate::scalar::Real;
+use crate::scalar::{Real, Sign};
 use rug::Rational;
 
 /// Whether `|x| ≤ tol`, decided exactly on the rational value of `x` (no rounding in the
@@ -42,4 +42,44 @@ pub fn abs_at_most_scaled<T: Real>(x: &T, tol: f64, shift: u32) -> Option<bool> 
     }
     let t = Rational::from_f64(tol)? >> shift;
     Some(q.abs() <= t)
+}
+
+/// The sign of `x`, decided exactly on its stored value (`None` when not finite).
+///
+/// ```
+/// use penner::predicates::tolerance::sign_exact;
+/// use penner::scalar::Sign;
+/// assert_eq!(sign_exact(&-1e-300_f64), Some(Sign::Negative));
+/// assert_eq!(sign_exact(&f64::NAN), None);
+/// ```
+pub fn sign_exact<T: Real>(x: &T) -> Option<Sign> {
+    Some(Sign::of_ordering(x.to_rational()?.cmp0()))
+}
+
+/// The sign of the exact quantity whose computed value `x` is within `tol·2⁻ˢ` of it
+/// (`tol` scaled as in [`abs_at_most_scaled`], proofs/B40 "Range"): `Positive` when
+/// `x > tol·2⁻ˢ`, `Negative` when `x < −tol·2⁻ˢ`, `Zero` in between (the sign is not
+/// decided); `None` when `x` is not finite or `tol` is not a finite nonnegative number.
+///
+/// ```
+/// use penner::predicates::tolerance::sign_beyond;
+/// use penner::scalar::Sign;
+/// assert_eq!(sign_beyond(&1.0_f64, 0.5, 0), Some(Sign::Positive));
+/// assert_eq!(sign_beyond(&0.25_f64, 0.5, 0), Some(Sign::Zero));
+/// assert_eq!(sign_beyond(&0.25_f64, 0.5, 2), Some(Sign::Positive));
+/// assert_eq!(sign_beyond(&-1.0_f64, 0.5, 0), Some(Sign::Negative));
+/// ```
+pub fn sign_beyond<T: Real>(x: &T, tol: f64, shift: u32) -> Option<Sign> {
+    let q = x.to_rational()?;
+    if !(tol.is_finite() && tol >= 0.0) {
+        return None;
+    }
+    let t = Rational::from_f64(tol)? >> shift;
+    Some(if q > t {
+        Sign::Positive
+    } else if q < -t {
+        Sign::Negative
+    } else {
+        Sign::Zero
+    })
 }

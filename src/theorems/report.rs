@@ -2,8 +2,9 @@
 
 use super::bounds::eps_shift;
 use super::verdict::{Verdict, Witness};
-use crate::predicates::tolerance::abs_at_most_scaled;
+use crate::predicates::tolerance::{abs_at_most_scaled, sign_beyond};
 use crate::scalar::Real;
+use crate::scalar::Sign;
 
 /// Accumulates the outcome of every comparison of a check, so that a failing check lists
 /// all failing elements.
@@ -71,22 +72,15 @@ impl Tally {
     /// `tol`, or a non-finite `x̂`) the element is undecided.
     pub fn positive<T: Real>(&mut self, element: impl Into<String>, what: &str, x: &T, tol: f64) {
         let v = x.approx_f64();
-        let (Some(q), true) = (x.to_rational(), tol.is_finite() && tol >= 0.0) else {
-            self.undecided(element, format!("{what}: no error bound or not finite"), v);
-            return;
-        };
-        let Some(t) = rug::Rational::from_f64(tol) else {
-            self.undecided(element, format!("{what}: no error bound"), v);
-            return;
-        };
-        let t = t >> self.shift;
-        if q > t {
-            return;
-        }
-        if q < -t {
-            self.fail(element, format!("{what} < 0 beyond its error bound"), v);
-        } else {
-            self.undecided(element, format!("{what}: sign within its error bound"), v);
+        match sign_beyond(x, tol, self.shift) {
+            Some(Sign::Positive) => {}
+            Some(Sign::Negative) => {
+                self.fail(element, format!("{what} < 0 beyond its error bound"), v);
+            }
+            Some(Sign::Zero) => {
+                self.undecided(element, format!("{what}: sign within its error bound"), v);
+            }
+            None => self.undecided(element, format!("{what}: no error bound or not finite"), v),
         }
     }
 

@@ -15,7 +15,9 @@ use super::t05_semidefinite::{faces_semidefinite, nonnegative_weights};
 use super::verdict::{Settings, Verdict};
 use crate::geometry::laplacian::{cotan_laplacian, SparseMatrix};
 use crate::mesh::Mesh;
+use crate::predicates::tolerance::sign_beyond;
 use crate::scalar::Real;
+use crate::scalar::Sign;
 use rug::Rational;
 
 /// T05 (matrix part), numerical: assembles [`cotan_laplacian`] and checks it as
@@ -197,10 +199,7 @@ fn semidefinite<T: Real>(
         d_abs[k] = df.abs();
         let acc: f64 = (0..k).map(|j| l[k][j] * l[k][j] * d_abs[j]).sum::<f64>() + df.abs();
         let tau = settings.slack * SAFETY * (m as f64 + 1.0) * e * acc;
-        let pivot_ok = match (d.to_rational(), Rational::from_f64(tau)) {
-            (Some(dq), Some(t)) => dq > (t >> shift),
-            _ => false,
-        };
+        let pivot_ok = sign_beyond(&d, tau, shift) == Some(Sign::Positive);
         if !pivot_ok {
             refute_or_undecided(lap, &keep, &l, k, e, shift, tally, tau, df);
             return;

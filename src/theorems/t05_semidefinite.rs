@@ -23,14 +23,14 @@ use super::verdict::Settings;
 use crate::geometry::cotan::halfedge_cotans;
 use crate::geometry::laplacian::SparseMatrix;
 use crate::mesh::Mesh;
-use crate::scalar::Real;
-use std::cmp::Ordering;
+use crate::predicates::tolerance::sign_exact;
+use crate::scalar::{Real, Sign};
 
 /// Whether every off-diagonal entry of `lap` is `≥ 0`, decided exactly on the stored values
 /// (`None` when an entry is not finite).
 pub fn nonnegative_weights<T: Real>(lap: &SparseMatrix<T>) -> Option<bool> {
     for (i, j, v) in lap.entries() {
-        if i != j && v.to_rational()?.cmp0() == Ordering::Less {
+        if i != j && sign_exact(v)? == Sign::Negative {
             return Some(false);
         }
     }

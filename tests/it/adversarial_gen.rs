@@ -550,19 +550,7 @@ pub fn grids(n: u32, seed: u64) -> Vec<Surface> {
             })
         })
         .collect();
-    let mut faces = Vec::new();
-    for j in 0..n {
-        for i in 0..n {
-            let (a, b, c, d) = (vid(i, j), vid(i + 1, j), vid(i + 1, j + 1), vid(i, j + 1));
-            if rng.gen_bool(0.5) {
-                faces.push([a, b, c]);
-                faces.push([a, c, d]);
-            } else {
-                faces.push([a, b, d]);
-                faces.push([b, c, d]);
-            }
-        }
-    }
+    let faces = crate::meshgen::split_squares(n, vid, &mut rng);
     out.extend(from_positions(
         &format!("rect grid {n}×{n} of {wx}×{wy} cells seed {seed}"),
         side * side,

@@ -229,20 +229,7 @@ pub fn planar_grid(n: u32, jitter: f64, seed: u64) -> Embedded {
             pos.push([x, y, 0.0]);
         }
     }
-    let v = |i: u32, j: u32| j * (n + 1) + i;
-    let mut faces = Vec::new();
-    for j in 0..n {
-        for i in 0..n {
-            let (a, b, c, d) = (v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1));
-            if rng.gen_bool(0.5) {
-                faces.push([a, b, c]);
-                faces.push([a, c, d]);
-            } else {
-                faces.push([a, b, d]);
-                faces.push([b, c, d]);
-            }
-        }
-    }
+    let faces = split_squares(n, |i, j| j * (n + 1) + i, &mut rng);
     Embedded { pos, faces }
 }
 
@@ -679,4 +666,23 @@ fn orient_consistently(tris: &[[u32; 3]]) -> Vec<[u32; 3]> {
         }
     }
     out.into_iter().map(Option::unwrap).collect()
+}
+
+/// The `n × n` unit squares of a grid whose vertex `(i, j)` is `v(i, j)`, each split into two
+/// counter-clockwise triangles along a diagonal chosen at random.
+pub fn split_squares(n: u32, v: impl Fn(u32, u32) -> u32, rng: &mut impl Rng) -> Vec<[u32; 3]> {
+    let mut faces = Vec::with_capacity(2 * (n * n) as usize);
+    for j in 0..n {
+        for i in 0..n {
+            let (a, b, c, d) = (v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1));
+            if rng.gen_bool(0.5) {
+                faces.push([a, b, c]);
+                faces.push([a, c, d]);
+            } else {
+                faces.push([a, b, d]);
+                faces.push([b, c, d]);
+            }
+        }
+    }
+    faces
 }
