@@ -6,7 +6,7 @@
 //! ([`scalar::Dd`]) and MPFR ([`scalar::Mpfr`]); predicates are decided exactly or with
 //! rigorous enclosures, and answer `Undecided` rather than guess.
 //!
-//! Layers (each imports only layers above it): [`scalar`] → [`mesh`] → [`geometry`] →
+//! Layers (each imports only layers above it): [`scalar`] → [`special`] → [`mesh`] → [`geometry`] →
 //! [`predicates`] → `algorithms` → `theorems` → `oracle` → the `penner` binary.
 
 pub mod algorithms;
@@ -16,6 +16,7 @@ pub mod mesh;
 pub mod oracle;
 pub mod predicates;
 pub mod scalar;
+pub mod special;
 #[cfg(feature = "strategies")]
 pub mod strategies;
 pub mod theorems;
