@@ -42,6 +42,7 @@ mod scalar_dd_edges;
 mod scalar_dd_exp;
 mod scalar_dd_reduction;
 mod scalar_nearest;
+mod special;
 #[cfg(feature = "strategies")]
 mod strategies;
 #[allow(dead_code)] // helpers used by some areas only
