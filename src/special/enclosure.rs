@@ -23,7 +23,11 @@ fn max_value(bits: u32) -> Option<(Float, Float)> {
 
 /// Whether some `c + jπ`, `c = ±π/6`, may lie in `[a, b]` (never a wrong `false`).
 fn may_contain(a: &Float, b: &Float, c_sixths: i32) -> bool {
-    let e = a.get_exp().unwrap_or(0).max(b.get_exp().unwrap_or(0)).max(1) as u32;
+    let e = a
+        .get_exp()
+        .unwrap_or(0)
+        .max(b.get_exp().unwrap_or(0))
+        .max(1) as u32;
     let w = e + 16 + 53;
     let pi = Float::with_val(w, Constant::Pi);
     let c = Float::with_val(w, &pi * c_sixths) / 6u32;

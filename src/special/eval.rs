@@ -40,7 +40,10 @@ fn evaluate(red: &Reduced, t: &Table, rigorous: bool) -> Option<(Float, Float)> 
     let p = t.prec;
     let negative = red.lo.is_sign_negative();
     let (l, h) = if negative {
-        (Float::with_val(red.hi.prec(), -&red.hi), Float::with_val(red.lo.prec(), -&red.lo))
+        (
+            Float::with_val(red.hi.prec(), -&red.hi),
+            Float::with_val(red.lo.prec(), -&red.lo),
+        )
     } else {
         (red.lo.clone(), red.hi.clone())
     };

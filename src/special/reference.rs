@@ -9,7 +9,7 @@
 use rug::float::Constant;
 use rug::{Float, Integer, Rational};
 use std::collections::HashMap;
-use std::sync::{Mutex, OnceLock};
+use std::sync::{Arc, Mutex, OnceLock};
 
 /// `T₁ … T_count`, computed exactly (index `n − 1`).
 pub fn tangent_numbers(count: usize) -> Vec<Integer> {
@@ -32,18 +32,17 @@ pub fn tangent_numbers(count: usize) -> Vec<Integer> {
     t
 }
 
-/// Coefficients `Tₙ / ((4ⁿ − 1)(2n+1)!)` at precision `prec` (a multiple of 64), `n = 1…`.
-fn coefficients(prec: u32) -> std::sync::Arc<Vec<Float>> {
-    static CACHE: OnceLock<Mutex<HashMap<u32, std::sync::Arc<Vec<Float>>>>> = OnceLock::new();
-    let cache = CACHE.get_or_init(|| Mutex::new(HashMap::new()));
+/// The exact coefficients `Tₙ / ((4ⁿ − 1)(2n+1)!)`, `n = 1…count` (at least), cached
+/// and grown by doubling.
+fn exact_coefficients(count: usize) -> Arc<Vec<Rational>> {
+    static CACHE: OnceLock<Mutex<Arc<Vec<Rational>>>> = OnceLock::new();
+    let cache = CACHE.get_or_init(|| Mutex::new(Arc::new(Vec::new())));
     let mut guard = cache
         .lock()
         .unwrap_or_else(std::sync::PoisonError::into_inner);
-    if let Some(c) = guard.get(&prec) {
-        return std::sync::Arc::clone(c);
+    if guard.len() >= count {
+        return Arc::clone(&guard);
     }
-    // Terms shrink by at least 4 per step for |r| ≤ π/2.
-    let count = (prec as usize) / 2 + 8;
     let t = tangent_numbers(count);
     let mut fact = Integer::from(6); // (2n+1)! for n = 1
     let mut out = Vec::with_capacity(count);
@@ -53,52 +52,84 @@ fn coefficients(prec: u32) -> std::sync::Arc<Vec<Float>> {
             fact *= (2 * n) * (2 * n + 1);
         }
         let four = (Integer::from(1) << (2 * n)) - 1u32;
-        let q = Rational::from((tn.clone(), fact.clone() * four));
-        out.push(Float::with_val(prec, &q));
+        out.push(Rational::from((tn.clone(), Integer::from(&fact * &four))));
     }
-    let arc = std::sync::Arc::new(out);
-    guard.insert(prec, std::sync::Arc::clone(&arc));
+    *guard = Arc::new(out);
+    Arc::clone(&guard)
+}
+
+/// The coefficients rounded to precision `prec` (a multiple of 64), cached per precision.
+fn coefficients(prec: u32) -> Arc<Vec<Float>> {
+    static CACHE: OnceLock<Mutex<HashMap<u32, Arc<Vec<Float>>>>> = OnceLock::new();
+    let cache = CACHE.get_or_init(|| Mutex::new(HashMap::new()));
+    if let Some(c) = cache
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+        .get(&prec)
+    {
+        return Arc::clone(c);
+    }
+    // Terms shrink by at least 4 per step for |r| ≤ π/2.
+    let count = (prec as usize) / 2 + 8;
+    let exact = exact_coefficients(count);
+    let out: Vec<Float> = exact[..count]
+        .iter()
+        .map(|q| Float::with_val(prec, q))
+        .collect();
+    let arc = Arc::new(out);
+    cache
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+        .insert(prec, Arc::clone(&arc));
     arc
 }
 
-/// `Л(x)` with a relative error below about `2^(−bits)`, `bits ≥ 53`, by the Bernoulli
-/// series after reduction modulo π at a precision grown until the reduction and the
-/// cancellation near `r = ±π/2` leave `bits + 32` correct bits. `None` for a non-finite
-/// `x` or one needing more than 2²⁰ bits.
+/// `Л(x)` with a relative error below about `2^(−bits)`, `bits ≥ 53`: reduction
+/// `x = k·π/2 + u` at a precision grown until `u` keeps `bits + 40` correct bits, then the
+/// Bernoulli series at `bits + 64` bits, directly for even `k` and through the duplication
+/// formula `Л(π/2 + u) = Л(2u)/2 − Л(u)` for odd `k` (no cancellation near `π/2`). `None`
+/// for a non-finite `x` or one needing more than 2²⁰ bits of π.
 pub fn lobachevsky_tangent_series(x: &Float, bits: u32) -> Option<Float> {
     if !x.is_finite() {
         return None;
     }
+    let s = (bits + 64).div_ceil(64) * 64;
     if x.is_zero() {
-        return Some(Float::new(bits));
+        return Some(Float::new(s));
     }
     let ex = x.get_exp()?.max(0) as u32;
-    let mut prec = (bits + 64 + ex).div_ceil(64) * 64;
+    let mut prec = s + ex;
     loop {
         if prec > 1 << 20 {
             return None;
         }
-        let pi = Float::with_val(prec, Constant::Pi);
-        let k = Float::with_val(prec, x / &pi).to_integer()?;
-        let r = Float::with_val(prec, x - Float::with_val(prec, &pi * &k));
-        if r.is_zero() {
-            prec *= 2;
+        let hp = Float::with_val(prec, Constant::Pi) >> 1u32;
+        let k = Float::with_val(prec, x / &hp).to_integer()?;
+        let u = Float::with_val(prec, x - Float::with_val(prec, &hp * &k));
+        // Reduction error ≤ 2^(ex + 2 − prec).
+        let eu = if u.is_zero() {
+            i32::MIN / 4
+        } else {
+            u.get_exp()?
+        };
+        if i64::from(ex) + 2 - i64::from(prec) > i64::from(eu) - i64::from(bits) - 40 {
+            prec = prec.saturating_mul(2);
             continue;
         }
-        let er = r.get_exp()?;
-        let half_gap = Float::with_val(prec, (Float::with_val(prec, &pi >> 1u32)) - r.clone().abs());
-        let eg = half_gap.get_exp().unwrap_or(i32::MIN / 2);
-        // Reduction error ≤ 2^(ex + 2 − prec); cancellation near ±π/2 costs −eg bits.
-        let lost = (i64::from(ex) + 2 - i64::from(er)).max(0) + i64::from((-eg).max(0));
-        if i64::from(prec) < i64::from(bits) + 40 + lost {
-            prec = (bits + 64 + lost as u32).div_ceil(64) * 64;
-            continue;
+        let u = Float::with_val(s, &u);
+        if k.is_even() {
+            return Some(series(&u, s));
         }
-        return Some(series(&r, prec));
+        let two_u = Float::with_val(s, &u << 1u32);
+        let half = series(&two_u, s) >> 1u32;
+        return Some(half - series(&u, s));
     }
 }
 
 fn series(r: &Float, prec: u32) -> Float {
+    if r.is_zero() {
+        return Float::new(prec);
+    }
     let coeffs = coefficients(prec);
     let s = Float::with_val(prec, r.square_ref());
     let mut pow = Float::with_val(prec, &s * r);

@@ -100,3 +100,210 @@ fn b53_f64_within_few_ulps_of_the_tangent_series() {
     }
     eprintln!("f64 worst {} ulps at {:e}", worst.0, worst.1);
 }
+
+/// Exact binary arguments at `p` bits: moderate, tiny (down to 2⁻³⁰⁰⁰), next to multiples
+/// of π/2 (closer than `2^(−p)`), large.
+fn mpfr_arguments(rng: &mut ChaCha8Rng, p: u32, count: usize) -> Vec<Float> {
+    let hp = Float::with_val(4 * p + 64, Constant::Pi) >> 1u32;
+    let mut out = vec![
+        Float::with_val(p, 1) >> 3000u32,
+        Float::with_val(p, Float::with_val(p + 8, &hp * 3u32)),
+        Float::with_val(p, &hp),
+    ];
+    while out.len() < count {
+        let m = Float::with_val(p, rng.gen_range(0.5..1.0));
+        let x = match out.len() % 4 {
+            0 => Float::with_val(p, rng.gen_range(-20.0..20.0)) + (m >> (p / 2)),
+            1 => m >> rng.gen_range(1..3000u32),
+            2 => {
+                let k: u32 = rng.gen_range(1..1000);
+                Float::with_val(p, &hp * k)
+            }
+            _ => m << rng.gen_range(10..400u32),
+        };
+        out.push(if rng.gen() { x } else { -x });
+    }
+    out
+}
+
+#[test]
+fn b52_mpfr_and_dd_within_one_ulp_of_the_tangent_series() {
+    let mut rng = ChaCha8Rng::seed_from_u64(52);
+    let precisions: &[u32] = if std::env::var_os("PENNER_LONG").is_some() {
+        &[64, 128, 256, 1024, 4096]
+    } else {
+        &[64, 256, 1024]
+    };
+    for &p in precisions {
+        let count = cases(
+            if p > 512 { 8 } else { 60 },
+            if p > 1024 { 200 } else { 5000 },
+        );
+        let prec = Precision::new(u64::from(p)).unwrap();
+        for x in mpfr_arguments(&mut rng, p, count) {
+            let y = lobachevsky(&Mpfr(x.clone()));
+            let r = lobachevsky_tangent_series(&x, 2 * p).unwrap();
+            let e = ulps(&y.0, &r, p, i32::MIN / 2);
+            assert!(e <= 1.0, "p = {p}: Л({x}) off by {e} ulps");
+
+            assert_eq!(y.precision(), prec);
+            // Negative control: a 2-ulp change is rejected.
+            let bumped = Float::with_val(p + 8, &y.0)
+                + (Float::with_val(8, 2) << (r.get_exp().unwrap_or(0) - p as i32));
+            assert!(r.is_zero() || ulps(&bumped, &r, p, i32::MIN / 2) > 1.0);
+        }
+    }
+    for x in arguments(&mut rng, cases(300, 20_000)) {
+        let y = lobachevsky(&Dd::from_f64(x));
+
+        let r = reference(x, 2 * 106 + 16);
+        let yf = Float::with_val(200, y.hi) + y.lo;
+        // Below 2⁻⁹⁶⁸ a Dd carries an absolute 2⁻¹⁰⁷⁵ (B09).
+        let e = ulps(&yf, &r, 106, -1075);
+        assert!(e <= 1.0, "Dd: Л({x:e}) off by {e} ulps");
+    }
+}
+
+#[test]
+fn b52_tiny_arguments_follow_x_times_one_minus_log_2x() {
+    // Л(x) = x(1 − log 2x) + x³/18 + O(x⁵): at 2⁻³⁰⁰⁰ the cubic term is far below an ulp.
+    let p = Precision::new(200).unwrap();
+    let x = Float::with_val(200, 1) >> 3000u32;
+    let y = lobachevsky(&Mpfr(x.clone()));
+    let two_x = Float::with_val(400, &x << 1u32);
+    let expect = Float::with_val(400, 1 - two_x.ln()) * &x;
+    assert!(ulps(&y.0, &expect, 200, i32::MIN / 2) <= 1.0);
+    assert!(y.0 > 0 && y.precision() == p);
+    let y = lobachevsky(&1e-300_f64);
+    let expect = 1e-300 * (1.0 - (2e-300_f64).ln());
+    assert!((y - expect).abs() <= 2.0 * f64::EPSILON * expect);
+    assert!(lobachevsky(&-1e-300_f64) == -y);
+    // Negative control: dropping the logarithm is far off.
+    assert!((1e-300 - y).abs() > 0.5 * y);
+}
+
+#[test]
+fn b52_enclosure_contains_the_reference_and_is_a_few_ulps_wide() {
+    let mut rng = ChaCha8Rng::seed_from_u64(5252);
+    for &p in &[64u32, 256, 1024] {
+        let prec = Precision::new(u64::from(p)).unwrap();
+        for x in mpfr_arguments(&mut rng, p, cases(if p > 512 { 6 } else { 40 }, 2000)) {
+            let enc = lobachevsky_enclosure(&Interval::point(Mpfr(x.clone())));
+            let r = lobachevsky_tangent_series(&x, 2 * p).unwrap();
+            let (lo, hi) = (&enc.lo().0, &enc.hi().0);
+            assert!(
+                *lo <= r && r <= *hi,
+                "p = {p}: [{lo}, {hi}] misses Л({x}) = {r}"
+            );
+            let w = ulps(hi, lo, p, i32::MIN / 2);
+            let scale = ulps(hi, &r, p, i32::MIN / 2) + ulps(&r, lo, p, i32::MIN / 2);
+            assert!(scale <= 4.0 && w <= 4.0, "p = {p}: width {w} ulps at {x}");
+            assert_eq!(enc.lo().precision(), prec);
+            // Negative control: the enclosure moved by its width plus one ulp misses.
+            let shift = Float::with_val(p, hi - lo)
+                + (Float::with_val(p, 1) << (r.get_exp().unwrap_or(0) - p as i32));
+            let moved_lo = Float::with_val(p, lo + &shift);
+            assert!(r.is_zero() || moved_lo > r || hi == lo);
+        }
+    }
+}
+
+#[test]
+fn b52_enclosure_of_wide_intervals_contains_every_sampled_value() {
+    let mut rng = ChaCha8Rng::seed_from_u64(99);
+    let p = Precision::new(128).unwrap();
+    let m = 0.5074708; // Л(π/6) rounded down
+    for _ in 0..cases(200, 20_000) {
+        let a: f64 = rng.gen_range(-10.0..10.0);
+        let b = a + rng.gen_range(0.0..2.0f64).powi(3);
+        let enc = lobachevsky_enclosure(&Interval::new(Mpfr::from_f64(a, p), Mpfr::from_f64(b, p)));
+        for i in 0..=16 {
+            let x = a + (b - a) * f64::from(i) / 16.0;
+            let r = reference(x, 200);
+            assert!(enc.lo().0 <= r && r <= enc.hi().0, "[{a}, {b}] at {x}");
+        }
+        // Never wider than the range of Л.
+        assert!(enc.lo().0 >= -m - 1e-6 && enc.hi().0 <= m + 1e-6);
+    }
+    // An interval around π/6 reaches the maximum, one on (π/6, π/2) is the endpoint hull.
+    let pi = std::f64::consts::PI;
+    let enc = lobachevsky_enclosure(&Interval::new(
+        Mpfr::from_f64(0.5, p),
+        Mpfr::from_f64(0.6, p),
+    ));
+    assert!(enc.hi().0 >= m);
+    let enc = lobachevsky_enclosure(&Interval::new(
+        Mpfr::from_f64(0.6, p),
+        Mpfr::from_f64(pi / 2.0 - 0.1, p),
+    ));
+    let top = reference(0.6, 200);
+    assert!(enc.hi().0 >= top && Float::with_val(128, &enc.hi().0 - &top) < 1e-30);
+    // Negative control: the hull of the endpoints alone misses the maximum inside [0.5, 0.6].
+    assert!(reference(0.5, 200).max(&reference(0.6, 200)) < m);
+    // Unbounded and invalid.
+    let all = lobachevsky_enclosure(&Interval::new(
+        Mpfr::from_f64(0.0, p),
+        Mpfr::from_f64(f64::INFINITY, p),
+    ));
+    assert!(all.hi().0 >= m && all.lo().0 <= -m);
+    assert!(!lobachevsky_enclosure(&Interval::invalid(p)).is_valid());
+}
+
+#[test]
+fn b52_generic_interval_and_dual_paths() {
+    // Interval<f64> through the generic function is an outward-rounded enclosure.
+    let x = Interval::new(1.0_f64, 1.0);
+    let y = lobachevsky(&x);
+    let r = reference(1.0, 200);
+    assert!(Float::with_val(53, *y.lo()) <= r && r <= Float::with_val(53, *y.hi()));
+    assert!(y.hi() - y.lo() <= 4.0 * f64::EPSILON);
+    // Dual: the derivative is −log|2 sin x| (computed here in MPFR).
+    for &x in &[0.3, 1.0, 2.5, -7.0, 1e6] {
+        let d = lobachevsky(&Dual::variable(x));
+        let s = Float::with_val(200, x).sin() * 2u32;
+        let expect = -s.abs().ln().to_f64();
+        assert!(
+            (d.d - expect).abs() <= 8.0 * f64::EPSILON * (1.0 + expect.abs()),
+            "{x}"
+        );
+        assert!((d.v - lobachevsky(&x)).abs() <= F64_ULPS * f64::EPSILON * d.v.abs());
+        // Nested duals: Л″(x) = −cot x.
+        let dd = lobachevsky(&Dual::variable(Dual::variable(x)));
+        let cot = (Float::with_val(200, x).cos() / Float::with_val(200, x).sin()).to_f64();
+        assert!(
+            (dd.d.d + cot).abs() <= 1e-9 * (1.0 + cot.abs()),
+            "{x}: {} vs {}",
+            dd.d.d,
+            -cot
+        );
+        // Negative control: the derivative of sin instead is rejected.
+        assert!((x.cos() - expect).abs() > 1e-3);
+    }
+    let dd = lobachevsky(&Dual::variable(Dd::from_f64(0.4)));
+    let s = Float::with_val(300, 0.4).sin() * 2u32;
+    let expect = Float::with_val(300, -s.ln());
+    let got = Float::with_val(300, dd.d.hi) + dd.d.lo;
+    assert!(ulps(&got, &expect, 100, i32::MIN / 2) <= 8.0);
+}
+
+#[test]
+fn b52_tangent_numbers_and_bernoulli() {
+    let t = tangent_numbers(6);
+    let known = [1u32, 2, 16, 272, 7936, 353792];
+    for (a, b) in t.iter().zip(known) {
+        assert_eq!(*a, b);
+    }
+    // |B₂ₙ| = 2n Tₙ / (4ⁿ (4ⁿ − 1)): B₂ = 1/6, B₄ = 1/30, B₆ = 1/42, B₁₂ = 691/2730.
+    let b = |n: u32| {
+        let four = Integer::from(1) << (2 * n);
+        Rational::from((
+            Integer::from(&t[n as usize - 1] * (2 * n)),
+            Integer::from(&four * (four.clone() - 1u32)),
+        ))
+    };
+    assert_eq!(b(1), Rational::from((1, 6)));
+    assert_eq!(b(2), Rational::from((1, 30)));
+    assert_eq!(b(3), Rational::from((1, 42)));
+    assert_eq!(b(6), Rational::from((691, 2730)));
+    assert_ne!(b(5), Rational::from((5, 67)));
+}
