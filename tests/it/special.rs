@@ -307,3 +307,144 @@ fn b52_tangent_numbers_and_bernoulli() {
     assert_eq!(b(6), Rational::from((691, 2730)));
     assert_ne!(b(5), Rational::from((5, 67)));
 }
+
+#[test]
+fn t30_identities_hold_at_every_precision_and_the_control_fails() {
+    use penner::theorems::t30_lobachevsky::{check_lobachevsky, check_lobachevsky_certified};
+    let mut rng = ChaCha8Rng::seed_from_u64(30);
+    let xs: Vec<f64> = (0..cases(6, 200))
+        .map(|i| match i % 3 {
+            0 => rng.gen_range(-4.0..4.0),
+            1 => rng.gen_range(0.5..1.0) * 2f64.powi(-rng.gen_range(1..900)),
+            _ => rng.gen_range(-1e4..1e4),
+        })
+        .collect();
+    assert!(check_lobachevsky(&xs, false).holds());
+    let dd: Vec<Dd> = xs.iter().map(|&x| Dd::from_f64(x)).collect();
+    assert!(check_lobachevsky(&dd, false).holds());
+    let p = Precision::new(512).unwrap();
+    let mp: Vec<Mpfr> = xs.iter().map(|&x| Mpfr::from_f64(x, p)).collect();
+    assert!(check_lobachevsky(&mp, false).holds());
+    let q: Vec<Rational> = xs.iter().map(|&x| Rational::from_f64(x).unwrap()).collect();
+    let v = check_lobachevsky_certified(&q, 128, false);
+    assert!(
+        matches!(
+            v,
+            penner::theorems::Verdict::Holds {
+                certified: true,
+                ..
+            }
+        ),
+        "{v:?}"
+    );
+    // Negative control: one side's argument × 1.01 is refuted, certified, at every precision.
+    for v in [
+        check_lobachevsky(&xs, true),
+        check_lobachevsky(&dd, true),
+        check_lobachevsky(&mp, true),
+        check_lobachevsky_certified(&q, 128, true),
+    ] {
+        assert!(
+            matches!(
+                v,
+                penner::theorems::Verdict::Fails {
+                    certified: true,
+                    ..
+                }
+            ),
+            "{v:?}"
+        );
+    }
+}
+
+/// `ζ(2, a) = Σ_{m≥0} (m + a)⁻²` by Euler–Maclaurin with exact Bernoulli numbers from the
+/// classical recurrence: `Σ_{m<N} (m+a)⁻² + 1/(N+a) + 1/(2(N+a)²) + Σ_{k=1}^{K} B₂ₖ/(N+a)^{2k+1}`.
+fn hurwitz_zeta2(a: &Rational, prec: u32) -> Float {
+    const N: u32 = 60;
+    const K: usize = 40;
+    let mut bern = vec![Rational::from(1)];
+    for k in 1..=2 * K {
+        let mut s = Rational::new();
+        for (j, b) in bern.iter().enumerate() {
+            s += Rational::from(Integer::from(Integer::binomial_u(k as u32 + 1, j as u32))) * b;
+        }
+        bern.push(-s / Rational::from(k + 1));
+    }
+    let mut sum = Float::new(prec);
+    for m in 0..N {
+        let x = Float::with_val(prec, Rational::from(a + m));
+        sum += Float::with_val(prec, x.square_ref()).recip();
+    }
+    let na = Float::with_val(prec, Rational::from(a + N));
+    sum += Float::with_val(prec, na.recip_ref());
+    sum += Float::with_val(prec, na.square_ref()).recip() / 2u32;
+    for k in 1..=K {
+        let pow = Float::with_val(prec, rug::ops::Pow::pow(&na, 2 * k as u32 + 1));
+        sum += Float::with_val(prec, &bern[2 * k]) / pow;
+    }
+    sum
+}
+
+#[test]
+fn regular_ideal_tetrahedron_volume_to_60_digits() {
+    // V = 3Л(π/3) = (3/2) Cl₂(2π/3), Cl₂(2π/3) = (√3/2) Σ_{k≢0 (3)} ±1/k² = (ψ₁(1/3) − ψ₁(2/3))/(6√3),
+    // ψ₁(a) = ζ(2, a): V = (ζ(2, 1/3) − ζ(2, 2/3)) / (4√3).
+    let prec = 260; // > 60 digits
+    let z =
+        hurwitz_zeta2(&Rational::from((1, 3)), prec) - hurwitz_zeta2(&Rational::from((2, 3)), prec);
+    let expect = z / (Float::with_val(prec, 3).sqrt() * 4u32);
+    let p = Precision::new(256).unwrap();
+    let third = Mpfr::pi(p) / Mpfr::from_f64(3.0, p);
+    let v = ideal_tetrahedron_volume(&third, &third, &third);
+    let err = Float::with_val(prec, &v.0 - &expect).abs();
+    assert!(err < 1e-70, "V = {}, ψ₁ form {expect}, error {err}", v.0);
+    let c = clausen2(&(Mpfr::pi(p) * &Mpfr::from_f64(2.0, p) / &Mpfr::from_f64(3.0, p)));
+    let err_c = Float::with_val(prec, Float::with_val(prec, &c.0 * 3u32) / 2u32 - &expect).abs();
+    assert!(err_c < 1e-70);
+    // The published value to 20 digits.
+    assert!((v.approx_f64() - 1.0149416064096536).abs() < 1e-15);
+    // Negative control: Л(π/3)·3 at an argument off by 2⁻²⁰⁰ is seen at this accuracy.
+    let off = third.clone() + &Mpfr(Float::with_val(256, 1) >> 200u32);
+    let w = ideal_tetrahedron_volume(&off, &third, &third);
+    assert!(Float::with_val(prec, &w.0 - &expect).abs() > 1e-70);
+}
+
+#[test]
+fn regular_ideal_tetrahedron_is_the_maximum() {
+    // On α + β + γ = π: V(α, β) = Л(α) + Л(β) − Л(α + β). ∂V/∂α = log|2 sin(α+β)| − log|2 sin α|,
+    // with Л″ = −cot the Hessian is H = [[−cot α + cot(α+β), cot(α+β)],
+    // [cot(α+β), −cot β + cot(α+β)]]. Certified at α = β = π/3 with intervals.
+    let p = Precision::new(128).unwrap();
+    let pi = Interval::<Mpfr>::pi(p);
+    let three = Interval::point(Mpfr::from_f64(3.0, p));
+    let a = pi.clone() / &three;
+    let s = a.clone() + &a;
+    let two = Interval::point(Mpfr::from_f64(2.0, p));
+    let grad = (s.sin() * &two).ln() - &(a.sin() * &two).ln();
+    assert!(grad.contains_zero() && grad.width_f64() < 1e-30);
+    let cot = |x: &Interval<Mpfr>| x.cos() / &x.sin();
+    let h11 = cot(&s) - &cot(&a);
+    let h12 = cot(&s);
+    let det = h11.clone() * &h11 - &(h12.clone() * &h12);
+    assert_eq!(h11.sign(), Some(penner::scalar::Sign::Negative));
+    assert_eq!(det.sign(), Some(penner::scalar::Sign::Positive));
+    // Negative control: at α = β = 1 the gradient enclosure excludes 0 (V is concave on
+    // the whole simplex, so only the gradient singles out the regular point).
+    let b = Interval::point(Mpfr::from_f64(1.0, p));
+    let s2 = b.clone() + &b;
+    let grad_b = (s2.sin() * &two).ln() - &(b.sin() * &two).ln();
+    assert!(!grad_b.contains_zero());
+    // Elsewhere on the simplex (numerical): V < V_reg.
+    let vreg = ideal_tetrahedron_volume(
+        &(std::f64::consts::PI / 3.0),
+        &(std::f64::consts::PI / 3.0),
+        &(std::f64::consts::PI / 3.0),
+    );
+    let mut rng = ChaCha8Rng::seed_from_u64(3);
+    for _ in 0..cases(2000, 200_000) {
+        let x: f64 = rng.gen_range(0.0..std::f64::consts::PI);
+        let y: f64 = rng.gen_range(0.0..std::f64::consts::PI - x);
+        let z = std::f64::consts::PI - x - y;
+        assert!(ideal_tetrahedron_volume(&x, &y, &z) <= vreg + 1e-15);
+    }
+}
