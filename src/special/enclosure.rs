@@ -57,8 +57,8 @@ fn to_precision(lo: &Float, hi: &Float, p: Precision) -> Interval<Mpfr> {
 /// let p = Precision::new(128).unwrap();
 /// let x = Interval::point(Mpfr::from_f64(0.5, p));
 /// let y = lobachevsky_enclosure(&x);
-/// // Л(1/2) = 0.50685828…
-/// assert!(y.lo().approx_f64() > 0.506858 && y.hi().approx_f64() < 0.506859);
+/// // Л(1/2) = ½ Cl₂(1) = 0.50697956618…
+/// assert!(y.lo().approx_f64() > 0.5069795661 && y.hi().approx_f64() < 0.5069795662);
 /// ```
 pub fn lobachevsky_enclosure(x: &Interval<Mpfr>) -> Interval<Mpfr> {
     let p = x.lo().precision();
