@@ -52,7 +52,7 @@ fn to_precision(lo: &Float, hi: &Float, p: Precision) -> Interval<Mpfr> {
 /// reduction cannot resolve (`|x| ≳ 2^(2²⁰)`), gives `[−M, M]`, `M = Л(π/6) ≈ 0.5074708`.
 ///
 /// ```
-/// use penner::scalar::{Interval, Mpfr, Precision};
+/// use penner::scalar::{Interval, Mpfr, Precision, Real};
 /// use penner::special::lobachevsky_enclosure;
 /// let p = Precision::new(128).unwrap();
 /// let x = Interval::point(Mpfr::from_f64(0.5, p));
