@@ -260,7 +260,13 @@ pub fn certify(claim: &Claim) -> Result<Answer, Unsupported> {
                     &Interval::from_rational(x, p),
                 )]
             };
-            let b = within_all(&mut enclose, std::slice::from_ref(y), epsilon, START_BITS, claim.max_bits);
+            let b = within_all(
+                &mut enclose,
+                std::slice::from_ref(y),
+                epsilon,
+                START_BITS,
+                claim.max_bits,
+            );
             Ok(summarize(claim, &b, &|_| "x".to_string(), "value of Л(x)"))
         }
     }

@@ -269,7 +269,9 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
     check_fields(obj, kind, own)?;
     if kind == "lobachevsky" {
         if v.get("surface").is_some() {
-            return Err(err("surface: not a field of lobachevsky claims (they concern no surface)"));
+            return Err(err(
+                "surface: not a field of lobachevsky claims (they concern no surface)",
+            ));
         }
         return Ok(Claim {
             id,
