@@ -23,7 +23,7 @@ fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("lobachevsky");
     g.throughput(Throughput::Elements(xs.len() as u64));
     g.bench_function("f64", |b| {
-        b.iter(|| xs.iter().map(|x| lobachevsky(black_box(x))).sum::<f64>())
+        b.iter(|| xs.iter().map(|x| lobachevsky(black_box(x))).sum::<f64>());
     });
     let dd: Vec<Dd> = xs.iter().map(|&x| Dd::from_f64(x)).collect();
     g.bench_function("dd", |b| {
@@ -31,7 +31,7 @@ fn bench(c: &mut Criterion) {
             dd.iter()
                 .map(|x| lobachevsky(black_box(x)).approx_f64())
                 .sum::<f64>()
-        })
+        });
     });
     for bits in [128u64, 256] {
         let p = Precision::new(bits).unwrap();
@@ -42,7 +42,7 @@ fn bench(c: &mut Criterion) {
                 mp.iter()
                     .map(|x| lobachevsky(black_box(x)).approx_f64())
                     .sum::<f64>()
-            })
+            });
         });
     }
     let p = Precision::new(256).unwrap();
@@ -55,7 +55,7 @@ fn bench(c: &mut Criterion) {
             iv.iter()
                 .map(|x| lobachevsky_enclosure(black_box(x)).width_f64())
                 .sum::<f64>()
-        })
+        });
     });
     g.finish();
 }

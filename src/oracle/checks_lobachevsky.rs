@@ -48,6 +48,7 @@ pub fn t30_at(case: &Surface, prec: Prec, wrong: bool) -> Verdict {
     }
 }
 
+#[allow(clippy::unnecessary_wraps)] // the registry's signature
 fn t30(case: &Surface, prec: Prec, _: &Settings) -> Option<Verdict> {
     Some(t30_at(case, prec, false))
 }

@@ -177,6 +177,25 @@ fn no_surface() -> Result<Surface, ClaimError> {
         .map_err(|e| err(format!("internal placeholder surface: {e}")))
 }
 
+/// A `lobachevsky` claim (fields already checked): `x`, `y`, `epsilon`, no surface.
+fn lobachevsky_claim(v: &Value, id: Option<String>, max_bits: u32) -> Result<Claim, ClaimError> {
+    if v.get("surface").is_some() {
+        return Err(err(
+            "surface: not a field of lobachevsky claims (they concern no surface)",
+        ));
+    }
+    Ok(Claim {
+        id,
+        surface: no_surface()?,
+        assertion: Assertion::Lobachevsky {
+            x: number_at(v, "x")?,
+            y: number_at(v, "y")?,
+            epsilon: epsilon(v)?,
+        },
+        max_bits,
+    })
+}
+
 fn number_at(v: &Value, key: &str) -> Result<Rational, ClaimError> {
     let x = v
         .get(key)
@@ -268,21 +287,7 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
     };
     check_fields(obj, kind, own)?;
     if kind == "lobachevsky" {
-        if v.get("surface").is_some() {
-            return Err(err(
-                "surface: not a field of lobachevsky claims (they concern no surface)",
-            ));
-        }
-        return Ok(Claim {
-            id,
-            surface: no_surface()?,
-            assertion: Assertion::Lobachevsky {
-                x: number_at(v, "x")?,
-                y: number_at(v, "y")?,
-                epsilon: epsilon(v)?,
-            },
-            max_bits,
-        });
+        return lobachevsky_claim(v, id, max_bits);
     }
     let surface = surface_at(v, "surface", "the surface the claim is about")?;
     let assertion = match kind {

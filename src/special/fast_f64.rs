@@ -99,7 +99,7 @@ pub(crate) fn lobachevsky_f64(x: f64) -> Option<f64> {
     if ax <= std::f64::consts::FRAC_PI_4 {
         return Some(at_zero(x, 0.0, c));
     }
-    if !(ax < FAST_LIMIT) {
+    if ax.is_nan() || ax >= FAST_LIMIT {
         return None;
     }
     let k = (x * c.two_over_pi).round();

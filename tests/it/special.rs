@@ -11,7 +11,7 @@ use penner::special::{
 };
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use rug::float::{Constant, Round};
+use rug::float::Constant;
 use rug::{Float, Integer, Rational};
 
 /// `|y − r|` in units of `2^(e−bits)`, `r = m·2ᵉ`, `m ∈ [1/2, 1)` (ulps of a `bits`-bit
@@ -40,7 +40,7 @@ fn arguments(rng: &mut ChaCha8Rng, count: usize) -> Vec<f64> {
         std::f64::consts::PI / 6.0,
         std::f64::consts::PI / 3.0,
         0.5,
-        0.7853981633974483,
+        std::f64::consts::FRAC_PI_4,
         1e22,
         1e300,
         -1.7976931348623157e308,
@@ -298,7 +298,7 @@ fn b52_tangent_numbers_and_bernoulli() {
         let four = Integer::from(1) << (2 * n);
         Rational::from((
             Integer::from(&t[n as usize - 1] * (2 * n)),
-            Integer::from(&four * (four.clone() - 1u32)),
+            &four * (four.clone() - 1u32),
         ))
     };
     assert_eq!(b(1), Rational::from((1, 6)));

@@ -6,6 +6,7 @@ use crate::oracle::precision::Prec;
 use crate::oracle::registry::Check;
 use crate::theorems::{Settings, Verdict};
 
+#[allow(clippy::unnecessary_wraps)] // the registry's signature
 fn t30_nc(case: &Surface, prec: Prec, _: &Settings) -> Option<Verdict> {
     Some(t30_at(case, prec, true))
 }
