@@ -26,16 +26,16 @@ pub struct Options<'a> {
     pub output: Option<&'a Path>,
 }
 
-/// Interval bits and refinement tolerance of a precision word: `f64` → 64 bits, 1e-10;
-/// `dd` → 106 bits, 1e-28; `N` → N bits, `2^{−(N−56)}` (MPFR-256: ≈ 6·10⁻⁶¹).
+/// Interval bits and refinement tolerance of a precision word: `f64` → 1e-10 and `dd` →
+/// 1e-28, certified at 128 bits; `N` → `2^{−(N−56)}` at N bits (MPFR-256: ≈ 6·10⁻⁶¹).
 fn bits_and_tolerance(p: &str) -> Result<(u32, f64), CliError> {
     match p {
-        "f64" => Ok((64, 1e-10)),
-        "dd" => Ok((106, 1e-28)),
+        "f64" => Ok((128, 1e-10)),
+        "dd" => Ok((128, 1e-28)),
         other => match other.parse::<u32>() {
-            Ok(b) if (64..=4096).contains(&b) => Ok((b, 2f64.powi(-(b as i32 - 56)))),
+            Ok(b) if (128..=4096).contains(&b) => Ok((b, 2f64.powi(-(b as i32 - 56)))),
             _ => Err(CliError::Input(format!(
-                "--precision: expected f64, dd or MPFR bits 64..=4096, got {other:?}"
+                "--precision: expected f64, dd or MPFR bits 128..=4096, got {other:?}"
             ))),
         },
     }

@@ -7,6 +7,7 @@ mod cli_controls;
 mod cli_delaunay;
 mod cli_io;
 mod cli_strict;
+mod cli_uniformize;
 mod cone_angles_kernel;
 mod controls;
 mod definition_two;

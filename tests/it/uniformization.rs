@@ -286,3 +286,70 @@ fn t26_flip_path_commutes_with_scaling() {
     let short = &sol.flip_sequence[..sol.flip_sequence.len() - 1];
     assert!(check_flip_path(&sol.initial_mesh, &sol.initial_lengths, short, &sol.mesh, &s, &s).fails());
 }
+
+use penner::uniformization::verified_cholesky::{lambda_min_lower_bound, SymmetricLower};
+
+/// Eigenvalues of a small dense symmetric matrix by cyclic Jacobi rotations (an oracle
+/// independent of any Cholesky factorization).
+fn jacobi_eigenvalues(mut a: Vec<Vec<f64>>) -> Vec<f64> {
+    let n = a.len();
+    for _sweep in 0..100 {
+        let off: f64 = (0..n).flat_map(|i| (0..n).filter(move |&j| j != i).map(move |j| (i, j))).map(|(i, j)| a[i][j] * a[i][j]).sum();
+        if off < 1e-30 {
+            break;
+        }
+        for p in 0..n {
+            for q in p + 1..n {
+                if a[p][q].abs() < 1e-300 {
+                    continue;
+                }
+                let theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
+                let t = theta.signum() / (theta.abs() + (theta * theta + 1.0).sqrt());
+                let t = if theta == 0.0 { 1.0 } else { t };
+                let c = 1.0 / (t * t + 1.0).sqrt();
+                let s = t * c;
+                for k in 0..n {
+                    let (akp, akq) = (a[k][p], a[k][q]);
+                    a[k][p] = c * akp - s * akq;
+                    a[k][q] = s * akp + c * akq;
+                }
+                for k in 0..n {
+                    let (apk, aqk) = (a[p][k], a[q][k]);
+                    a[p][k] = c * apk - s * aqk;
+                    a[q][k] = s * apk + c * aqk;
+                }
+            }
+        }
+    }
+    (0..n).map(|i| a[i][i]).collect()
+}
+
+#[test]
+fn b70_lower_bound_matches_dense_eigenvalues() {
+    use penner::geometry::laplacian::cotan_laplacian;
+    for seed in 0..crate::support::cases(3, 30) as u64 {
+        let (m, l) = noisy_sphere(2, 40 + seed);
+        let lap = cotan_laplacian(&m, &l);
+        // Ground vertex 0: −L on vertices 1..n.
+        let n = m.n_vertices() - 1;
+        let mut dense = vec![vec![0.0; n]; n];
+        let mut entries = Vec::new();
+        for (i, j, w) in lap.entries() {
+            if i == 0 || j == 0 {
+                continue;
+            }
+            dense[i - 1][j - 1] = -*w;
+            if i >= j {
+                entries.push((i - 1, j - 1, -*w));
+            }
+        }
+        let lambda = jacobi_eigenvalues(dense).into_iter().fold(f64::INFINITY, f64::min);
+        assert!(lambda > 0.0);
+        let a = SymmetricLower { n, entries };
+        let b = lambda_min_lower_bound(&a, 0.99 * lambda).expect("A − 0.99λ I is definite");
+        assert!(b.lambda_min <= lambda, "{b:?} vs {lambda}");
+        assert!(b.lambda_min >= 0.98 * lambda, "{b:?} vs {lambda}");
+        // Negative control: a shift 1% above λ_min leaves an indefinite matrix.
+        assert!(lambda_min_lower_bound(&a, 1.01 * lambda).is_none());
+    }
+}
