@@ -353,3 +353,26 @@ fn b70_lower_bound_matches_dense_eigenvalues() {
         assert!(lambda_min_lower_bound(&a, 1.01 * lambda).is_none());
     }
 }
+
+#[test]
+fn b71_box_leaving_the_penner_cell_is_undecided() {
+    // The flat grid torus: every diagonal is (up to the rounding of √2) a cocircular tie,
+    // so on a box of radius 1e-3 the Delaunay sign of the diagonals is not constant.
+    let flat = penner::mesh::builders::flat_torus(4, 4).unwrap();
+    let l: Vec<f64> = flat.squared_lengths.iter().map(|q| q.to_f64().sqrt()).collect();
+    let sol = uniformize(&flat.mesh, &l, &Targets::flat(flat.mesh.n_vertices()), &UniformizeOptions::default()).unwrap();
+    assert!(sol.converged());
+    let r = refine::<Mpfr>(&sol, Precision::new(256).unwrap(), 1e-60, 12).unwrap();
+    let u = exact_u(&r.u);
+    // A small box is certified (the rounded metric is a strict Delaunay cell around u) …
+    let small = certificate_data(&sol, u.clone(), tiny(40));
+    assert!(matches!(check_certificate(&small, 256).unwrap(), CertificateOutcome::Holds { .. }));
+    // … a box of radius 1e-3 leaves the cell: undecided, naming an edge.
+    let big = certificate_data(&sol, u, tiny(3));
+    match check_certificate(&big, 256).unwrap() {
+        CertificateOutcome::Undecided { reason } => {
+            assert!(reason.contains("not certified Delaunay"), "{reason}");
+        }
+        other => panic!("{other:?}"),
+    }
+}
