@@ -9,6 +9,7 @@ use penner::io::json::exact_number;
 use penner::uniformization::certificate::{prove, CertificateOutcome};
 use penner::uniformization::claim_form::to_claim;
 use penner::uniformization::{uniformize_with_progress, Targets, UniformizeOptions};
+use std::fmt::Write as _;
 use std::io::{IsTerminal, Write};
 use std::path::Path;
 
@@ -47,7 +48,9 @@ fn read_targets(path: &Path, n: usize) -> Result<Targets, CliError> {
     let v: serde_json::Value = serde_json::from_str(&text)
         .map_err(|e| CliError::Input(format!("{shown}:{}:{}: {e}", e.line(), e.column())))?;
     let arr = v.as_array().ok_or_else(|| {
-        CliError::Input(format!("{shown}: expected a JSON array of Θ_i/π, one per vertex"))
+        CliError::Input(format!(
+            "{shown}: expected a JSON array of Θ_i/π, one per vertex"
+        ))
     })?;
     if arr.len() != n {
         return Err(CliError::Input(format!(
@@ -66,24 +69,27 @@ fn read_targets(path: &Path, n: usize) -> Result<Targets, CliError> {
 }
 
 /// Run `penner uniformize`.
+#[allow(clippy::too_many_lines)] // solve, refine, certify and write, in order
 pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     let (bits, tolerance) = bits_and_tolerance(o.precision)?;
     let shown = o.path.display().to_string();
     let case = load_flip_case(o.path)?;
     let mesh = case.mesh().clone();
     let lengths: Vec<f64> = case.lengths::<f64>(());
-    let targets = match (o.targets, o.flat) {
-        (Some(_), true) => {
-            return Err(CliError::Input("give either --targets FILE or --flat, not both".into()))
-        }
-        (Some(p), false) => read_targets(p, mesh.n_vertices())?,
-        (None, true) => Targets::flat(mesh.n_vertices()),
-        (None, false) => {
-            return Err(CliError::Input(
-                "the target angles are required: --targets FILE (a JSON array of Θ_i/π) or --flat".into(),
-            ))
-        }
-    };
+    let targets =
+        match (o.targets, o.flat) {
+            (Some(_), true) => {
+                return Err(CliError::Input(
+                    "give either --targets FILE or --flat, not both".into(),
+                ))
+            }
+            (Some(p), false) => read_targets(p, mesh.n_vertices())?,
+            (None, true) => Targets::flat(mesh.n_vertices()),
+            (None, false) => return Err(CliError::Input(
+                "the target angles are required: --targets FILE (a JSON array of Θ_i/π) or --flat"
+                    .into(),
+            )),
+        };
     let bar = std::io::stderr().is_terminal().then(|| {
         let b = indicatif::ProgressBar::new_spinner();
         b.set_message(format!("uniformizing {shown} ({} faces)", mesh.n_faces()));
@@ -98,51 +104,62 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
             ));
         }
     };
-    let sol = uniformize_with_progress(&mesh, &lengths, &targets, &UniformizeOptions::default(), &mut progress)
-        .map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
+    let sol = uniformize_with_progress(
+        &mesh,
+        &lengths,
+        &targets,
+        &UniformizeOptions::default(),
+        &mut progress,
+    )
+    .map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
     let mut out = String::new();
-    out.push_str(&format!(
-        "{shown}: {} Euclidean flips to intrinsic Delaunay; {} Newton steps, {} Ptolemy flips (per step: {:?})\n",
+    let _ = writeln!(
+        out,
+        "{shown}: {} Euclidean flips to intrinsic Delaunay; {} Newton steps, {} Ptolemy flips (per step: {:?})",
         sol.euclidean_flips,
         sol.steps.len(),
         sol.flip_sequence.len(),
         sol.steps.iter().map(|s| s.flips).collect::<Vec<_>>()
-    ));
+    );
     if !sol.converged() {
         if let Some(b) = &bar {
             b.finish_and_clear();
         }
-        out.push_str(&format!(
-            "not converged ({:?}); max |Θ − θ| = {:e}; no certificate\n",
+        let _ = writeln!(
+            out,
+            "not converged ({:?}); max |Θ − θ| = {:e}; no certificate",
             sol.stop, sol.residual_max
-        ));
+        );
         super::files::emit(&out)?;
         return Ok(code::UNDECIDED);
     }
     if let Some(b) = &bar {
         b.set_message(format!("refining and certifying at {bits} bits"));
     }
-    let proof = prove(&sol, bits, tolerance).map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
+    let proof =
+        prove(&sol, bits, tolerance).map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
     if let Some(b) = &bar {
         b.finish_and_clear();
     }
-    out.push_str(&format!(
-        "converged: max |Θ − θ| = {:e} (f64), {:e} after refinement at {bits} bits\n",
+    let _ = writeln!(
+        out,
+        "converged: max |Θ − θ| = {:e} (f64), {:e} after refinement at {bits} bits",
         sol.residual_max, proof.residual_max
-    ));
+    );
     let (status, residual) = match &proof.outcome {
         CertificateOutcome::Holds {
             distance,
             mu,
             residual,
         } => {
-            out.push_str(&format!(
-                "certified: an exact solution lies within {distance:e} (2-norm) of u; Hessian ≥ {mu:e} on the box; ‖Θ − θ(u)‖₂ ≤ {residual:e}\n"
-            ));
+            let _ = writeln!(
+        out,
+                "certified: an exact solution lies within {distance:e} (2-norm) of u; Hessian ≥ {mu:e} on the box; ‖Θ − θ(u)‖₂ ≤ {residual:e}"
+            );
             (code::HOLDS, *residual)
         }
         CertificateOutcome::Undecided { reason } => {
-            out.push_str(&format!("not certified: {reason}\n"));
+            let _ = writeln!(out, "not certified: {reason}");
             (code::UNDECIDED, f64::INFINITY)
         }
     };
@@ -157,11 +174,12 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
                     path: path.to_path_buf(),
                     reason: e.to_string(),
                 })?;
-            out.push_str(&format!(
-                "certificate written to {} (re-check: penner certify {})\n",
+            let _ = writeln!(
+                out,
+                "certificate written to {} (re-check: penner certify {})",
                 path.display(),
                 path.display()
-            ));
+            );
         } else {
             out.push_str("no certificate written\n");
         }

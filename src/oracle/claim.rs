@@ -163,7 +163,14 @@ const KIND_FIELDS: [(&str, &[&str]); 6] = [
     ("conformal_equivalence", &["target", "u", "epsilon"]),
     (
         "uniformization",
-        &["targets", "flips", "u", "radius", "final_faces", "residual_bound"],
+        &[
+            "targets",
+            "flips",
+            "u",
+            "radius",
+            "final_faces",
+            "residual_bound",
+        ],
     ),
 ];
 
@@ -343,7 +350,6 @@ fn uniformization_claim(v: &Value, surface: &Surface) -> Result<Assertion, Claim
         final_faces,
         residual_bound,
     };
-    crate::uniformization::claim_form::validate(surface, &claim)
-        .map_err(|e| err(e.to_string()))?;
+    crate::uniformization::claim_form::validate(surface, &claim).map_err(|e| err(e.to_string()))?;
     Ok(Assertion::Uniformization(claim))
 }

@@ -49,7 +49,8 @@ pub fn compare_normalized(
     d2: f64,
 ) -> Verdict {
     let comps = Components::of(mesh);
-    let bound = Rational::from_f64(d1).unwrap_or_default() + Rational::from_f64(d2).unwrap_or_default();
+    let bound =
+        Rational::from_f64(d1).unwrap_or_default() + Rational::from_f64(d2).unwrap_or_default();
     let mut failures = Vec::new();
     let mut max_error: f64 = 0.0;
     for v in 0..mesh.n_vertices() {
@@ -93,7 +94,9 @@ pub fn check_uniqueness(
     let a = certified(mesh, lengths, targets, None, bits, tolerance)?;
     let b = certified(mesh, lengths, targets, Some(start), bits, tolerance)?;
     match (a, b) {
-        (Ok((p1, d1)), Ok((p2, d2))) => Ok(compare_normalized(mesh, &p1.data.u, d1, &p2.data.u, d2)),
+        (Ok((p1, d1)), Ok((p2, d2))) => {
+            Ok(compare_normalized(mesh, &p1.data.u, d1, &p2.data.u, d2))
+        }
         (Err(r), _) | (_, Err(r)) => Ok(Verdict::Undecided {
             bits_tried: bits,
             witnesses: vec![Witness {

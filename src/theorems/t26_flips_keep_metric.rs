@@ -40,7 +40,13 @@ pub fn check_flip_path(
         value: f64::NAN,
     };
     if l0.len() != t0.n_edges() || s.len() != t0.n_vertices() || t.len() != t0.n_vertices() {
-        return Verdict::certified(vec![surface("one length per edge and one factor per vertex are required".into())], vec![], 0);
+        return Verdict::certified(
+            vec![surface(
+                "one length per edge and one factor per vertex are required".into(),
+            )],
+            vec![],
+            0,
+        );
     }
     let Some(l): Option<Vec<Rational>> = l0.iter().map(|&x| Rational::from_f64(x)).collect() else {
         return Verdict::certified(vec![surface("a length is not finite".into())], vec![], 0);
@@ -52,18 +58,30 @@ pub fn check_flip_path(
             || flip_ptolemy_exact(&mut m1, &mut a, e).is_err()
             || flip_ptolemy_exact(&mut m2, &mut b, e).is_err()
         {
-            return Verdict::certified(vec![surface(format!("flip {k} (e{}) cannot be performed", e.0))], vec![], 0);
+            return Verdict::certified(
+                vec![surface(format!("flip {k} (e{}) cannot be performed", e.0))],
+                vec![],
+                0,
+            );
         }
         let bits = rational_bits(&a[e.idx()]).max(rational_bits(&b[e.idx()]));
         if bits > MAX_REPLAY_BITS {
             return Verdict::Undecided {
                 bits_tried: 0,
-                witnesses: vec![surface(format!("exact lengths past {MAX_REPLAY_BITS} bits at flip {k}"))],
+                witnesses: vec![surface(format!(
+                    "exact lengths past {MAX_REPLAY_BITS} bits at flip {k}"
+                ))],
             };
         }
     }
     if m1.face_list() != final_mesh.face_list() {
-        return Verdict::certified(vec![surface("the sequence does not reach the final triangulation".into())], vec![], 0);
+        return Verdict::certified(
+            vec![surface(
+                "the sequence does not reach the final triangulation".into(),
+            )],
+            vec![],
+            0,
+        );
     }
     let b = scale(&m2, &b, t);
     let failures: Vec<Witness> = a
@@ -73,7 +91,11 @@ pub fn check_flip_path(
         .filter(|(_, (x, y))| x != y)
         .map(|(e, (x, y))| Witness {
             element: format!("e{e}"),
-            detail: format!("scale then flip gives {:e}, flip then scale gives {:e}", nearest_f64(x), nearest_f64(y)),
+            detail: format!(
+                "scale then flip gives {:e}, flip then scale gives {:e}",
+                nearest_f64(x),
+                nearest_f64(y)
+            ),
             value: nearest_f64(x) - nearest_f64(y),
         })
         .collect();

@@ -137,7 +137,9 @@ pub(crate) fn prepare(
     // Base lengths of T, enclosed (T28: Ptolemy flips commute with scaling).
     let (mesh, base) = carry_lengths::<I>(&data.t0, &data.l0, &data.flip_sequence, prec)?;
     if let Some(e) = base.iter().position(|x| x.sign() != Some(Sign::Positive)) {
-        return Ok(Err(format!("carried length of e{e} not enclosed as positive")));
+        return Ok(Err(format!(
+            "carried length of e{e} not enclosed as positive"
+        )));
     }
     let comps = Components::of(&mesh);
     let (free, free_idx) = comps.free_index();
@@ -186,7 +188,9 @@ pub(crate) fn prepare(
     }
     let laplacian = cotan_laplacian(&mesh, &lb);
     if let Some((i, j, _)) = laplacian.entries().find(|(_, _, w)| !w.is_valid()) {
-        return Ok(Err(format!("cotan Laplacian entry ({i}, {j}) not enclosed")));
+        return Ok(Err(format!(
+            "cotan Laplacian entry ({i}, {j}) not enclosed"
+        )));
     }
     // The residual at u, enclosed.
     let lp = scaled(&mesh, &base, &point);
@@ -259,7 +263,7 @@ pub fn check_certificate(
         return undecided("no verified positive lower bound on the Hessian's eigenvalues".into());
     };
     let mu = -up(rad_norm - bound.lambda_min); // μ ≤ λ_min − ‖H_rad‖ (rounded down)
-    if !(mu > 0.0) {
+    if mu.is_nan() || mu <= 0.0 {
         return undecided(format!(
             "the Hessian's variation over the box ({rad_norm:e}) exceeds its eigenvalue bound ({:e})",
             bound.lambda_min
@@ -269,7 +273,11 @@ pub fn check_certificate(
     let mut sum = Mpfr::from_f64(0.0, prec);
     for g in &p.residual {
         let (lo, hi) = (g.lo().abs(), g.hi().abs());
-        let mag = if lo.as_float() > hi.as_float() { lo } else { hi };
+        let mag = if lo.as_float() > hi.as_float() {
+            lo
+        } else {
+            hi
+        };
         sum = sum.add_up(&mag.mul_up(&mag));
     }
     let gamma = sum.sqrt_up();
@@ -309,7 +317,13 @@ fn smallest_eigenvalue_estimate(
     };
     let n = mesh.n_vertices();
     let mut x: Vec<f64> = (0..n)
-        .map(|v| if comps.is_root(v) { 0.0 } else { 1.0 + (v % 7) as f64 / 7.0 })
+        .map(|v| {
+            if comps.is_root(v) {
+                0.0
+            } else {
+                1.0 + (v % 7) as f64 / 7.0
+            }
+        })
         .collect();
     let mut lambda = 0.0;
     for _ in 0..30 {
@@ -318,7 +332,7 @@ fn smallest_eigenvalue_estimate(
         let y = newton_direction(&f, &minus, comps);
         let ny = y.iter().map(|a| a * a).sum::<f64>().sqrt();
         let nx = x.iter().map(|a| a * a).sum::<f64>().sqrt();
-        if !(ny > 0.0) {
+        if ny.is_nan() || ny <= 0.0 {
             return 0.0;
         }
         lambda = nx / ny;
@@ -349,11 +363,10 @@ pub fn prove(
     let prec =
         Precision::new(u64::from(bits)).map_err(|_| CertificateError::Bits(u64::from(bits)))?;
     let r = super::refine::refine::<Mpfr>(sol, prec, tolerance, 30)?;
-    let u: Vec<Rational> = r
-        .u
-        .iter()
-        .map(|x| x.to_rational().unwrap_or_default())
-        .collect();
+    let u: Vec<Rational> =
+        r.u.iter()
+            .map(|x| x.to_rational().unwrap_or_default())
+            .collect();
     let n = sol.u.len().max(1) as f64;
     let floor = 2f64.powi(-(bits.min(1000) as i32) + 20);
     let estimate = (r.residual_max() * n.sqrt()).max(floor);

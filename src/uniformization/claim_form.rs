@@ -8,7 +8,9 @@
 //! triples, checked) and `residual_bound` (a claimed upper bound on `‖Θ − θ(u)‖₂` over the
 //! free vertices, checked). `max_bits` is the interval precision of the re-check.
 
-use super::certificate::{check_certificate, CertificateData, CertificateError, CertificateOutcome};
+use super::certificate::{
+    check_certificate, CertificateData, CertificateError, CertificateOutcome,
+};
 use super::refine::carry_lengths;
 use super::targets::Targets;
 use crate::io::json::{edge_order, to_value};
@@ -94,7 +96,12 @@ pub fn exact_decimal(q: &Rational) -> Option<String> {
 
 /// The certificate `data` as a `uniformization` claim at `bits`, with the final faces and
 /// a residual bound.
-pub fn to_claim(data: &CertificateData, final_faces: &[[u32; 3]], residual_bound: f64, bits: u32) -> Value {
+pub fn to_claim(
+    data: &CertificateData,
+    final_faces: &[[u32; 3]],
+    residual_bound: f64,
+    bits: u32,
+) -> Value {
     let lengths: Vec<Rational> = data
         .l0
         .iter()
@@ -140,7 +147,12 @@ pub fn validate(surface: &Surface, claim: &UniformizationClaim) -> Result<(), Cl
             return Err(ClaimFormError::NotBinary64 { index: k });
         }
     }
-    if let Some((position, &index)) = claim.flips.iter().enumerate().find(|(_, &i)| i >= order.len()) {
+    if let Some((position, &index)) = claim
+        .flips
+        .iter()
+        .enumerate()
+        .find(|(_, &i)| i >= order.len())
+    {
         return Err(ClaimFormError::FlipIndex {
             position,
             index,
@@ -148,10 +160,12 @@ pub fn validate(surface: &Surface, claim: &UniformizationClaim) -> Result<(), Cl
         });
     }
     if !surface.mesh.is_closed() {
-        return Err(CertificateError::from(super::error::UniformizeError::NotClosed {
-            edges: surface.mesh.n_boundary_edges(),
-        })
-        .into());
+        return Err(
+            CertificateError::from(super::error::UniformizeError::NotClosed {
+                edges: surface.mesh.n_boundary_edges(),
+            })
+            .into(),
+        );
     }
     Targets::from_multiples_of_pi(claim.targets_over_pi.clone())
         .validate(&surface.mesh)
@@ -199,7 +213,9 @@ pub fn recheck(
     for e in mesh.edges() {
         if let Some(q) = QuadEdges::of(mesh, e) {
             if delaunay_sign_squared(q.lengths(&sq)) == Sign::Negative {
-                return Err(ClaimFormError::NotDelaunay { index: user[e.idx()] });
+                return Err(ClaimFormError::NotDelaunay {
+                    index: user[e.idx()],
+                });
             }
         }
     }
@@ -222,7 +238,8 @@ pub fn recheck(
         u: claim.u.clone(),
         radius: claim.radius.clone(),
     };
-    let prec = Precision::new(u64::from(bits)).map_err(|_| CertificateError::Bits(u64::from(bits)))?;
+    let prec =
+        Precision::new(u64::from(bits)).map_err(|_| CertificateError::Bits(u64::from(bits)))?;
     let (final_mesh, _) = carry_lengths::<Mpfr>(&data.t0, &data.l0, &data.flip_sequence, prec)
         .map_err(CertificateError::from)?;
     if final_mesh.face_list() != claim.final_faces {

@@ -13,18 +13,20 @@ pub struct Components {
     pub roots: Vec<usize>,
 }
 
+/// The representative of `x` in the union–find forest `p` (with path halving).
+fn find(p: &mut [usize], mut x: usize) -> usize {
+    while p[x] != x {
+        p[x] = p[p[x]];
+        x = p[x];
+    }
+    x
+}
+
 impl Components {
     /// The components of `mesh`, numbered in the order of their smallest vertex.
     pub fn of(mesh: &Mesh) -> Components {
         let n = mesh.n_vertices();
         let mut parent: Vec<usize> = (0..n).collect();
-        fn find(p: &mut [usize], mut x: usize) -> usize {
-            while p[x] != x {
-                p[x] = p[p[x]];
-                x = p[x];
-            }
-            x
-        }
         for e in mesh.edges() {
             let h = e.halfedge();
             let (a, b) = (mesh.tail(h).idx(), mesh.tip(h).idx());
@@ -38,13 +40,13 @@ impl Components {
         let mut index = vec![usize::MAX; n];
         let mut roots = Vec::new();
         let mut of_vertex = vec![0; n];
-        for v in 0..n {
+        for (v, slot) in of_vertex.iter_mut().enumerate() {
             let r = find(&mut parent, v);
             if index[r] == usize::MAX {
                 index[r] = roots.len();
                 roots.push(r);
             }
-            of_vertex[v] = index[r];
+            *slot = index[r];
         }
         Components { of_vertex, roots }
     }
@@ -81,9 +83,9 @@ impl Components {
     pub fn free_index(&self) -> (Vec<usize>, Vec<Option<usize>>) {
         let mut free = Vec::new();
         let mut idx = vec![None; self.of_vertex.len()];
-        for v in 0..self.of_vertex.len() {
+        for (v, slot) in idx.iter_mut().enumerate() {
             if !self.is_root(v) {
-                idx[v] = Some(free.len());
+                *slot = Some(free.len());
                 free.push(v);
             }
         }

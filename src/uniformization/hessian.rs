@@ -24,13 +24,20 @@ pub struct GroundedHessian {
 
 /// `−L` restricted to the free vertices (`free_idx[v]`), lower triangle, from the cotan
 /// Laplacian of `lengths` on `mesh`.
-pub fn grounded_hessian(mesh: &Mesh, lengths: &[f64], free_idx: &[Option<usize>]) -> GroundedHessian {
+pub fn grounded_hessian(
+    mesh: &Mesh,
+    lengths: &[f64],
+    free_idx: &[Option<usize>],
+) -> GroundedHessian {
     let l = cotan_laplacian(mesh, lengths);
     grounded_from_laplacian(&l, free_idx)
 }
 
 /// `−L` restricted to the free vertices, lower triangle.
-pub fn grounded_from_laplacian(l: &SparseMatrix<f64>, free_idx: &[Option<usize>]) -> GroundedHessian {
+pub fn grounded_from_laplacian(
+    l: &SparseMatrix<f64>,
+    free_idx: &[Option<usize>],
+) -> GroundedHessian {
     let n = free_idx.iter().filter(|x| x.is_some()).count();
     let mut t = Vec::new();
     for (i, j, v) in l.entries() {
@@ -40,8 +47,8 @@ pub fn grounded_from_laplacian(l: &SparseMatrix<f64>, free_idx: &[Option<usize>]
             }
         }
     }
-    let matrix = SparseColMat::try_new_from_triplets(n, n, &t)
-        .expect("indices in range by construction");
+    let matrix =
+        SparseColMat::try_new_from_triplets(n, n, &t).expect("indices in range by construction");
     GroundedHessian { matrix }
 }
 

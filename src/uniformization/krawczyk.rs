@@ -100,8 +100,10 @@ pub fn krawczyk(data: &CertificateData, bits: u32) -> Result<KrawczykOutcome, Ce
         });
     };
     // An f64 radius not above the certificate's (the box checked by `prepare`).
-    let rad = rug::Float::with_val_round(53, &data.radius, Round::Down).0.to_f64();
-    if !(rad > 0.0) {
+    let rad = rug::Float::with_val_round(53, &data.radius, Round::Down)
+        .0
+        .to_f64();
+    if rad.is_nan() || rad <= 0.0 {
         return Ok(KrawczykOutcome::Undecided {
             reason: "radius underflows binary64".into(),
         });
@@ -110,22 +112,30 @@ pub fn krawczyk(data: &CertificateData, bits: u32) -> Result<KrawczykOutcome, Ce
     let g: Vec<F> = p.residual.iter().map(outward).collect();
     let zero = F::new(0.0, 0.0);
     let mut width: f64 = 0.0;
-    for i in 0..n {
+    for (i, ri) in r.iter().enumerate() {
         // c_i = e_i − (R J)_i, as a dense interval row.
-        let mut c: Vec<F> = (0..n).map(|j| if i == j { F::new(1.0, 1.0) } else { zero.clone() }).collect();
+        let mut c: Vec<F> = (0..n)
+            .map(|j| {
+                if i == j {
+                    F::new(1.0, 1.0)
+                } else {
+                    zero.clone()
+                }
+            })
+            .collect();
         let mut k = zero.clone();
-        for (m, &rim) in r[i].iter().enumerate() {
+        for (m, &rim) in ri.iter().enumerate() {
             if rim == 0.0 {
                 continue;
             }
             let rim_i = F::new(rim, rim);
-            k = k - &(rim_i.clone() * &g[m]);
+            k -= &(rim_i.clone() * &g[m]);
             for (j, jmj) in &jac[m] {
                 c[*j] = c[*j].clone() - &(rim_i.clone() * jmj);
             }
         }
         for cj in &c {
-            k = k + &(cj.clone() * &y);
+            k += &(cj.clone() * &y);
         }
         if !(k.is_valid() && *k.lo() > -rad && *k.hi() < rad) {
             return Ok(KrawczykOutcome::Undecided {

@@ -20,5 +20,7 @@ pub mod targets;
 pub mod verified_cholesky;
 
 pub use error::UniformizeError;
-pub use newton::{uniformize, uniformize_with_progress, StepReport, Stop, Uniformization, UniformizeOptions};
+pub use newton::{
+    uniformize, uniformize_with_progress, StepReport, Stop, Uniformization, UniformizeOptions,
+};
 pub use targets::Targets;

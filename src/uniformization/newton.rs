@@ -24,7 +24,7 @@ use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOption
 use crate::algorithms::flips::flip_ptolemy;
 use crate::geometry::cone_angles::cone_angles;
 use crate::mesh::{Edge, Mesh};
-use crate::scalar::exp_length::MAX_LOG_SCALE;
+use crate::scalar::exp_length::{ExpLength, MAX_LOG_SCALE};
 
 /// Solver options.
 #[derive(Clone, Debug)]
@@ -132,7 +132,7 @@ pub(crate) fn evaluate(
     u: &[f64],
     theta_target: &[f64],
 ) -> Result<Evaluation, String> {
-    if let Some(v) = u.iter().position(|x| !(x.abs() <= MAX_LOG_SCALE)) {
+    if let Some(v) = u.iter().position(|x| x.is_nan() || x.abs() > MAX_LOG_SCALE) {
         return Err(format!("u at v{v} is {} (beyond 2²⁰)", u[v]));
     }
     let mut m = mesh.clone();
@@ -155,7 +155,7 @@ pub(crate) fn evaluate(
         return Err(format!("carried base length of e{e} is {}", b[e]));
     }
     // Angles are invariant under a global scale: shift by the largest exponent.
-    let top = scaled.iter().map(|l| l.exponent()).max().unwrap_or(0);
+    let top = scaled.iter().map(ExpLength::exponent).max().unwrap_or(0);
     let lengths: Vec<f64> = scaled.iter().map(|l| l.shifted(top)).collect();
     if let Some(e) = lengths.iter().position(|x| !x.is_normal()) {
         return Err(format!(
@@ -166,7 +166,9 @@ pub(crate) fn evaluate(
     let mut grad = Vec::with_capacity(theta.len());
     for (v, (t, th)) in theta_target.iter().zip(&theta).enumerate() {
         if !th.is_finite() {
-            return Err(format!("angle sum at v{v} undefined (a face violates the triangle inequality)"));
+            return Err(format!(
+                "angle sum at v{v} undefined (a face violates the triangle inequality)"
+            ));
         }
         grad.push(t - th);
     }
@@ -232,6 +234,7 @@ pub fn uniformize(
 }
 
 /// [`uniformize`], calling `progress` after every accepted step.
+#[allow(clippy::too_many_lines)] // one Newton loop with its line search, read top to bottom
 pub fn uniformize_with_progress(
     mesh: &Mesh,
     lengths: &[f64],
@@ -249,7 +252,7 @@ pub fn uniformize_with_progress(
                     got: s.len(),
                 });
             }
-            if let Some(v) = s.iter().position(|x| !(x.abs() <= MAX_LOG_SCALE)) {
+            if let Some(v) = s.iter().position(|x| x.is_nan() || x.abs() > MAX_LOG_SCALE) {
                 return Err(UniformizeError::BadStart {
                     vertex: v as u32,
                     value: s[v],
@@ -261,7 +264,12 @@ pub fn uniformize_with_progress(
     // T₀: Euclidean flips to intrinsic Delaunay (T21, T23).
     let mut t0 = mesh.clone();
     let mut l0 = lengths.to_vec();
-    let rep = flip_to_delaunay(&mut t0, &mut l0, FlipKind::Euclidean, &FlipOptions::default())?;
+    let rep = flip_to_delaunay(
+        &mut t0,
+        &mut l0,
+        FlipKind::Euclidean,
+        &FlipOptions::default(),
+    )?;
     if !rep.all_certified_delaunay() {
         return Err(UniformizeError::InitialNotDelaunay {
             undecided: rep.undecided.len() + rep.refused.len(),
@@ -303,7 +311,14 @@ pub fn uniformize_with_progress(
                 grad: vec![f64::NAN; t0.n_vertices()],
                 flips: Vec::new(),
             };
-            return Ok(finish(ev, u, steps, sequence, Stop::DegenerateStep(reason), &cache));
+            return Ok(finish(
+                ev,
+                u,
+                steps,
+                sequence,
+                Stop::DegenerateStep(reason),
+                &cache,
+            ));
         }
     };
     sequence.extend_from_slice(&ev.flips);
@@ -317,7 +332,14 @@ pub fn uniformize_with_progress(
         let h = grounded_hessian(&ev.mesh, &ev.lengths, &free_idx);
         let Some(factor) = cache.factor(&h) else {
             let reason = "the grounded Hessian is not numerically positive definite".to_string();
-            return Ok(finish(ev, u, steps, sequence, Stop::DegenerateStep(reason), &cache));
+            return Ok(finish(
+                ev,
+                u,
+                steps,
+                sequence,
+                Stop::DegenerateStep(reason),
+                &cache,
+            ));
         };
         let d = newton_direction(&factor, &ev.grad, &comps);
         let n0 = norm2(&ev.grad);
@@ -345,7 +367,14 @@ pub fn uniformize_with_progress(
                 opts.max_halvings,
                 max_abs(&ev.grad)
             );
-            return Ok(finish(ev, u, steps, sequence, Stop::DegenerateStep(reason), &cache));
+            return Ok(finish(
+                ev,
+                u,
+                steps,
+                sequence,
+                Stop::DegenerateStep(reason),
+                &cache,
+            ));
         };
         u = trial;
         sequence.extend_from_slice(&new.flips);

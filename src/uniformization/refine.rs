@@ -47,7 +47,9 @@ pub enum RefineError {
         edge: u32,
     },
     /// The grounded Hessian could not be factored.
-    #[error("the grounded Hessian on the final triangulation is not numerically positive definite")]
+    #[error(
+        "the grounded Hessian on the final triangulation is not numerically positive definite"
+    )]
     Hessian,
     /// An angle sum is undefined (a face of the final triangulation is not a triangle).
     #[error("angle sum at v{vertex} undefined at the refined u")]

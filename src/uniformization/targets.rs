@@ -90,7 +90,7 @@ impl Targets {
                 sum += Rational::from(2) - &self.over_pi[v];
             }
             let chi = comps.euler_characteristic(mesh, c);
-            if sum != Rational::from(2 * chi) {
+            if sum != 2 * chi {
                 return Err(UniformizeError::GaussBonnet {
                     root: root as u32,
                     sum_over_pi: sum.to_string(),

@@ -60,7 +60,13 @@ fn ordering(a: &SymmetricLower) -> Vec<usize> {
     let mut perm_inv = vec![0usize; n];
     let mut buf = faer::dyn_stack::MemBuffer::new(amd::order_scratch::<usize>(n, row_idx.len()));
     let stack = faer::dyn_stack::MemStack::new(&mut buf);
-    match amd::order(&mut perm, &mut perm_inv, sym, amd::Control::default(), stack) {
+    match amd::order(
+        &mut perm,
+        &mut perm_inv,
+        sym,
+        amd::Control::default(),
+        stack,
+    ) {
         Ok(_) => perm,
         Err(_) => identity(),
     }
@@ -79,6 +85,11 @@ pub struct EigenLowerBound {
 
 /// Factor `fl(PAPᵀ − σI)` and return the rigorous bound `λ_min(A) ≥ σ − error`, or `None`
 /// when a pivot is not positive (no conclusion). proof: B70
+#[allow(
+    clippy::too_many_lines,
+    clippy::needless_range_loop,
+    clippy::items_after_statements
+)] // the factorization reads as in CSparse
 pub fn lambda_min_lower_bound(a: &SymmetricLower, sigma: f64) -> Option<EigenLowerBound> {
     let n = a.n;
     if n == 0 {

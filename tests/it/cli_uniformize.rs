@@ -24,10 +24,26 @@ fn t24_cli_uniformize_writes_a_certificate_that_certify_rechecks() {
     let surf = surface_file(&d, "torus", m, &l);
     let cert = d.join("cert.json").display().to_string();
     let out = penner(&["uniformize", &surf, "--flat", "-o", &cert]);
-    assert_eq!(out.status.code(), Some(0), "{}{}", text(&out.stdout), text(&out.stderr));
-    assert!(text(&out.stdout).contains("certified"), "{}", text(&out.stdout));
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}{}",
+        text(&out.stdout),
+        text(&out.stderr)
+    );
+    assert!(
+        text(&out.stdout).contains("certified"),
+        "{}",
+        text(&out.stdout)
+    );
     let out = penner(&["certify", &cert]);
-    assert_eq!(out.status.code(), Some(0), "{}{}", text(&out.stdout), text(&out.stderr));
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}{}",
+        text(&out.stdout),
+        text(&out.stderr)
+    );
     let answer: Value = serde_json::from_str(&text(&out.stdout)).unwrap();
     assert_eq!(answer["verdict"], "holds");
     assert_eq!(answer["kind"], "uniformization");
@@ -35,7 +51,13 @@ fn t24_cli_uniformize_writes_a_certificate_that_certify_rechecks() {
     // Negative control: u changed at one vertex by 1e-6 → not certified (exit 2).
     let mut claim: Value = serde_json::from_str(&std::fs::read_to_string(&cert).unwrap()).unwrap();
     let old = claim["u"][1].as_str().unwrap().to_string();
-    let moved = format!("{}", penner::io::json::exact_number(&claim["u"][1], "u").unwrap().to_f64() + 1e-6);
+    let moved = format!(
+        "{}",
+        penner::io::json::exact_number(&claim["u"][1], "u")
+            .unwrap()
+            .to_f64()
+            + 1e-6
+    );
     assert_ne!(old, moved);
     claim["u"][1] = Value::String(moved);
     let bad = d.join("bad.json");
@@ -47,7 +69,11 @@ fn t24_cli_uniformize_writes_a_certificate_that_certify_rechecks() {
     std::fs::write(&bad, claim.to_string()).unwrap();
     let out = penner(&["certify", &bad.display().to_string()]);
     assert_eq!(out.status.code(), Some(3), "{}", text(&out.stdout));
-    assert!(text(&out.stderr).contains("flips[0]"), "{}", text(&out.stderr));
+    assert!(
+        text(&out.stderr).contains("flips[0]"),
+        "{}",
+        text(&out.stderr)
+    );
     // The binary never overwrites: a second run to the same file exits 4.
     let out = penner(&["uniformize", &surf, "--flat", "-o", &cert]);
     assert_eq!(out.status.code(), Some(4), "{}", text(&out.stderr));
@@ -62,11 +88,19 @@ fn t24_cli_uniformize_bad_input_is_typed() {
     // Flat targets on a sphere violate Gauss–Bonnet.
     let out = penner(&["uniformize", &surf, "--flat"]);
     assert_eq!(out.status.code(), Some(3));
-    assert!(text(&out.stderr).contains("Gauss–Bonnet"), "{}", text(&out.stderr));
+    assert!(
+        text(&out.stderr).contains("Gauss–Bonnet"),
+        "{}",
+        text(&out.stderr)
+    );
     // No targets at all.
     let out = penner(&["uniformize", &surf]);
     assert_eq!(out.status.code(), Some(3));
-    assert!(text(&out.stderr).contains("--targets"), "{}", text(&out.stderr));
+    assert!(
+        text(&out.stderr).contains("--targets"),
+        "{}",
+        text(&out.stderr)
+    );
     // A target file with a non-positive entry names the vertex.
     let mut t: Vec<String> = vec!["2".into(); n];
     t[0] = "-1".into();
@@ -84,7 +118,11 @@ fn t24_cli_uniformize_bad_input_is_typed() {
     std::fs::write(&tf, "[\"2\", \"2\"]").unwrap();
     let out = penner(&["uniformize", &surf, "--targets", &tf.display().to_string()]);
     assert_eq!(out.status.code(), Some(3));
-    assert!(text(&out.stderr).contains("2 targets"), "{}", text(&out.stderr));
+    assert!(
+        text(&out.stderr).contains("2 targets"),
+        "{}",
+        text(&out.stderr)
+    );
     // Admissible targets: four cones of π.
     let mut t: Vec<String> = vec!["2".into(); n];
     for v in [0, 5, 10, 20] {
@@ -92,5 +130,11 @@ fn t24_cli_uniformize_bad_input_is_typed() {
     }
     std::fs::write(&tf, serde_json::to_string(&t).unwrap()).unwrap();
     let out = penner(&["uniformize", &surf, "--targets", &tf.display().to_string()]);
-    assert_eq!(out.status.code(), Some(0), "{}{}", text(&out.stdout), text(&out.stderr));
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}{}",
+        text(&out.stdout),
+        text(&out.stderr)
+    );
 }
