@@ -86,6 +86,24 @@ pub enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Discrete uniformization with Ptolemy flips: solve θ(u) = Θ, refine, certify (T24, B71)
+    /// and write the certificate as a `uniformization` claim for `penner certify`.
+    Uniformize {
+        /// The surface file (closed; JSON, OBJ or OFF).
+        surface: PathBuf,
+        /// Target cone angles: a JSON array with Θ_i/π per vertex (exact strings or numbers).
+        #[arg(long, value_name = "FILE")]
+        targets: Option<PathBuf>,
+        /// Flat targets (Θ_i = 2π; tori).
+        #[arg(long)]
+        flat: bool,
+        /// Refinement and certificate precision: f64, dd, or MPFR bits.
+        #[arg(long, default_value = "256")]
+        precision: String,
+        /// Certificate output (must not exist).
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+    },
     /// The verification report on the built-in corpus (what `penner` alone runs).
     Report {
         /// Comma list of precisions.

@@ -10,6 +10,7 @@ mod input;
 mod output;
 mod replay;
 mod report;
+mod uniformize;
 
 use args::{Cli, Command};
 use clap::Parser;
@@ -53,6 +54,19 @@ pub fn main() -> ExitCode {
         }),
         Some(Command::Replay { file, json }) => replay::run(&file, json),
         Some(Command::Certify { claim }) => certify::run(&claim),
+        Some(Command::Uniformize {
+            surface,
+            targets,
+            flat,
+            precision,
+            output,
+        }) => uniformize::run(&uniformize::Options {
+            path: &surface,
+            targets: targets.as_deref(),
+            flat,
+            precision: &precision,
+            output: output.as_deref(),
+        }),
         Some(Command::Delaunay {
             surface,
             flips,

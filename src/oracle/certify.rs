@@ -269,5 +269,50 @@ pub fn certify(claim: &Claim) -> Result<Answer, Unsupported> {
             );
             Ok(summarize(claim, &b, &|_| "x".to_string(), "value of Л(x)"))
         }
+        Assertion::Uniformization(u) => Ok(uniformization(claim, u)),
+    }
+}
+
+/// `uniformization`: the re-check of `uniformization::claim_form::recheck` (B71) at the
+/// claim's `max_bits`. Never refuted (no proof of non-existence is attempted); a malformed
+/// certificate is one witness of an undecided answer.
+fn uniformization(
+    claim: &Claim,
+    u: &crate::uniformization::claim_form::UniformizationClaim,
+) -> Answer {
+    use crate::uniformization::certificate::CertificateOutcome;
+    let outcome = crate::uniformization::claim_form::recheck(&claim.surface, u, claim.max_bits);
+    let (verdict, max_discrepancy, witnesses) = match outcome {
+        Ok(CertificateOutcome::Holds { distance, .. }) => {
+            (ClaimVerdict::Holds, Some(distance), Vec::new())
+        }
+        Ok(CertificateOutcome::Undecided { reason }) => (
+            ClaimVerdict::Undecided,
+            None,
+            vec![Witness {
+                element: "surface".into(),
+                detail: reason,
+                value: f64::NAN,
+            }],
+        ),
+        Err(e) => (
+            ClaimVerdict::Undecided,
+            None,
+            vec![Witness {
+                element: "certificate".into(),
+                detail: e.to_string(),
+                value: f64::NAN,
+            }],
+        ),
+    };
+    Answer {
+        id: claim.id.clone(),
+        kind: claim.assertion.kind(),
+        verdict,
+        certified: verdict == ClaimVerdict::Holds,
+        precision_bits: claim.max_bits,
+        max_discrepancy,
+        counterexample: None,
+        witnesses,
     }
 }

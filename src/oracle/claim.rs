@@ -69,6 +69,10 @@ pub enum Assertion {
         /// Absolute tolerance ε ≥ 0.
         epsilon: Rational,
     },
+    /// `uniformization`: an exact solution `u*` of `θ(u*) = Θ` exists within `radius` (sup
+    /// norm) of the given `u`, with the surface's lengths carried by the given Ptolemy flips
+    /// (notes §1.5.3 Thm 12; certificate and re-check: `uniformization::claim_form`, B71).
+    Uniformization(crate::uniformization::claim_form::UniformizationClaim),
 }
 
 impl Assertion {
@@ -81,6 +85,7 @@ impl Assertion {
             Assertion::CotanLaplacian { .. } => "cotan_laplacian",
             Assertion::ConformalEquivalence { .. } => "conformal_equivalence",
             Assertion::Lobachevsky { .. } => "lobachevsky",
+            Assertion::Uniformization(_) => "uniformization",
         }
     }
 }
@@ -162,13 +167,24 @@ const COMMON_FIELDS: [&str; 5] = ["penner_claim", "id", "kind", "surface", "max_
 
 /// The claim kinds and the fields each may carry besides [`COMMON_FIELDS`]
 /// (`schema/claim-v1.schema.json`).
-const KIND_FIELDS: [(&str, &[&str]); 6] = [
+const KIND_FIELDS: [(&str, &[&str]); 7] = [
     ("intrinsic_delaunay", &[]),
     ("delaunay_flip", &["flips", "result", "epsilon"]),
     ("cone_angles", &["angles", "epsilon"]),
     ("cotan_laplacian", &["weights", "epsilon"]),
     ("conformal_equivalence", &["target", "u", "epsilon"]),
     ("lobachevsky", &["x", "y", "epsilon"]),
+    (
+        "uniformization",
+        &[
+            "targets",
+            "flips",
+            "u",
+            "radius",
+            "final_faces",
+            "residual_bound",
+        ],
+    ),
 ];
 
 /// The placeholder surface of claims about no surface (see [`Claim::surface`]).
@@ -281,7 +297,7 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
     let kind = v
         .get("kind")
         .and_then(Value::as_str)
-        .ok_or_else(|| err("kind: required, one of intrinsic_delaunay, delaunay_flip, cone_angles, cotan_laplacian, conformal_equivalence, lobachevsky"))?;
+        .ok_or_else(|| err("kind: required, one of intrinsic_delaunay, delaunay_flip, cone_angles, cotan_laplacian, conformal_equivalence, lobachevsky, uniformization"))?;
     let Some((_, own)) = KIND_FIELDS.iter().find(|(k, _)| *k == kind) else {
         return Err(err(format!("kind: unknown claim kind {kind:?}")));
     };
@@ -330,6 +346,7 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
                 target,
             }
         }
+        "uniformization" => uniformization_claim(v, &surface)?,
         other => return Err(err(format!("kind: unknown claim kind {other:?}"))),
     };
     Ok(Claim {
@@ -338,4 +355,49 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
         assertion,
         max_bits,
     })
+}
+
+/// The fields of a `uniformization` claim.
+fn uniformization_claim(v: &Value, surface: &Surface) -> Result<Assertion, ClaimError> {
+    let n = surface.mesh.n_vertices();
+    let required = |key: &str| v.get(key).ok_or_else(|| err(format!("{key}: required")));
+    let flips = required("flips")?
+        .as_array()
+        .ok_or_else(|| err("flips: expected an array of edge indices"))?
+        .iter()
+        .enumerate()
+        .map(|(k, x)| {
+            x.as_u64()
+                .map(|i| i as usize)
+                .ok_or_else(|| err(format!("flips[{k}]: expected a non-negative integer")))
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let final_faces = required("final_faces")?
+        .as_array()
+        .ok_or_else(|| err("final_faces: expected an array of vertex triples"))?
+        .iter()
+        .enumerate()
+        .map(|(k, f)| {
+            let t = f.as_array().filter(|t| t.len() == 3);
+            let ids: Option<Vec<u32>> = t.and_then(|t| {
+                t.iter()
+                    .map(|x| x.as_u64().and_then(|i| u32::try_from(i).ok()))
+                    .collect()
+            });
+            ids.map(|i| [i[0], i[1], i[2]])
+                .ok_or_else(|| err(format!("final_faces[{k}]: expected three vertex ids")))
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let radius = exact_number(required("radius")?, "radius")?;
+    let residual_bound = exact_number(required("residual_bound")?, "residual_bound")?;
+    let claim = crate::uniformization::claim_form::UniformizationClaim {
+        targets_over_pi: numbers(required("targets")?, "targets", n, "vertex")?,
+        flips,
+        u: numbers(required("u")?, "u", n, "vertex")?,
+        radius,
+        final_faces,
+        residual_bound,
+    };
+    crate::uniformization::claim_form::validate(surface, &claim).map_err(|e| err(e.to_string()))?;
+    Ok(Assertion::Uniformization(claim))
 }

@@ -1,0 +1,189 @@
+//! `penner uniformize SURFACE [--targets FILE | --flat] [--precision P] [-o cert.json]`:
+//! discrete uniformization with Ptolemy flips (T24), refined and certified (B71); the
+//! certificate is written as a `uniformization` claim that `penner certify` re-checks.
+
+use super::error::{code, CliError};
+use super::files::{create_new, read_text};
+use super::input::load_flip_case;
+use penner::io::json::exact_number;
+use penner::uniformization::certificate::{prove, CertificateOutcome};
+use penner::uniformization::claim_form::to_claim;
+use penner::uniformization::{uniformize_with_progress, Targets, UniformizeOptions};
+use std::fmt::Write as _;
+use std::io::{IsTerminal, Write};
+use std::path::Path;
+
+/// Options of `penner uniformize`.
+pub struct Options<'a> {
+    /// The surface file.
+    pub path: &'a Path,
+    /// Targets file (JSON array of Θ_i/π).
+    pub targets: Option<&'a Path>,
+    /// Flat targets.
+    pub flat: bool,
+    /// `f64`, `dd` or MPFR bits.
+    pub precision: &'a str,
+    /// Certificate output.
+    pub output: Option<&'a Path>,
+}
+
+/// Interval bits and refinement tolerance of a precision word: `f64` → 1e-10 and `dd` →
+/// 1e-28, certified at 128 bits; `N` → `2^{−(N−56)}` at N bits (MPFR-256: ≈ 6·10⁻⁶¹).
+fn bits_and_tolerance(p: &str) -> Result<(u32, f64), CliError> {
+    match p {
+        "f64" => Ok((128, 1e-10)),
+        "dd" => Ok((128, 1e-28)),
+        other => match other.parse::<u32>() {
+            Ok(b) if (128..=4096).contains(&b) => Ok((b, 2f64.powi(-(b as i32 - 56)))),
+            _ => Err(CliError::Input(format!(
+                "--precision: expected f64, dd or MPFR bits 128..=4096, got {other:?}"
+            ))),
+        },
+    }
+}
+
+fn read_targets(path: &Path, n: usize) -> Result<Targets, CliError> {
+    let shown = path.display().to_string();
+    let text = read_text(path)?;
+    let v: serde_json::Value = serde_json::from_str(&text)
+        .map_err(|e| CliError::Input(format!("{shown}:{}:{}: {e}", e.line(), e.column())))?;
+    let arr = v.as_array().ok_or_else(|| {
+        CliError::Input(format!(
+            "{shown}: expected a JSON array of Θ_i/π, one per vertex"
+        ))
+    })?;
+    if arr.len() != n {
+        return Err(CliError::Input(format!(
+            "{shown}: {} targets for {n} vertices (one Θ_i/π per vertex)",
+            arr.len()
+        )));
+    }
+    let q = arr
+        .iter()
+        .enumerate()
+        .map(|(i, x)| {
+            exact_number(x, &format!("[{i}]")).map_err(|e| CliError::Input(format!("{shown}: {e}")))
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(Targets::from_multiples_of_pi(q))
+}
+
+/// Run `penner uniformize`.
+#[allow(clippy::too_many_lines)] // solve, refine, certify and write, in order
+pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
+    let (bits, tolerance) = bits_and_tolerance(o.precision)?;
+    let shown = o.path.display().to_string();
+    let case = load_flip_case(o.path)?;
+    let mesh = case.mesh().clone();
+    let lengths: Vec<f64> = case.lengths::<f64>(());
+    let targets =
+        match (o.targets, o.flat) {
+            (Some(_), true) => {
+                return Err(CliError::Input(
+                    "give either --targets FILE or --flat, not both".into(),
+                ))
+            }
+            (Some(p), false) => read_targets(p, mesh.n_vertices())?,
+            (None, true) => Targets::flat(mesh.n_vertices()),
+            (None, false) => return Err(CliError::Input(
+                "the target angles are required: --targets FILE (a JSON array of Θ_i/π) or --flat"
+                    .into(),
+            )),
+        };
+    let bar = std::io::stderr().is_terminal().then(|| {
+        let b = indicatif::ProgressBar::new_spinner();
+        b.set_message(format!("uniformizing {shown} ({} faces)", mesh.n_faces()));
+        b.enable_steady_tick(std::time::Duration::from_millis(120));
+        b
+    });
+    let mut progress = |s: &penner::uniformization::StepReport| {
+        if let Some(b) = &bar {
+            b.set_message(format!(
+                "Newton step {}: max |Θ − θ| = {:.3e}, {} flips",
+                s.iteration, s.residual_max, s.flips
+            ));
+        }
+    };
+    let sol = uniformize_with_progress(
+        &mesh,
+        &lengths,
+        &targets,
+        &UniformizeOptions::default(),
+        &mut progress,
+    )
+    .map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "{shown}: {} Euclidean flips to intrinsic Delaunay; {} Newton steps, {} Ptolemy flips (per step: {:?})",
+        sol.euclidean_flips,
+        sol.steps.len(),
+        sol.flip_sequence.len(),
+        sol.steps.iter().map(|s| s.flips).collect::<Vec<_>>()
+    );
+    if !sol.converged() {
+        if let Some(b) = &bar {
+            b.finish_and_clear();
+        }
+        let _ = writeln!(
+            out,
+            "not converged ({:?}); max |Θ − θ| = {:e}; no certificate",
+            sol.stop, sol.residual_max
+        );
+        super::files::emit(&out)?;
+        return Ok(code::UNDECIDED);
+    }
+    if let Some(b) = &bar {
+        b.set_message(format!("refining and certifying at {bits} bits"));
+    }
+    let proof =
+        prove(&sol, bits, tolerance).map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    let _ = writeln!(
+        out,
+        "converged: max |Θ − θ| = {:e} (f64), {:e} after refinement at {bits} bits",
+        sol.residual_max, proof.residual_max
+    );
+    let (status, residual) = match &proof.outcome {
+        CertificateOutcome::Holds {
+            distance,
+            mu,
+            residual,
+        } => {
+            let _ = writeln!(
+        out,
+                "certified: an exact solution lies within {distance:e} (2-norm) of u; Hessian ≥ {mu:e} on the box; ‖Θ − θ(u)‖₂ ≤ {residual:e}"
+            );
+            (code::HOLDS, *residual)
+        }
+        CertificateOutcome::Undecided { reason } => {
+            let _ = writeln!(out, "not certified: {reason}");
+            (code::UNDECIDED, f64::INFINITY)
+        }
+    };
+    if let Some(path) = o.output {
+        if status == code::HOLDS {
+            let claim = to_claim(&proof.data, &sol.mesh.face_list(), residual, bits);
+            let text = serde_json::to_string_pretty(&claim).unwrap_or_default();
+            let mut f = create_new(path)?;
+            f.write_all(text.as_bytes())
+                .and_then(|()| f.write_all(b"\n"))
+                .map_err(|e| CliError::Write {
+                    path: path.to_path_buf(),
+                    reason: e.to_string(),
+                })?;
+            let _ = writeln!(
+                out,
+                "certificate written to {} (re-check: penner certify {})",
+                path.display(),
+                path.display()
+            );
+        } else {
+            out.push_str("no certificate written\n");
+        }
+    }
+    super::files::emit(&out)?;
+    Ok(status)
+}

@@ -1,0 +1,396 @@
+//! An a-posteriori proof that an exact solution `u*` of `θ(u*) = Θ` exists near a computed
+//! `u`, re-checkable from scratch from the data of [`CertificateData`]. proof: B71
+//!
+//! On the box `B = {u' : |u'_i − u_i| ≤ r}` (grounded vertices fixed) the check establishes
+//! with interval arithmetic (`Interval<Mpfr>`, directed rounding):
+//!
+//! 1. the final triangulation `T` (the input `T₀` and its lengths `ℓ⁰` carried by the
+//!    recorded Ptolemy flips, enclosed) is intrinsic Delaunay (`P ≥ 0`, B60) and every face a
+//!    strict triangle for every `u' ∈ B`, so `B` lies in one Penner cell and `E = E_T` there;
+//! 2. the grounded Hessian `H(u') = −L(u')` satisfies `H(u') ⪰ μI` on `B`, with
+//!    `μ = λ_min(H_mid) − ‖H_rad‖_∞`: `H_mid ± H_rad` the interval cotan Laplacian over `B`
+//!    and `λ_min(H_mid)` bounded below by a verified Cholesky factorization (B70);
+//! 3. the residual `g = Θ − θ(u)` on the free vertices is enclosed, `‖g‖₂ ≤ γ`.
+//!
+//! If `γ < μ·r` there is a zero `u*` of `∇E` with `‖u* − u‖₂ ≤ γ/μ` (B71: strong convexity
+//! on the Euclidean ball of radius `r` inside `B`), and `T` is Delaunay for `u*`.
+
+use super::components::Components;
+use super::error::UniformizeError;
+use super::hessian::{grounded_hessian, newton_direction, CholeskyCache};
+use super::newton::validate_input;
+use super::refine::{carry_lengths, scaled, RefineError};
+use super::targets::Targets;
+use super::verified_cholesky::{lambda_min_lower_bound, up, SymmetricLower};
+use crate::geometry::cone_angles::cone_angles;
+use crate::geometry::laplacian::{cotan_laplacian, SparseMatrix};
+use crate::mesh::{Edge, Mesh};
+use crate::predicates::delaunay::{enclose_p, QuadEdges};
+use crate::scalar::{Interval, IntervalBound, Mpfr, Precision, Real, Sign};
+use rug::float::Round;
+use rug::Rational;
+
+/// Everything a certificate states, all exact: `T₀` with its binary64 lengths, the
+/// targets, the Ptolemy flip sequence to the final triangulation, `u` (rationals) and the
+/// radius `r` of the box.
+#[derive(Clone, Debug)]
+pub struct CertificateData {
+    /// The intrinsic Delaunay input triangulation `T₀`.
+    pub t0: Mesh,
+    /// Its lengths `ℓ⁰`.
+    pub l0: Vec<f64>,
+    /// The targets.
+    pub targets: Targets,
+    /// Ptolemy flips from `T₀` to the final triangulation.
+    pub flip_sequence: Vec<Edge>,
+    /// The proposed log scale factors.
+    pub u: Vec<Rational>,
+    /// The radius of the box (sup norm) around `u`.
+    pub radius: Rational,
+}
+
+/// The outcome of [`check_certificate`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum CertificateOutcome {
+    /// An exact solution `u*` exists with `‖u* − u‖₂ ≤ distance` (so also in sup norm).
+    Holds {
+        /// The proved bound on `‖u* − u‖₂`.
+        distance: f64,
+        /// The proved lower bound `μ` on the grounded Hessian over the box.
+        mu: f64,
+        /// The enclosed `‖Θ − θ(u)‖₂` on the free vertices (upper bound).
+        residual: f64,
+    },
+    /// No conclusion, with the reason (never a claim that no solution exists).
+    Undecided {
+        /// Why.
+        reason: String,
+    },
+}
+
+/// A malformed certificate (as opposed to one that does not prove its claim).
+#[derive(Debug, thiserror::Error)]
+pub enum CertificateError {
+    /// The surface, lengths or targets are refused.
+    #[error(transparent)]
+    Input(#[from] UniformizeError),
+    /// The flip sequence does not replay.
+    #[error(transparent)]
+    Replay(#[from] RefineError),
+    /// Wrong number of scale factors.
+    #[error("{expected} scale factors expected (one per vertex), got {got}")]
+    ScaleCount {
+        /// Vertices.
+        expected: usize,
+        /// Given.
+        got: usize,
+    },
+    /// The radius is not positive.
+    #[error("radius {0} is not positive")]
+    Radius(String),
+    /// The precision is out of range.
+    #[error("precision of {0} bits out of range")]
+    Bits(u64),
+}
+
+pub(crate) type I = Interval<Mpfr>;
+
+pub(crate) fn to_f64_up(x: &Mpfr) -> f64 {
+    x.as_float().to_f64_round(Round::Up)
+}
+
+/// What both certifiers need: the final triangulation, the components, the interval
+/// cotan Laplacian over the box and the enclosed residual at `u` (free vertices, in order).
+pub(crate) struct Prepared {
+    pub mesh: Mesh,
+    pub comps: Components,
+    pub free: Vec<usize>,
+    pub free_idx: Vec<Option<usize>>,
+    /// Lengths over the box.
+    pub box_lengths: Vec<I>,
+    /// `L` over the box.
+    pub laplacian: SparseMatrix<I>,
+    /// `Θ_v − θ_v(u)` for the free vertices `v`, enclosed.
+    pub residual: Vec<I>,
+    pub prec: Precision,
+}
+
+/// Validate `data`, carry the lengths, and check the Penner cell on the box (B71 step 1);
+/// `Ok(Err(reason))` when a step is not certified.
+pub(crate) fn prepare(
+    data: &CertificateData,
+    bits: u32,
+) -> Result<Result<Prepared, String>, CertificateError> {
+    validate_input(&data.t0, &data.l0, &data.targets)?;
+    let n = data.t0.n_vertices();
+    if data.u.len() != n {
+        return Err(CertificateError::ScaleCount {
+            expected: n,
+            got: data.u.len(),
+        });
+    }
+    if data.radius <= 0 {
+        return Err(CertificateError::Radius(data.radius.to_string()));
+    }
+    let prec =
+        Precision::new(u64::from(bits)).map_err(|_| CertificateError::Bits(u64::from(bits)))?;
+    // Base lengths of T, enclosed (T28: Ptolemy flips commute with scaling).
+    let (mesh, base) = carry_lengths::<I>(&data.t0, &data.l0, &data.flip_sequence, prec)?;
+    if let Some(e) = base.iter().position(|x| x.sign() != Some(Sign::Positive)) {
+        return Ok(Err(format!(
+            "carried length of e{e} not enclosed as positive"
+        )));
+    }
+    let comps = Components::of(&mesh);
+    let (free, free_idx) = comps.free_index();
+    let point: Vec<I> = data.u.iter().map(|q| I::from_rational(q, prec)).collect();
+    let boxed: Vec<I> = data
+        .u
+        .iter()
+        .enumerate()
+        .map(|(v, q)| {
+            if comps.is_root(v) {
+                I::from_rational(q, prec)
+            } else {
+                let lo = I::from_rational(&Rational::from(q - &data.radius), prec);
+                let hi = I::from_rational(&Rational::from(q + &data.radius), prec);
+                I::new(lo.lo().clone(), hi.hi().clone())
+            }
+        })
+        .collect();
+    // 1. One Penner cell: strict triangles and Delaunay edges on the whole box.
+    let lb = scaled(&mesh, &base, &boxed);
+    for f in mesh.faces() {
+        let [a, b, c] = mesh.face_halfedges(f).map(|h| &lb[h.edge().idx()]);
+        for (x, y, z) in [(a, b, c), (b, c, a), (c, a, b)] {
+            let slack = y.clone() + z - x;
+            if slack.sign() != Some(Sign::Positive) {
+                return Ok(Err(format!(
+                    "face f{} not certified a strict triangle on the whole box",
+                    f.0
+                )));
+            }
+        }
+    }
+    for e in mesh.edges() {
+        let Some(q) = QuadEdges::of(&mesh, e) else {
+            continue;
+        };
+        let l = q.lengths(&lb).map(Clone::clone).to_array();
+        let p = enclose_p(&l);
+        let lo = p.lo().as_float();
+        if !(p.is_valid() && (lo.is_zero() || lo.is_sign_positive())) {
+            return Ok(Err(format!(
+                "edge e{} not certified Delaunay on the whole box",
+                e.0
+            )));
+        }
+    }
+    let laplacian = cotan_laplacian(&mesh, &lb);
+    if let Some((i, j, _)) = laplacian.entries().find(|(_, _, w)| !w.is_valid()) {
+        return Ok(Err(format!(
+            "cotan Laplacian entry ({i}, {j}) not enclosed"
+        )));
+    }
+    // The residual at u, enclosed.
+    let lp = scaled(&mesh, &base, &point);
+    let theta = cone_angles(&mesh, &lp);
+    let pi = I::pi(prec);
+    let mut residual = Vec::with_capacity(free.len());
+    for &v in &free {
+        let g = I::from_rational(&data.targets.over_pi()[v], prec) * &pi - &theta[v];
+        if !g.is_valid() {
+            return Ok(Err(format!("angle sum at v{v} not enclosed")));
+        }
+        residual.push(g);
+    }
+    Ok(Ok(Prepared {
+        mesh,
+        comps,
+        free,
+        free_idx,
+        box_lengths: lb,
+        laplacian,
+        residual,
+        prec,
+    }))
+}
+
+/// Check a certificate at `bits` of interval precision. proof: B71
+pub fn check_certificate(
+    data: &CertificateData,
+    bits: u32,
+) -> Result<CertificateOutcome, CertificateError> {
+    let p = match prepare(data, bits)? {
+        Ok(p) => p,
+        Err(reason) => return Ok(CertificateOutcome::Undecided { reason }),
+    };
+    let undecided = |reason: String| Ok(CertificateOutcome::Undecided { reason });
+    let prec = p.prec;
+    // 2. The Hessian over the box: midpoint and radius matrices of −L.
+    let mut entries = Vec::new();
+    let mut rad_row = vec![0.0f64; p.free.len()];
+    for (i, j, w) in p.laplacian.entries() {
+        let (Some(a), Some(b)) = (p.free_idx[i], p.free_idx[j]) else {
+            continue;
+        };
+        let h = -w.clone();
+        let mid = ((h.lo().clone() + h.hi()) * &h.lo().lit(0.5)).approx_f64();
+        let m = Mpfr::from_f64(mid, prec);
+        let rad = to_f64_up(&h.hi().sub_up(&m)).max(to_f64_up(&m.sub_up(h.lo())));
+        rad_row[a] = up(rad_row[a] + rad);
+        if a >= b {
+            entries.push((a, b, mid));
+        }
+    }
+    let rad_norm = rad_row.iter().copied().fold(0.0, f64::max);
+    let mid = SymmetricLower {
+        n: p.free.len(),
+        entries,
+    };
+    // An estimate of λ_min(H_mid) by inverse iteration, then verified shifts below it.
+    let estimate = smallest_eigenvalue_estimate(&p.mesh, &p.box_lengths, &p.free_idx, &p.comps);
+    let mut bound = None;
+    for frac in [0.5, 0.25, 0.0625] {
+        if let Some(b) = lambda_min_lower_bound(&mid, estimate * frac) {
+            if b.lambda_min > 0.0 {
+                bound = Some(b);
+                break;
+            }
+        }
+    }
+    let Some(bound) = bound else {
+        return undecided("no verified positive lower bound on the Hessian's eigenvalues".into());
+    };
+    let mu = -up(rad_norm - bound.lambda_min); // μ ≤ λ_min − ‖H_rad‖ (rounded down)
+    if mu.is_nan() || mu <= 0.0 {
+        return undecided(format!(
+            "the Hessian's variation over the box ({rad_norm:e}) exceeds its eigenvalue bound ({:e})",
+            bound.lambda_min
+        ));
+    }
+    // 3. ‖residual‖₂, rounded up.
+    let mut sum = Mpfr::from_f64(0.0, prec);
+    for g in &p.residual {
+        let (lo, hi) = (g.lo().abs(), g.hi().abs());
+        let mag = if lo.as_float() > hi.as_float() {
+            lo
+        } else {
+            hi
+        };
+        sum = sum.add_up(&mag.mul_up(&mag));
+    }
+    let gamma = sum.sqrt_up();
+    let mu_m = Mpfr::from_f64(mu, prec);
+    let distance = gamma.div_up(&mu_m);
+    let r = Mpfr::from_rational(&data.radius, prec);
+    // Strict: γ/μ < r (rounded up) implies γ < μr.
+    if distance.as_float() >= r.as_float() {
+        return undecided(format!(
+            "residual bound {:e} / μ {mu:e} = {:e} is not below the radius {:e}",
+            to_f64_up(&gamma),
+            to_f64_up(&distance),
+            r.approx_f64()
+        ));
+    }
+    Ok(CertificateOutcome::Holds {
+        distance: to_f64_up(&distance),
+        mu,
+        residual: to_f64_up(&gamma),
+    })
+}
+
+/// `λ_min` of the grounded Hessian at the midpoint lengths, estimated by inverse iteration
+/// (a heuristic that only picks the shift; the bound itself is verified).
+fn smallest_eigenvalue_estimate(
+    mesh: &Mesh,
+    lengths: &[I],
+    free_idx: &[Option<usize>],
+    comps: &Components,
+) -> f64 {
+    let top = lengths.iter().map(Real::approx_f64).fold(0.0, f64::max);
+    let lf: Vec<f64> = lengths.iter().map(|x| x.approx_f64() / top).collect();
+    let h = grounded_hessian(mesh, &lf, free_idx);
+    let mut cache = CholeskyCache::default();
+    let Some(f) = cache.factor(&h) else {
+        return 0.0;
+    };
+    let n = mesh.n_vertices();
+    let mut x: Vec<f64> = (0..n)
+        .map(|v| {
+            if comps.is_root(v) {
+                0.0
+            } else {
+                1.0 + (v % 7) as f64 / 7.0
+            }
+        })
+        .collect();
+    let mut lambda = 0.0;
+    for _ in 0..30 {
+        // y = H⁻¹ x (newton_direction solves H d = −g: pass g = −x).
+        let minus: Vec<f64> = x.iter().map(|a| -a).collect();
+        let y = newton_direction(&f, &minus, comps);
+        let ny = y.iter().map(|a| a * a).sum::<f64>().sqrt();
+        let nx = x.iter().map(|a| a * a).sum::<f64>().sqrt();
+        if ny.is_nan() || ny <= 0.0 {
+            return 0.0;
+        }
+        lambda = nx / ny;
+        x = y.iter().map(|a| a / ny).collect();
+    }
+    lambda
+}
+
+/// A proof attempt for a solution: the `u` and radius submitted and the outcome.
+#[derive(Clone, Debug)]
+pub struct Proof {
+    /// The certificate data (exact `u` and radius).
+    pub data: CertificateData,
+    /// The outcome of [`check_certificate`] on it.
+    pub outcome: CertificateOutcome,
+    /// `max |Θ − θ|` at the submitted `u` (as computed by the refinement, `f64`).
+    pub residual_max: f64,
+}
+
+/// Refine `sol` at `bits` of MPFR precision (to `tolerance`), then try to certify boxes of
+/// radius `10⁶` and `10¹⁰` times the residual's 2-norm estimate around the refined `u`
+/// (exact rationals of the MPFR values); the first that holds, or the last outcome.
+pub fn prove(
+    sol: &super::newton::Uniformization,
+    bits: u32,
+    tolerance: f64,
+) -> Result<Proof, CertificateError> {
+    let prec =
+        Precision::new(u64::from(bits)).map_err(|_| CertificateError::Bits(u64::from(bits)))?;
+    let r = super::refine::refine::<Mpfr>(sol, prec, tolerance, 30)?;
+    let u: Vec<Rational> =
+        r.u.iter()
+            .map(|x| x.to_rational().unwrap_or_default())
+            .collect();
+    let n = sol.u.len().max(1) as f64;
+    let floor = 2f64.powi(-(bits.min(1000) as i32) + 20);
+    let estimate = (r.residual_max() * n.sqrt()).max(floor);
+    let mut last = None;
+    for factor in [1e6, 1e10] {
+        let radius = Rational::from_f64(estimate * factor).unwrap_or_else(|| Rational::from(1));
+        let data = CertificateData {
+            t0: sol.initial_mesh.clone(),
+            l0: sol.initial_lengths.clone(),
+            targets: sol.targets.clone(),
+            flip_sequence: sol.flip_sequence.clone(),
+            u: u.clone(),
+            radius,
+        };
+        let outcome = check_certificate(&data, bits)?;
+        let done = matches!(outcome, CertificateOutcome::Holds { .. });
+        last = Some(Proof {
+            data,
+            outcome,
+            residual_max: r.residual_max(),
+        });
+        if done {
+            break;
+        }
+    }
+    Ok(last.expect("two attempts"))
+}

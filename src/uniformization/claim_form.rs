@@ -1,0 +1,261 @@
+//! The certificate as a `penner certify` claim of kind `uniformization` (protocol v1,
+//! `docs/oracle.md`): writing it, and re-checking it from scratch (B71).
+//!
+//! Fields besides the common ones: `targets` (`Θ_i/π`, exact strings, one per vertex),
+//! `flips` (the Ptolemy flips from the surface to the final triangulation, as indices into
+//! the surface's edge order — an edge keeps its index when flipped), `u` (exact decimal
+//! strings), `radius` (the sup-norm box), `final_faces` (the final triangulation's vertex
+//! triples, checked) and `residual_bound` (a claimed upper bound on `‖Θ − θ(u)‖₂` over the
+//! free vertices, checked). `max_bits` is the interval precision of the re-check.
+
+use super::certificate::{
+    check_certificate, CertificateData, CertificateError, CertificateOutcome,
+};
+use super::refine::carry_lengths;
+use super::targets::Targets;
+use crate::io::json::{edge_order, to_value};
+use crate::io::{Metric, Surface};
+use crate::mesh::Edge;
+use crate::predicates::delaunay::{delaunay_sign_squared, QuadEdges};
+use crate::scalar::{Mpfr, Precision, Sign};
+use rug::{Integer, Rational};
+use serde_json::{json, Value};
+
+/// The claim-specific fields of a `uniformization` claim, parsed.
+#[derive(Clone, Debug, PartialEq)]
+pub struct UniformizationClaim {
+    /// `Θ_i/π`, one per vertex.
+    pub targets_over_pi: Vec<Rational>,
+    /// Flips as indices into the surface's edge order.
+    pub flips: Vec<usize>,
+    /// The proposed `u`.
+    pub u: Vec<Rational>,
+    /// The radius of the box.
+    pub radius: Rational,
+    /// The final triangulation's faces, as claimed.
+    pub final_faces: Vec<[u32; 3]>,
+    /// The claimed bound on `‖Θ − θ(u)‖₂`.
+    pub residual_bound: Rational,
+}
+
+/// A malformed `uniformization` claim.
+#[derive(Debug, thiserror::Error)]
+pub enum ClaimFormError {
+    /// The certificate data are refused.
+    #[error(transparent)]
+    Certificate(#[from] CertificateError),
+    /// The surface's metric is not given by binary64 lengths.
+    #[error("surface: length {index} is not a binary64 number (a uniformization certificate gives its lengths as written by penner uniformize)")]
+    NotBinary64 {
+        /// Position in the surface's edge order.
+        index: usize,
+    },
+    /// Squared lengths were given.
+    #[error("surface: a uniformization certificate needs `lengths`, not `squared_lengths`")]
+    SquaredLengths,
+    /// A flip index is out of range.
+    #[error("flips[{position}]: edge index {index} out of range (the surface has {edges} edges)")]
+    FlipIndex {
+        /// Position in `flips`.
+        position: usize,
+        /// The index.
+        index: usize,
+        /// Edges.
+        edges: usize,
+    },
+    /// The surface is not intrinsic Delaunay.
+    #[error("surface: edge {index} is not intrinsic Delaunay (the flips of a certificate start from the Delaunay triangulation of the input)")]
+    NotDelaunay {
+        /// Position in the surface's edge order.
+        index: usize,
+    },
+    /// The flips do not reach `final_faces`.
+    #[error("final_faces: the flips reach a different triangulation")]
+    FinalFaces,
+}
+
+/// A dyadic rational `n/2ᵏ` as an exact decimal string; `None` for other denominators.
+pub fn exact_decimal(q: &Rational) -> Option<String> {
+    let d = q.denom();
+    let k = d.find_one(0)?;
+    if Integer::from(d >> k) != 1 {
+        return None;
+    }
+    // n/2ᵏ = n·5ᵏ/10ᵏ.
+    let digits = Integer::from(q.numer().abs_ref()) * Integer::from(Integer::u_pow_u(5, k));
+    let mut s = digits.to_string();
+    let k = k as usize;
+    if k > 0 {
+        if s.len() <= k {
+            s = format!("{}{s}", "0".repeat(k + 1 - s.len()));
+        }
+        s.insert(s.len() - k, '.');
+    }
+    Some(if *q < 0 { format!("-{s}") } else { s })
+}
+
+/// The certificate `data` as a `uniformization` claim at `bits`, with the final faces and
+/// a residual bound.
+pub fn to_claim(
+    data: &CertificateData,
+    final_faces: &[[u32; 3]],
+    residual_bound: f64,
+    bits: u32,
+) -> Value {
+    let lengths: Vec<Rational> = data
+        .l0
+        .iter()
+        .map(|&x| Rational::from_f64(x).unwrap_or_default())
+        .collect();
+    let surface = Surface {
+        mesh: data.t0.clone(),
+        metric: Metric::Lengths(lengths),
+        positions: None,
+        name: "uniformization input (intrinsic Delaunay)".into(),
+    };
+    let order = edge_order(&data.t0);
+    let mut user = vec![0usize; order.len()];
+    for (k, &e) in order.iter().enumerate() {
+        user[e] = k;
+    }
+    let dec = |q: &Rational| exact_decimal(q).unwrap_or_else(|| q.to_string());
+    json!({
+        "penner_claim": 1,
+        "kind": "uniformization",
+        "max_bits": bits,
+        "surface": to_value(&surface),
+        "targets": data.targets.over_pi().iter().map(ToString::to_string).collect::<Vec<_>>(),
+        "flips": data.flip_sequence.iter().map(|e| user[e.idx()]).collect::<Vec<_>>(),
+        "u": data.u.iter().map(dec).collect::<Vec<_>>(),
+        "radius": dec(&data.radius),
+        "final_faces": final_faces,
+        "residual_bound": dec(&Rational::from_f64(residual_bound).unwrap_or_default()),
+    })
+}
+
+/// The checks of a claim that need no arithmetic beyond ℚ: binary64 lengths, flip indices
+/// in range, the targets (count, positivity, Gauss–Bonnet), one `u` per vertex, a positive
+/// radius. A failure is bad input, named by field.
+pub fn validate(surface: &Surface, claim: &UniformizationClaim) -> Result<(), ClaimFormError> {
+    let Metric::Lengths(l) = &surface.metric else {
+        return Err(ClaimFormError::SquaredLengths);
+    };
+    let order = edge_order(&surface.mesh);
+    for (k, &e) in order.iter().enumerate() {
+        let q = &l[e];
+        if Rational::from_f64(q.to_f64()).as_ref() != Some(q) {
+            return Err(ClaimFormError::NotBinary64 { index: k });
+        }
+    }
+    if let Some((position, &index)) = claim
+        .flips
+        .iter()
+        .enumerate()
+        .find(|(_, &i)| i >= order.len())
+    {
+        return Err(ClaimFormError::FlipIndex {
+            position,
+            index,
+            edges: order.len(),
+        });
+    }
+    if !surface.mesh.is_closed() {
+        return Err(
+            CertificateError::from(super::error::UniformizeError::NotClosed {
+                edges: surface.mesh.n_boundary_edges(),
+            })
+            .into(),
+        );
+    }
+    Targets::from_multiples_of_pi(claim.targets_over_pi.clone())
+        .validate(&surface.mesh)
+        .map_err(CertificateError::from)?;
+    if claim.u.len() != surface.mesh.n_vertices() {
+        return Err(CertificateError::ScaleCount {
+            expected: surface.mesh.n_vertices(),
+            got: claim.u.len(),
+        }
+        .into());
+    }
+    if claim.radius <= 0 {
+        return Err(CertificateError::Radius(claim.radius.to_string()).into());
+    }
+    Ok(())
+}
+
+/// Re-check a `uniformization` claim about `surface` from scratch at `bits`: the surface
+/// is intrinsic Delaunay (exact signs, B63), the flips reach `final_faces`, then
+/// [`check_certificate`] (B71) and the residual bound. `Undecided` outcomes carry the
+/// reason; malformed claims are errors.
+pub fn recheck(
+    surface: &Surface,
+    claim: &UniformizationClaim,
+    bits: u32,
+) -> Result<CertificateOutcome, ClaimFormError> {
+    let mesh = &surface.mesh;
+    let Metric::Lengths(l) = &surface.metric else {
+        return Err(ClaimFormError::SquaredLengths);
+    };
+    let order = edge_order(mesh);
+    let mut user = vec![0usize; order.len()];
+    for (k, &e) in order.iter().enumerate() {
+        user[e] = k;
+    }
+    let mut l0 = Vec::with_capacity(l.len());
+    for (e, q) in l.iter().enumerate() {
+        let x = q.to_f64();
+        if Rational::from_f64(x).as_ref() != Some(q) {
+            return Err(ClaimFormError::NotBinary64 { index: user[e] });
+        }
+        l0.push(x);
+    }
+    let sq = surface.metric.squared();
+    for e in mesh.edges() {
+        if let Some(q) = QuadEdges::of(mesh, e) {
+            if delaunay_sign_squared(q.lengths(&sq)) == Sign::Negative {
+                return Err(ClaimFormError::NotDelaunay {
+                    index: user[e.idx()],
+                });
+            }
+        }
+    }
+    let mut flips = Vec::with_capacity(claim.flips.len());
+    for (position, &index) in claim.flips.iter().enumerate() {
+        let Some(&e) = order.get(index) else {
+            return Err(ClaimFormError::FlipIndex {
+                position,
+                index,
+                edges: order.len(),
+            });
+        };
+        flips.push(Edge(e as u32));
+    }
+    let data = CertificateData {
+        t0: mesh.clone(),
+        l0,
+        targets: Targets::from_multiples_of_pi(claim.targets_over_pi.clone()),
+        flip_sequence: flips,
+        u: claim.u.clone(),
+        radius: claim.radius.clone(),
+    };
+    let prec =
+        Precision::new(u64::from(bits)).map_err(|_| CertificateError::Bits(u64::from(bits)))?;
+    let (final_mesh, _) = carry_lengths::<Mpfr>(&data.t0, &data.l0, &data.flip_sequence, prec)
+        .map_err(CertificateError::from)?;
+    if final_mesh.face_list() != claim.final_faces {
+        return Err(ClaimFormError::FinalFaces);
+    }
+    let outcome = check_certificate(&data, bits)?;
+    if let CertificateOutcome::Holds { residual, .. } = &outcome {
+        let enclosed = Rational::from_f64(*residual).unwrap_or_default();
+        if enclosed > claim.residual_bound {
+            return Ok(CertificateOutcome::Undecided {
+                reason: format!(
+                    "the enclosed residual {residual:e} is not below the claimed residual_bound {:e}",
+                    claim.residual_bound.to_f64()
+                ),
+            });
+        }
+    }
+    Ok(outcome)
+}

@@ -1,0 +1,26 @@
+//! Discrete uniformization with Ptolemy flips (notes §1.5.3 Thms 9–12; MATH.md §7;
+//! T24–T26): find log scale factors `u` with prescribed cone angles `θ_i(u) = Θ_i` on a
+//! closed surface, the scaled metric `e^{(u_i+u_j)/2}·ℓ_ij` kept intrinsic Delaunay by
+//! Ptolemy flips.
+//!
+//! - [`newton`]: the `f64` Newton solver ([`uniformize`]), sparse Cholesky by faer;
+//! - [`refine`]: mixed-precision refinement (residuals in `Dd` or MPFR, `f64` factor);
+//! - [`certificate`]: an a-posteriori existence proof near a computed `u` (B70, B71);
+//! - [`targets`]: prescribed angles as exact multiples of π and Gauss–Bonnet.
+
+pub mod certificate;
+pub mod claim_form;
+pub mod components;
+pub mod error;
+pub mod hessian;
+pub mod krawczyk;
+pub mod newton;
+pub mod refine;
+pub mod targets;
+pub mod verified_cholesky;
+
+pub use error::UniformizeError;
+pub use newton::{
+    uniformize, uniformize_with_progress, StepReport, Stop, Uniformization, UniformizeOptions,
+};
+pub use targets::Targets;

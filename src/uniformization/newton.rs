@@ -1,0 +1,393 @@
+//! The `f64` Newton solver for discrete uniformization with Ptolemy flips (notes §1.5.3
+//! Thm 12; MATH.md §7; S20, GSC21).
+//!
+//! Convention: the input is first made intrinsic Delaunay by Euclidean flips (which keep
+//! its cone metric, T23); that triangulation `T₀` with its lengths `ℓ⁰` is the metric being
+//! uniformized. Then `u` moves, and at every `u` the scaled metric
+//! `ℓ̃_ij = e^{(u_i+u_j)/2}·ℓ_ij` is flipped to an intrinsic Delaunay triangulation with
+//! Ptolemy flips ([`flip_to_delaunay_scaled`]); Ptolemy flips commute with scaling (T28),
+//! so the base lengths are carried along by the same flips.
+//!
+//! Newton: `∇E = Θ − θ(u)` and `H = −L` on the current Delaunay triangulation, grounded at
+//! one vertex per component; `d = −H⁻¹∇E` by sparse Cholesky; a step `t ∈ {1, ½, ¼, …}` is
+//! accepted when `|∇E(u+td)|₂ < |∇E(u)|₂` and either the projected gradient
+//! `∇E(u+td)·d ≤ 0` (no overshoot of the minimum along `d`) or the residual at least halves
+//! (the overshoot of a Newton step near the solution is at the level of rounding). No
+//! energy-decrease test (it stalls at the working precision, MATH.md §7).
+
+use super::components::Components;
+use super::error::UniformizeError;
+use super::hessian::{grounded_hessian, newton_direction, CholeskyCache};
+use super::targets::Targets;
+use crate::algorithms::flip_scaled::flip_to_delaunay_scaled;
+use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
+use crate::algorithms::flips::flip_ptolemy;
+use crate::geometry::cone_angles::cone_angles;
+use crate::mesh::{Edge, Mesh};
+use crate::scalar::exp_length::{ExpLength, MAX_LOG_SCALE};
+
+/// Solver options.
+#[derive(Clone, Debug)]
+pub struct UniformizeOptions {
+    /// Stop when `max_i |Θ_i − θ_i| ≤ tolerance` (radians).
+    pub tolerance: f64,
+    /// At most this many Newton steps.
+    pub max_iterations: usize,
+    /// At most this many halvings of the step in one line search.
+    pub max_halvings: usize,
+    /// A starting `u` (default 0).
+    pub start: Option<Vec<f64>>,
+}
+
+impl Default for UniformizeOptions {
+    fn default() -> Self {
+        UniformizeOptions {
+            tolerance: 1e-10,
+            max_iterations: 100,
+            max_halvings: 40,
+            start: None,
+        }
+    }
+}
+
+/// One accepted Newton step.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct StepReport {
+    /// Step number, from 1.
+    pub iteration: usize,
+    /// `max_i |Θ_i − θ_i|` after the step.
+    pub residual_max: f64,
+    /// The accepted step length `t`.
+    pub step: f64,
+    /// Halvings before acceptance.
+    pub halvings: usize,
+    /// Ptolemy flips performed by this step (T26: finitely many along the solve).
+    pub flips: usize,
+}
+
+/// Why the solver stopped.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub enum Stop {
+    /// `max |Θ − θ| ≤ tolerance`.
+    Converged,
+    /// The iteration cap was reached first.
+    IterationCap,
+    /// No acceptable step: the Hessian could not be factored, or the line search found
+    /// no decrease, or the metric degenerated (a face not a triangle, lengths out of range).
+    DegenerateStep(String),
+}
+
+/// The result of [`uniformize`]. `u` is meaningful only with [`Uniformization::converged`];
+/// otherwise it is the last accepted iterate, labelled as such.
+#[derive(Clone, Debug)]
+pub struct Uniformization {
+    /// `T₀`: the input made intrinsic Delaunay by Euclidean flips.
+    pub initial_mesh: Mesh,
+    /// `ℓ⁰`: the lengths of `T₀` (the metric being uniformized).
+    pub initial_lengths: Vec<f64>,
+    /// Euclidean flips from the input to `T₀`.
+    pub euclidean_flips: usize,
+    /// The final triangulation (intrinsic Delaunay for the scaled metric at `u`).
+    pub mesh: Mesh,
+    /// `ℓ⁰` carried to the final triangulation by the Ptolemy flips (rounded).
+    pub base_lengths: Vec<f64>,
+    /// The Ptolemy flips from `T₀` to the final triangulation, in order.
+    pub flip_sequence: Vec<Edge>,
+    /// The log scale factors.
+    pub u: Vec<f64>,
+    /// The targets.
+    pub targets: Targets,
+    /// Accepted steps.
+    pub steps: Vec<StepReport>,
+    /// Why the solver stopped.
+    pub stop: Stop,
+    /// `max_i |Θ_i − θ_i(u)|` at the returned `u` (`f64`).
+    pub residual_max: f64,
+    /// Symbolic and numeric factorizations computed.
+    pub factorizations: (usize, usize),
+}
+
+impl Uniformization {
+    /// Whether the residual reached the tolerance.
+    pub fn converged(&self) -> bool {
+        self.stop == Stop::Converged
+    }
+}
+
+/// The scaled metric at one `u`, flipped to Delaunay, with its angle sums.
+pub(crate) struct Evaluation {
+    pub mesh: Mesh,
+    pub base: Vec<f64>,
+    /// Scaled lengths, shifted by a common power of two into binary64's range.
+    pub lengths: Vec<f64>,
+    pub grad: Vec<f64>,
+    pub flips: Vec<Edge>,
+}
+
+/// Flip the scaled metric at `u` from `(mesh, base)` to Delaunay and evaluate `Θ − θ`.
+/// `Err` with the reason when the metric is degenerate.
+pub(crate) fn evaluate(
+    mesh: &Mesh,
+    base: &[f64],
+    u: &[f64],
+    theta_target: &[f64],
+) -> Result<Evaluation, String> {
+    if let Some(v) = u.iter().position(|x| x.is_nan() || x.abs() > MAX_LOG_SCALE) {
+        return Err(format!("u at v{v} is {} (beyond 2²⁰)", u[v]));
+    }
+    let mut m = mesh.clone();
+    let opts = FlipOptions {
+        record: true,
+        ..FlipOptions::default()
+    };
+    let (rep, scaled) = flip_to_delaunay_scaled(&mut m, base, u, FlipKind::Ptolemy, &opts)
+        .map_err(|e| e.to_string())?;
+    if rep.hit_cap {
+        return Err("Ptolemy flipping hit its flip cap".into());
+    }
+    // Base lengths on the new triangulation: the same Ptolemy flips on ℓ (T28).
+    let mut bm = mesh.clone();
+    let mut b = base.to_vec();
+    for &e in &rep.sequence {
+        flip_ptolemy(&mut bm, &mut b, e).map_err(|e| e.to_string())?;
+    }
+    if let Some(e) = b.iter().position(|x| !(x.is_finite() && *x > 0.0)) {
+        return Err(format!("carried base length of e{e} is {}", b[e]));
+    }
+    // Angles are invariant under a global scale: shift by the largest exponent.
+    let top = scaled.iter().map(ExpLength::exponent).max().unwrap_or(0);
+    let lengths: Vec<f64> = scaled.iter().map(|l| l.shifted(top)).collect();
+    if let Some(e) = lengths.iter().position(|x| !x.is_normal()) {
+        return Err(format!(
+            "scaled length of e{e} spans more than binary64's range relative to the longest"
+        ));
+    }
+    let theta = cone_angles(&m, &lengths);
+    let mut grad = Vec::with_capacity(theta.len());
+    for (v, (t, th)) in theta_target.iter().zip(&theta).enumerate() {
+        if !th.is_finite() {
+            return Err(format!(
+                "angle sum at v{v} undefined (a face violates the triangle inequality)"
+            ));
+        }
+        grad.push(t - th);
+    }
+    Ok(Evaluation {
+        mesh: m,
+        base: b,
+        lengths,
+        grad,
+        flips: rep.sequence,
+    })
+}
+
+fn norm2(x: &[f64]) -> f64 {
+    x.iter().map(|a| a * a).sum::<f64>().sqrt()
+}
+
+fn max_abs(x: &[f64]) -> f64 {
+    x.iter().fold(0.0, |m, a| m.max(a.abs()))
+}
+
+/// Check the inputs shared by the solver and the certificate.
+pub(crate) fn validate_input(
+    mesh: &Mesh,
+    lengths: &[f64],
+    targets: &Targets,
+) -> Result<(), UniformizeError> {
+    if mesh.n_faces() == 0 {
+        return Err(UniformizeError::Empty);
+    }
+    if !mesh.is_closed() {
+        return Err(UniformizeError::NotClosed {
+            edges: mesh.n_boundary_edges(),
+        });
+    }
+    if lengths.len() != mesh.n_edges() {
+        return Err(UniformizeError::LengthCount {
+            expected: mesh.n_edges(),
+            got: lengths.len(),
+        });
+    }
+    if let Some(e) = lengths.iter().position(|x| !(x.is_finite() && *x > 0.0)) {
+        return Err(UniformizeError::BadLength {
+            edge: e as u32,
+            value: lengths[e],
+        });
+    }
+    targets.validate(mesh)
+}
+
+/// Solve `θ(u) = Θ` for the log scale factors `u` of a closed surface with edge lengths
+/// `lengths` (one per edge, `f64`), with Ptolemy flips to the intrinsic Delaunay
+/// triangulation along the way (notes Thm 12). See the module documentation for the
+/// convention and the line search. Bad input is a typed error; a solve that does not
+/// reach `opts.tolerance` returns `Ok` with [`Stop::IterationCap`] or
+/// [`Stop::DegenerateStep`], never a panic.
+pub fn uniformize(
+    mesh: &Mesh,
+    lengths: &[f64],
+    targets: &Targets,
+    opts: &UniformizeOptions,
+) -> Result<Uniformization, UniformizeError> {
+    uniformize_with_progress(mesh, lengths, targets, opts, &mut |_| {})
+}
+
+/// [`uniformize`], calling `progress` after every accepted step.
+#[allow(clippy::too_many_lines)] // one Newton loop with its line search, read top to bottom
+pub fn uniformize_with_progress(
+    mesh: &Mesh,
+    lengths: &[f64],
+    targets: &Targets,
+    opts: &UniformizeOptions,
+    progress: &mut dyn FnMut(&StepReport),
+) -> Result<Uniformization, UniformizeError> {
+    validate_input(mesh, lengths, targets)?;
+    let mut u = match &opts.start {
+        None => vec![0.0; mesh.n_vertices()],
+        Some(s) => {
+            if s.len() != mesh.n_vertices() {
+                return Err(UniformizeError::TargetCount {
+                    expected: mesh.n_vertices(),
+                    got: s.len(),
+                });
+            }
+            if let Some(v) = s.iter().position(|x| x.is_nan() || x.abs() > MAX_LOG_SCALE) {
+                return Err(UniformizeError::BadStart {
+                    vertex: v as u32,
+                    value: s[v],
+                });
+            }
+            s.clone()
+        }
+    };
+    // T₀: Euclidean flips to intrinsic Delaunay (T21, T23).
+    let mut t0 = mesh.clone();
+    let mut l0 = lengths.to_vec();
+    let rep = flip_to_delaunay(
+        &mut t0,
+        &mut l0,
+        FlipKind::Euclidean,
+        &FlipOptions::default(),
+    )?;
+    if !rep.all_certified_delaunay() {
+        return Err(UniformizeError::InitialNotDelaunay {
+            undecided: rep.undecided.len() + rep.refused.len(),
+        });
+    }
+    let comps = Components::of(&t0);
+    let (_, free_idx) = comps.free_index();
+    let theta_target = targets.radians_f64();
+    let mut cache = CholeskyCache::default();
+    let mut steps = Vec::new();
+    let mut sequence = Vec::new();
+    let finish = |ev: Evaluation,
+                  u: Vec<f64>,
+                  steps: Vec<StepReport>,
+                  sequence: Vec<Edge>,
+                  stop: Stop,
+                  cache: &CholeskyCache| Uniformization {
+        initial_mesh: t0.clone(),
+        initial_lengths: l0.clone(),
+        euclidean_flips: rep.flips,
+        residual_max: max_abs(&ev.grad),
+        mesh: ev.mesh,
+        base_lengths: ev.base,
+        flip_sequence: sequence,
+        u,
+        targets: targets.clone(),
+        steps,
+        stop,
+        factorizations: (cache.symbolic_count, cache.numeric_count),
+    };
+    let mut ev = match evaluate(&t0, &l0, &u, &theta_target) {
+        Ok(ev) => ev,
+        Err(reason) => {
+            // Degenerate at the start: report the unflipped T₀.
+            let ev = Evaluation {
+                mesh: t0.clone(),
+                base: l0.clone(),
+                lengths: l0.clone(),
+                grad: vec![f64::NAN; t0.n_vertices()],
+                flips: Vec::new(),
+            };
+            return Ok(finish(
+                ev,
+                u,
+                steps,
+                sequence,
+                Stop::DegenerateStep(reason),
+                &cache,
+            ));
+        }
+    };
+    sequence.extend_from_slice(&ev.flips);
+    for iteration in 1..=opts.max_iterations + 1 {
+        if max_abs(&ev.grad) <= opts.tolerance {
+            return Ok(finish(ev, u, steps, sequence, Stop::Converged, &cache));
+        }
+        if iteration > opts.max_iterations {
+            break;
+        }
+        let h = grounded_hessian(&ev.mesh, &ev.lengths, &free_idx);
+        let Some(factor) = cache.factor(&h) else {
+            let reason = "the grounded Hessian is not numerically positive definite".to_string();
+            return Ok(finish(
+                ev,
+                u,
+                steps,
+                sequence,
+                Stop::DegenerateStep(reason),
+                &cache,
+            ));
+        };
+        let d = newton_direction(&factor, &ev.grad, &comps);
+        let n0 = norm2(&ev.grad);
+        let mut t = 1.0;
+        let mut accepted = None;
+        let mut last_reason = String::from("no decrease of |∇E|");
+        for halvings in 0..=opts.max_halvings {
+            let trial: Vec<f64> = u.iter().zip(&d).map(|(a, b)| a + t * b).collect();
+            match evaluate(&ev.mesh, &ev.base, &trial, &theta_target) {
+                Ok(new) => {
+                    let n1 = norm2(&new.grad);
+                    let slope: f64 = new.grad.iter().zip(&d).map(|(g, x)| g * x).sum();
+                    if n1 < n0 && (slope <= 0.0 || n1 <= 0.5 * n0) {
+                        accepted = Some((trial, new, halvings));
+                        break;
+                    }
+                }
+                Err(reason) => last_reason = reason,
+            }
+            t *= 0.5;
+        }
+        let Some((trial, new, halvings)) = accepted else {
+            let reason = format!(
+                "line search: {last_reason} after {} halvings at max residual {:e}",
+                opts.max_halvings,
+                max_abs(&ev.grad)
+            );
+            return Ok(finish(
+                ev,
+                u,
+                steps,
+                sequence,
+                Stop::DegenerateStep(reason),
+                &cache,
+            ));
+        };
+        u = trial;
+        sequence.extend_from_slice(&new.flips);
+        let report = StepReport {
+            iteration,
+            residual_max: max_abs(&new.grad),
+            step: t,
+            halvings,
+            flips: new.flips.len(),
+        };
+        progress(&report);
+        steps.push(report);
+        ev = new;
+    }
+    Ok(finish(ev, u, steps, sequence, Stop::IterationCap, &cache))
+}

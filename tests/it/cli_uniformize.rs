@@ -1,0 +1,140 @@
+//! `penner uniformize` end to end, and its certificate re-checked by `penner certify`
+//! (claim kind `uniformization`, T24, B71).
+
+use crate::meshgen::jittered_torus;
+use crate::support::{penner, scratch, text};
+use crate::uniformization::noisy_sphere;
+use penner::io::{json, Metric, Surface};
+use penner::mesh::Mesh;
+use rug::Rational;
+use serde_json::Value;
+
+fn surface_file(dir: &std::path::Path, name: &str, m: Mesh, l: &[f64]) -> String {
+    let metric = Metric::Lengths(l.iter().map(|&x| Rational::from_f64(x).unwrap()).collect());
+    let s = Surface::new(name, m, metric, None).unwrap();
+    let p = dir.join(format!("{name}.json"));
+    std::fs::write(&p, json::write(&s)).unwrap();
+    p.display().to_string()
+}
+
+#[test]
+fn t24_cli_uniformize_writes_a_certificate_that_certify_rechecks() {
+    let d = scratch("uniformize-torus");
+    let (m, l) = jittered_torus(5, 6, 2);
+    let surf = surface_file(&d, "torus", m, &l);
+    let cert = d.join("cert.json").display().to_string();
+    let out = penner(&["uniformize", &surf, "--flat", "-o", &cert]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}{}",
+        text(&out.stdout),
+        text(&out.stderr)
+    );
+    assert!(
+        text(&out.stdout).contains("certified"),
+        "{}",
+        text(&out.stdout)
+    );
+    let out = penner(&["certify", &cert]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}{}",
+        text(&out.stdout),
+        text(&out.stderr)
+    );
+    let answer: Value = serde_json::from_str(&text(&out.stdout)).unwrap();
+    assert_eq!(answer["verdict"], "holds");
+    assert_eq!(answer["kind"], "uniformization");
+    assert_eq!(answer["certified"], true);
+    // Negative control: u changed at one vertex by 1e-6 → not certified (exit 2).
+    let mut claim: Value = serde_json::from_str(&std::fs::read_to_string(&cert).unwrap()).unwrap();
+    let old = claim["u"][1].as_str().unwrap().to_string();
+    let moved = format!(
+        "{}",
+        penner::io::json::exact_number(&claim["u"][1], "u")
+            .unwrap()
+            .to_f64()
+            + 1e-6
+    );
+    assert_ne!(old, moved);
+    claim["u"][1] = Value::String(moved);
+    let bad = d.join("bad.json");
+    std::fs::write(&bad, claim.to_string()).unwrap();
+    let out = penner(&["certify", &bad.display().to_string()]);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out.stdout));
+    // A flip index out of range is bad input (exit 3), named by field.
+    claim["flips"] = serde_json::json!([100000]);
+    std::fs::write(&bad, claim.to_string()).unwrap();
+    let out = penner(&["certify", &bad.display().to_string()]);
+    assert_eq!(out.status.code(), Some(3), "{}", text(&out.stdout));
+    assert!(
+        text(&out.stderr).contains("flips[0]"),
+        "{}",
+        text(&out.stderr)
+    );
+    // The binary never overwrites: a second run to the same file exits 4.
+    let out = penner(&["uniformize", &surf, "--flat", "-o", &cert]);
+    assert_eq!(out.status.code(), Some(4), "{}", text(&out.stderr));
+}
+
+#[test]
+fn t24_cli_uniformize_bad_input_is_typed() {
+    let d = scratch("uniformize-bad");
+    let (m, l) = noisy_sphere(2, 1);
+    let n = m.n_vertices();
+    let surf = surface_file(&d, "sphere", m, &l);
+    // Flat targets on a sphere violate Gauss–Bonnet.
+    let out = penner(&["uniformize", &surf, "--flat"]);
+    assert_eq!(out.status.code(), Some(3));
+    assert!(
+        text(&out.stderr).contains("Gauss–Bonnet"),
+        "{}",
+        text(&out.stderr)
+    );
+    // No targets at all.
+    let out = penner(&["uniformize", &surf]);
+    assert_eq!(out.status.code(), Some(3));
+    assert!(
+        text(&out.stderr).contains("--targets"),
+        "{}",
+        text(&out.stderr)
+    );
+    // A target file with a non-positive entry names the vertex.
+    let mut t: Vec<String> = vec!["2".into(); n];
+    t[0] = "-1".into();
+    t[1] = "1".into();
+    t[2] = "1".into();
+    t[3] = "1".into();
+    t[4] = "1".into();
+    t[5] = "1".into();
+    let tf = d.join("targets.json");
+    std::fs::write(&tf, serde_json::to_string(&t).unwrap()).unwrap();
+    let out = penner(&["uniformize", &surf, "--targets", &tf.display().to_string()]);
+    assert_eq!(out.status.code(), Some(3));
+    assert!(text(&out.stderr).contains("v0"), "{}", text(&out.stderr));
+    // A wrong count.
+    std::fs::write(&tf, "[\"2\", \"2\"]").unwrap();
+    let out = penner(&["uniformize", &surf, "--targets", &tf.display().to_string()]);
+    assert_eq!(out.status.code(), Some(3));
+    assert!(
+        text(&out.stderr).contains("2 targets"),
+        "{}",
+        text(&out.stderr)
+    );
+    // Admissible targets: four cones of π.
+    let mut t: Vec<String> = vec!["2".into(); n];
+    for v in [0, 5, 10, 20] {
+        t[v] = "1".into();
+    }
+    std::fs::write(&tf, serde_json::to_string(&t).unwrap()).unwrap();
+    let out = penner(&["uniformize", &surf, "--targets", &tf.display().to_string()]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}{}",
+        text(&out.stdout),
+        text(&out.stderr)
+    );
+}
