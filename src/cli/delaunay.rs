@@ -9,7 +9,9 @@ use penner::algorithms::flip_scaled::flip_to_delaunay_scaled;
 use penner::algorithms::flip_to_delaunay::{
     flip_to_delaunay, flip_to_delaunay_exact, ExactLengths, FlipKind, FlipOptions, FlipReport,
 };
-use penner::algorithms::replay::{replay_escalating, BrokenStep, Replayed};
+use penner::algorithms::replay::{replay_escalating_lazy, BrokenStep, FlippedLens, Replayed};
+use penner::algorithms::replay_input::PositionMetric;
+use penner::mesh::{Edge, Mesh};
 use penner::oracle::Prec;
 use penner::predicates::delaunay::QuadEdges;
 use penner::scalar::exp_length::ExpLength;
@@ -125,12 +127,22 @@ fn flip_scaled(
 
 /// Flip real lengths of backend `T` and return the report and the exact values of the
 /// stored lengths (`f64` values as they are: each is exact).
+/// `squares`, when given, are the `f64` squared lengths of an OBJ/OFF input
+/// (`DecimalSurface::squared_lengths_f64`), whose square roots are its `f64` lengths.
 fn flip_real<T: Real + 'static>(
     case: &mut FlipCase,
     ctx: T::Ctx,
     kind: FlipKind,
+    squares: Option<&[f64]>,
 ) -> Result<(FlipReport, FlipValues), CliError> {
-    let mut l: Vec<T> = case.lengths(ctx);
+    let from_squares = squares.and_then(|s| {
+        let l: Box<dyn Any> = Box::new(s.iter().map(|x| x.sqrt()).collect::<Vec<f64>>());
+        l.downcast::<Vec<T>>().ok()
+    });
+    let mut l: Vec<T> = match from_squares {
+        Some(l) => *l,
+        None => case.lengths(ctx),
+    };
     let name = case.name().to_string();
     let report = flip_to_delaunay(case.mesh_mut(), &mut l, kind, &record())
         .map_err(|e| CliError::Input(format!("{name}: {e}")))?;
@@ -198,11 +210,18 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     refuse_existing(o.lengths_out)?;
     let format = output::format_of(o.output, o.lengths_out)?;
     let mut case = super::input::load_flip_case(o.path)?;
-    let input_mesh = case.mesh().clone();
-    // The exact input metric, for the replay of a rounded run (taken before flipping: the
-    // squared lengths of positions follow the mesh's edges).
-    let input_metric = (o.input_replay && prec != Prec::Exact && o.scale_factors.is_none())
-        .then(|| case.exact_metric());
+    // The input triangulation, for the replay of a rounded run on the exact input metric
+    // (the squared lengths of positions follow the input mesh's edges).
+    let input_mesh = (o.input_replay && prec != Prec::Exact && o.scale_factors.is_none())
+        .then(|| case.mesh().clone());
+    // The f64 squared lengths of OBJ/OFF input, computed once for the f64 lengths and the
+    // replay's first rung.
+    let squares = match &case {
+        FlipCase::Decimal(s) if input_mesh.is_some() && prec == Prec::F64 => {
+            Some(s.squared_lengths_f64())
+        }
+        _ => None,
+    };
     let kind = match o.flips {
         ArgFlipKind::Euclidean => FlipKind::Euclidean,
         ArgFlipKind::Ptolemy => FlipKind::Ptolemy,
@@ -237,10 +256,10 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
             "--precision exact needs --flips ptolemy and exact (not squared) lengths: Euclidean flips make lengths irrational"
                 .to_string(),
         )),
-        (Prec::F64, ..) => flip_real::<f64>(&mut case, (), kind),
-        (Prec::Dd, ..) => flip_real::<Dd>(&mut case, (), kind),
+        (Prec::F64, ..) => flip_real::<f64>(&mut case, (), kind, squares.as_deref()),
+        (Prec::Dd, ..) => flip_real::<Dd>(&mut case, (), kind, None),
         (Prec::Mpfr(p), ..) => {
-            flip_real::<Mpfr>(&mut case, p, kind)
+            flip_real::<Mpfr>(&mut case, p, kind, None)
         }
     };
     if let Some(b) = bar {
@@ -250,13 +269,10 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     // Exact Ptolemy flipping has no rounding: its certificate is for the input metric.
     let exact_run = prec == Prec::Exact;
     let rounded_ok = report.all_certified_delaunay();
-    let replay = input_metric
+    let replay = input_mesh
         .as_ref()
         .filter(|_| rounded_ok && !exact_run)
-        .map(|metric| {
-            let (lo, hi) = REPLAY_BITS;
-            replay_escalating(&input_mesh, metric, &report.sequence, kind, lo, hi)
-        });
+        .map(|mesh| replay_on_input(&case, mesh, squares.as_deref(), &report.sequence, kind));
     let (certificate, not_for_input) = certificate_of(rounded_ok, exact_run, replay.as_ref());
     // The output is a plain surface file (readable by `penner check`); the flip count
     // and the certificate go to standard error (and to the summary file).
@@ -293,12 +309,35 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     })
 }
 
+/// Replay `sequence` on the exact input metric of `case` (B80), whose input triangulation
+/// is `mesh` (with its `f64` squared lengths when kept): exact values are built only for the edges the first rung leaves open (B83).
+fn replay_on_input(
+    case: &FlipCase,
+    mesh: &Mesh,
+    squares: Option<&[f64]>,
+    sequence: &[Edge],
+    kind: FlipKind,
+) -> (Replayed<FlippedLens>, u32) {
+    let (lo, hi) = REPLAY_BITS;
+    match case {
+        FlipCase::Exact(s) => replay_escalating_lazy(mesh, &s.metric, sequence, kind, lo, hi),
+        FlipCase::Decimal(surface) => {
+            let input = PositionMetric {
+                mesh,
+                surface,
+                squares,
+            };
+            replay_escalating_lazy(mesh, &input, sequence, kind, lo, hi)
+        }
+    }
+}
+
 /// The certificate of a run and the count of edges not certified for the input metric
 /// (`None` when not counted: no replay, or the rounded run itself is not certified).
 fn certificate_of(
     rounded_ok: bool,
     exact_run: bool,
-    replay: Option<&(Replayed, u32)>,
+    replay: Option<&(Replayed<FlippedLens>, u32)>,
 ) -> (Certificate, Option<usize>) {
     match (replay, rounded_ok) {
         (_, false) => (Certificate::None, None),
@@ -345,7 +384,7 @@ fn summary_json(
 fn certificate_words(
     certificate: Certificate,
     not_for_input: Option<usize>,
-    replay: Option<&(Replayed, u32)>,
+    replay: Option<&(Replayed<FlippedLens>, u32)>,
     scaled: bool,
     report: &FlipReport,
 ) -> String {
@@ -378,7 +417,7 @@ fn certificate_words(
 /// interior edges certified non-Delaunay or undecided there; when a flip of the sequence is
 /// not a certified legal step on the input metric, the triangulation itself is not one of
 /// the input's certified flips, and no interior edge is certified.
-fn not_certified(r: &Replayed) -> usize {
+fn not_certified(r: &Replayed<FlippedLens>) -> usize {
     if r.broken.is_some() {
         return r
             .mesh
@@ -390,7 +429,7 @@ fn not_certified(r: &Replayed) -> usize {
 }
 
 /// The first reason of a failed replay, for the message.
-fn replay_detail(r: &Replayed, bits: u32) -> String {
+fn replay_detail(r: &Replayed<FlippedLens>, bits: u32) -> String {
     match &r.broken {
         Some((n, e, why)) => format!(
             " (flip {n} of the sequence, edge {e}, is {} for the input metric at {bits} bits)",

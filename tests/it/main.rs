@@ -36,6 +36,7 @@ mod oracle;
 mod planar_gen;
 mod predicates_planar;
 mod registry_extra;
+mod replay_lazy;
 mod scalar_dd;
 mod scalar_dd_div;
 mod scalar_dd_edges;
