@@ -6,8 +6,9 @@
 
 use super::json::{edge_order, exact_number, FORMAT, VERSION};
 use super::ReadError;
-use crate::mesh::Mesh;
+use crate::mesh::{FaceSide, Mesh};
 use rug::Rational;
+use std::collections::HashSet;
 use std::fmt::Display;
 use std::io::{self, Write};
 
@@ -65,6 +66,41 @@ pub fn faces_determine_gluing(mesh: &Mesh) -> bool {
         .is_ok_and(|m| side_twins(&m) == side_twins(mesh))
 }
 
+/// The glued pairs of face sides that `mesh`'s vertex triples cannot describe — the
+/// sides of edges with a loop side or with a directed side `a→b` or `b→a` that occurs
+/// more than once (parallel edges) — when the triples with these pairs determine the
+/// gluing ([`Mesh::from_faces_with_exceptions`] rebuilds it); `None` when they do not
+/// (e.g. a boundary side `a→b` beside an unglued `b→a`): then the full gluing is needed.
+/// An empty list when the triples alone determine it ([`faces_determine_gluing`]).
+pub fn gluing_exceptions(mesh: &Mesh) -> Option<Vec<(FaceSide, FaceSide)>> {
+    let faces = mesh.face_list();
+    let key = |a: u32, b: u32| (u64::from(a) << 32) | u64::from(b);
+    let mut keys: Vec<u64> = faces
+        .iter()
+        .flat_map(|t| (0..3).map(move |s| key(t[s], t[(s + 1) % 3])))
+        .collect();
+    keys.sort_unstable();
+    let repeated: HashSet<u64> = keys
+        .windows(2)
+        .filter(|w| w[0] == w[1])
+        .map(|w| w[0])
+        .collect();
+    drop(keys);
+    let special = |(f, s): FaceSide| {
+        let t = faces[f as usize];
+        let (a, b) = (t[s as usize], t[(s as usize + 1) % 3]);
+        a == b || repeated.contains(&key(a, b)) || repeated.contains(&key(b, a))
+    };
+    let exceptions: Vec<(FaceSide, FaceSide)> = mesh
+        .gluing_list()
+        .into_iter()
+        .filter(|&(p, q)| special(p) || special(q))
+        .collect();
+    Mesh::from_faces_with_exceptions(mesh.n_vertices() as u32, &faces, &exceptions)
+        .is_ok_and(|m| side_twins(&m) == side_twins(mesh))
+        .then_some(exceptions)
+}
+
 /// For side `s` of face `f` (entry `3f + s`), the face side glued to it (`None` on the
 /// boundary): the gluing, independent of how edges are numbered.
 fn side_twins(mesh: &Mesh) -> Vec<Option<(u32, u8)>> {
@@ -93,8 +129,9 @@ pub enum MetricKind {
 }
 
 /// Write a surface as compact JSON: the header fields on the first line (starting with
-/// [`JSON_MARKER`]), then one face per line, the `gluing` (only when the faces do not
-/// determine it, [`faces_determine_gluing`]), one metric value per line in
+/// [`JSON_MARKER`]), then one face per line, the glued side pairs the faces cannot
+/// describe as `gluing_exceptions` ([`gluing_exceptions`]; the full `gluing` when those
+/// do not determine it, nothing when the faces do), one metric value per line in
 /// [`edge_order`], and the positions (one vertex per line) when given.
 ///
 /// ```
@@ -133,9 +170,14 @@ pub fn json<P: Display>(
         write!(w, "{sep}[{},{},{}]", f[0], f[1], f[2])?;
     }
     w.write_all(b"]")?;
-    if !faces_determine_gluing(mesh) {
-        w.write_all(b",\n\"gluing\":[")?;
-        for (i, ((fa, sa), (fb, sb))) in mesh.gluing_list().iter().enumerate() {
+    let (field, pairs) = match gluing_exceptions(mesh) {
+        Some(e) if e.is_empty() => ("", e),
+        Some(e) => ("gluing_exceptions", e),
+        None => ("gluing", mesh.gluing_list()),
+    };
+    if !field.is_empty() {
+        write!(w, ",\n\"{field}\":[")?;
+        for (i, ((fa, sa), (fb, sb))) in pairs.iter().enumerate() {
             let sep = if i == 0 { "\n" } else { ",\n" };
             write!(w, "{sep}[[{fa},{sa}],[{fb},{sb}]]")?;
         }
