@@ -6,9 +6,8 @@
 
 use super::json::{edge_order, exact_number, FORMAT, VERSION};
 use super::ReadError;
-use crate::mesh::{FaceSide, Mesh};
+use crate::mesh::{FaceSide, HalfEdge, Mesh};
 use rug::Rational;
-use std::collections::HashSet;
 use std::fmt::Display;
 use std::io::{self, Write};
 
@@ -67,38 +66,69 @@ pub fn faces_determine_gluing(mesh: &Mesh) -> bool {
 }
 
 /// The glued pairs of face sides that `mesh`'s vertex triples cannot describe — the
-/// sides of edges with a loop side or with a directed side `a→b` or `b→a` that occurs
-/// more than once (parallel edges) — when the triples with these pairs determine the
-/// gluing ([`Mesh::from_faces_with_exceptions`] rebuilds it); `None` when they do not
-/// (e.g. a boundary side `a→b` beside an unglued `b→a`): then the full gluing is needed.
-/// An empty list when the triples alone determine it ([`faces_determine_gluing`]).
+/// sides of interior edges with a loop side or with a directed side `a→b` or `b→a` that
+/// occurs more than once among the face sides (parallel edges) — when the triples with
+/// these pairs determine the gluing ([`Mesh::from_faces_with_exceptions`] rebuilds it);
+/// `None` when they do not (a boundary loop, or a boundary side `a→b` beside an unlisted
+/// side `b→a`): then the full gluing is needed. An empty list when the triples alone
+/// determine it ([`faces_determine_gluing`]).
+///
+/// Why the rebuild is the mesh: a listed pair is an edge's two sides; an unlisted interior
+/// side `a→b` is the only unlisted `a→b` and its twin the only `b→a`, so they are matched;
+/// an unlisted boundary side has no unlisted `b→a` to be matched with (checked here).
+/// Linear time, memory one flag per edge: per vertex, the tips of its outgoing face sides.
 pub fn gluing_exceptions(mesh: &Mesh) -> Option<Vec<(FaceSide, FaceSide)>> {
-    let faces = mesh.face_list();
-    let key = |a: u32, b: u32| (u64::from(a) << 32) | u64::from(b);
-    let mut keys: Vec<u64> = faces
-        .iter()
-        .flat_map(|t| (0..3).map(move |s| key(t[s], t[(s + 1) % 3])))
-        .collect();
-    keys.sort_unstable();
-    let repeated: HashSet<u64> = keys
-        .windows(2)
-        .filter(|w| w[0] == w[1])
-        .map(|w| w[0])
-        .collect();
-    drop(keys);
-    let special = |(f, s): FaceSide| {
-        let t = faces[f as usize];
-        let (a, b) = (t[s as usize], t[(s as usize + 1) % 3]);
-        a == b || repeated.contains(&key(a, b)) || repeated.contains(&key(b, a))
+    // Directed sides a→b that occur more than once, as (a, b), sorted.
+    let mut repeated: Vec<(u32, u32)> = Vec::new();
+    let mut tips: Vec<u32> = Vec::new();
+    for a in mesh.vertices() {
+        tips.clear();
+        tips.extend(
+            mesh.outgoing(a)
+                .filter(|&h| !mesh.is_boundary_halfedge(h))
+                .map(|h| mesh.tip(h).0),
+        );
+        tips.sort_unstable();
+        for w in tips.windows(2) {
+            if w[0] == w[1] && repeated.last() != Some(&(a.0, w[0])) {
+                repeated.push((a.0, w[0]));
+            }
+        }
+    }
+    let is_repeated = |a: u32, b: u32| repeated.binary_search(&(a, b)).is_ok();
+    let special = |h: HalfEdge| {
+        let (a, b) = (mesh.tail(h).0, mesh.tip(h).0);
+        a == b || is_repeated(a, b) || is_repeated(b, a)
     };
-    let exceptions: Vec<(FaceSide, FaceSide)> = mesh
-        .gluing_list()
-        .into_iter()
-        .filter(|&(p, q)| special(p) || special(q))
-        .collect();
-    Mesh::from_faces_with_exceptions(mesh.n_vertices() as u32, &faces, &exceptions)
-        .is_ok_and(|m| side_twins(&m) == side_twins(mesh))
-        .then_some(exceptions)
+    let side_of = |h: HalfEdge| -> Option<FaceSide> {
+        let f = mesh.face(h)?;
+        let s = mesh.face_halfedges(f).iter().position(|&g| g == h)?;
+        Some((f.0, s as u8))
+    };
+    let mut listed = vec![false; mesh.n_edges()];
+    let mut exceptions = Vec::new();
+    for e in mesh.edges() {
+        let (p, q) = (e.side(0), e.side(1));
+        if mesh.is_boundary_edge(e) || !(special(p) || special(q)) {
+            continue;
+        }
+        listed[e.idx()] = true;
+        exceptions.push((side_of(p)?, side_of(q)?));
+    }
+    // An unlisted boundary side a→b must have no unlisted face side b→a (nor be a loop).
+    for e in mesh.edges().filter(|&e| mesh.is_boundary_edge(e)) {
+        let h = [e.side(0), e.side(1)]
+            .into_iter()
+            .find(|&h| !mesh.is_boundary_halfedge(h))?;
+        let (a, b) = (mesh.tail(h), mesh.tip(h));
+        let partner = mesh.outgoing(b).any(|g| {
+            !mesh.is_boundary_halfedge(g) && mesh.tip(g) == a && !listed[g.edge().idx()]
+        });
+        if a == b || partner {
+            return None;
+        }
+    }
+    Some(exceptions)
 }
 
 /// For side `s` of face `f` (entry `3f + s`), the face side glued to it (`None` on the
