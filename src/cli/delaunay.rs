@@ -7,7 +7,8 @@ use super::input::FlipCase;
 use super::output::{self, FlipValues};
 use penner::algorithms::flip_scaled::flip_to_delaunay_scaled;
 use penner::algorithms::flip_to_delaunay::{
-    flip_to_delaunay, flip_to_delaunay_exact, ExactLengths, FlipKind, FlipOptions, FlipReport,
+    flip_to_delaunay, flip_to_delaunay_exact, ExactLengths, FlipCounter, FlipKind, FlipOptions,
+    FlipReport,
 };
 use penner::algorithms::replay::{replay_escalating_lazy, BrokenStep, FlippedLens, Replayed};
 use penner::algorithms::replay_input::PositionMetric;
@@ -114,10 +115,11 @@ fn flip_scaled(
     case: &mut FlipCase,
     u: &[f64],
     kind: FlipKind,
+    opts: &FlipOptions,
 ) -> Result<(FlipReport, FlipValues), CliError> {
     let base: Vec<f64> = case.lengths(());
     let name = case.name().to_string();
-    let (report, lengths) = flip_to_delaunay_scaled(case.mesh_mut(), &base, u, kind, &record())
+    let (report, lengths) = flip_to_delaunay_scaled(case.mesh_mut(), &base, u, kind, opts)
         .map_err(|e| CliError::Input(format!("{name}: {e}")))?;
     Ok((
         report,
@@ -134,6 +136,7 @@ fn flip_real<T: Real + 'static>(
     ctx: T::Ctx,
     kind: FlipKind,
     squares: Option<&[f64]>,
+    opts: &FlipOptions,
 ) -> Result<(FlipReport, FlipValues), CliError> {
     let from_squares = squares.and_then(|s| {
         let l: Box<dyn Any> = Box::new(s.iter().map(|x| x.sqrt()).collect::<Vec<f64>>());
@@ -144,7 +147,7 @@ fn flip_real<T: Real + 'static>(
         None => case.lengths(ctx),
     };
     let name = case.name().to_string();
-    let report = flip_to_delaunay(case.mesh_mut(), &mut l, kind, &record())
+    let report = flip_to_delaunay(case.mesh_mut(), &mut l, kind, opts)
         .map_err(|e| CliError::Input(format!("{name}: {e}")))?;
     let l = match (Box::new(l) as Box<dyn Any>).downcast::<Vec<f64>>() {
         Ok(binary64) => return Ok((report, FlipValues::Binary64(*binary64))),
@@ -163,10 +166,12 @@ fn flip_real<T: Real + 'static>(
     Ok((report, FlipValues::Exact(exact)))
 }
 
-/// The flip options of every run: default, with the sequence recorded (for the replay).
-fn record() -> FlipOptions {
+/// The flip options of every run: default, with the sequence recorded (for the replay)
+/// and the flips counted in `progress`.
+fn record(progress: &FlipCounter) -> FlipOptions {
     FlipOptions {
         record: true,
+        progress: Some(progress.clone()),
         ..FlipOptions::default()
     }
 }
@@ -187,12 +192,41 @@ fn refuse_existing(output: Option<&Path>) -> Result<(), CliError> {
 fn spinner(path: &Path, faces: usize) -> Option<indicatif::ProgressBar> {
     std::io::stderr().is_terminal().then(|| {
         let b = indicatif::ProgressBar::new_spinner();
-        b.set_message(format!(
-            "flipping {} ({faces} faces) to intrinsic Delaunay",
-            path.display(),
-        ));
+        b.set_message(flipping_message(path, faces, 0));
         b.enable_steady_tick(Duration::from_millis(120));
         b
+    })
+}
+
+/// The spinner's message while flipping.
+fn flipping_message(path: &Path, faces: usize, flips: usize) -> String {
+    format!(
+        "flipping {} ({faces} faces) to intrinsic Delaunay: {flips} flips",
+        path.display()
+    )
+}
+
+/// Run `flip`, showing the flips counted by `counter` on `bar` (if any) while it runs.
+fn with_flip_progress<R>(
+    bar: Option<&indicatif::ProgressBar>,
+    counter: &FlipCounter,
+    (path, faces): (&Path, usize),
+    flip: impl FnOnce() -> R,
+) -> R {
+    let Some(bar) = bar else {
+        return flip();
+    };
+    let done = std::sync::atomic::AtomicBool::new(false);
+    std::thread::scope(|s| {
+        s.spawn(|| {
+            while !done.load(std::sync::atomic::Ordering::Relaxed) {
+                bar.set_message(flipping_message(path, faces, counter.get()));
+                std::thread::sleep(Duration::from_millis(150));
+            }
+        });
+        let r = flip();
+        done.store(true, std::sync::atomic::Ordering::Relaxed);
+        r
     })
 }
 
@@ -237,11 +271,20 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     } else {
         None
     };
-    let result = match (prec, kind, exact_lengths, &scale) {
-        (.., Some(u)) => flip_scaled(&mut case, u, kind),
+    let counter = FlipCounter::default();
+    let opts = record(&counter);
+    let faces = case.mesh().n_faces();
+    let result = with_flip_progress(bar.as_ref(), &counter, (o.path, faces), || {
+        match (
+        prec,
+        kind,
+        exact_lengths,
+        &scale,
+    ) {
+        (.., Some(u)) => flip_scaled(&mut case, u, kind, &opts),
         (Prec::Exact, FlipKind::Ptolemy, Some(l), None) => {
             let (report, lengths) =
-                flip_to_delaunay_exact(case.mesh_mut(), l, EXACT_GUARD_BITS, &record())
+                flip_to_delaunay_exact(case.mesh_mut(), l, EXACT_GUARD_BITS, &opts)
                     .map_err(|e| CliError::Input(format!("{}: {e}", o.path.display())))?;
             match lengths {
                 ExactLengths::Exact(v) => Ok((report, FlipValues::Exact(v))),
@@ -256,16 +299,28 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
             "--precision exact needs --flips ptolemy and exact (not squared) lengths: Euclidean flips make lengths irrational"
                 .to_string(),
         )),
-        (Prec::F64, ..) => flip_real::<f64>(&mut case, (), kind, squares.as_deref()),
-        (Prec::Dd, ..) => flip_real::<Dd>(&mut case, (), kind, None),
+        (Prec::F64, ..) => flip_real::<f64>(&mut case, (), kind, squares.as_deref(), &opts),
+        (Prec::Dd, ..) => flip_real::<Dd>(&mut case, (), kind, None, &opts),
         (Prec::Mpfr(p), ..) => {
-            flip_real::<Mpfr>(&mut case, p, kind, None)
+            flip_real::<Mpfr>(&mut case, p, kind, None, &opts)
+        }
+    }
+    });
+    let (report, lengths) = match result {
+        Ok(r) => r,
+        Err(e) => {
+            if let Some(b) = bar {
+                b.finish_and_clear();
+            }
+            return Err(e);
         }
     };
-    if let Some(b) = bar {
-        b.finish_and_clear();
+    if let (Some(b), Some(_)) = (&bar, &input_mesh) {
+        b.set_message(format!(
+            "{} flips done; replaying them on the exact input metric",
+            report.flips
+        ));
     }
-    let (report, lengths) = result?;
     // Exact Ptolemy flipping has no rounding: its certificate is for the input metric.
     let exact_run = prec == Prec::Exact;
     let rounded_ok = report.all_certified_delaunay();
@@ -273,10 +328,17 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         .as_ref()
         .filter(|_| rounded_ok && !exact_run)
         .map(|mesh| replay_on_input(&case, mesh, squares.as_deref(), &report.sequence, kind));
+    if let Some(b) = &bar {
+        b.set_message(format!("{} flips done; writing", report.flips));
+    }
     let (certificate, not_for_input) = certificate_of(rounded_ok, exact_run, replay.as_ref());
     // The output is a plain surface file (readable by `penner check`); the flip count
     // and the certificate go to standard error (and to the summary file).
-    output::write_flipped(&case, &lengths, format, o.output, o.lengths_out)?;
+    let written = output::write_flipped(&case, &lengths, format, o.output, o.lengths_out);
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    written?;
     let what = certificate_words(
         certificate,
         not_for_input,
