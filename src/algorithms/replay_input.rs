@@ -67,12 +67,11 @@ impl InputMetric for PositionMetric<'_> {
     fn first_rung(&self, e: Edge) -> Option<Bounds> {
         // proof: B83 — the nearest binary64 value of the exact square where it is normal
         // (B19); `length_from_square` refuses values below 2⁻²⁰⁰, subnormals among them.
-        let nearest = match self.squares {
-            Some(s) => *s.get(e.idx())?,
-            None => {
-                let (u, v) = self.ends(e);
-                self.surface.squared_distance_f64(u, v)?
-            }
+        let nearest = if let Some(s) = self.squares {
+            *s.get(e.idx())?
+        } else {
+            let (u, v) = self.ends(e);
+            self.surface.squared_distance_f64(u, v)?
         };
         length_from_square(nearest)
     }

@@ -35,7 +35,7 @@ pub struct Options<'a> {
 /// that cannot be read). A bad file is reported and the others still run; the exit code
 /// is the worst over the files ([`worse`]); a write error ends the command (exit 4).
 pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
-    let files = super::files::surface_files(o.paths)?;
+    let files = super::files::surface_files(o.paths);
     let single =
         o.paths.len() == 1 && files.len() == 1 && files[0].as_ref().is_ok_and(|f| f == &o.paths[0]);
     if single {

@@ -139,7 +139,7 @@ fn flip_real<T: Real + 'static>(
     opts: &FlipOptions,
 ) -> Result<(FlipReport, FlipValues), CliError> {
     let from_squares = squares.and_then(|s| {
-        let l: Box<dyn Any> = Box::new(s.iter().map(|x| x.sqrt()).collect::<Vec<f64>>());
+        let l: Box<dyn Any> = Box::new(s.iter().map(|&x| x.sqrt()).collect::<Vec<f64>>());
         l.downcast::<Vec<T>>().ok()
     });
     let mut l: Vec<T> = match from_squares {
@@ -230,6 +230,54 @@ fn with_flip_progress<R>(
     })
 }
 
+/// Flip `case` at `prec` with flips of `kind` (the scaled metric when `scale` is given),
+/// from the `f64` `squares` when kept; the report and the stored lengths' values.
+fn flip_case(
+    case: &mut FlipCase,
+    (path, prec, kind): (&Path, Prec, FlipKind),
+    scale: Option<&[f64]>,
+    squares: Option<&[f64]>,
+    opts: &FlipOptions,
+) -> Result<(FlipReport, FlipValues), CliError> {
+    // Cloned only for the exact rung, which consumes them.
+    let exact_lengths = if prec == Prec::Exact {
+        case.exact_lengths().cloned()
+    } else {
+        None
+    };
+    match (prec, kind, exact_lengths, scale) {
+        (.., Some(u)) => flip_scaled(case, u, kind, opts),
+        (Prec::Exact, FlipKind::Ptolemy, Some(l), None) => {
+            let (report, lengths) =
+                flip_to_delaunay_exact(case.mesh_mut(), l, EXACT_GUARD_BITS, opts)
+                    .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+            match lengths {
+                ExactLengths::Exact(v) => Ok((report, FlipValues::Exact(v))),
+                ExactLengths::Enclosed(_) => Err(CliError::Input(format!(
+                    "{}: exact lengths outgrew {EXACT_GUARD_BITS} bits after {} flips; use a bit count such as --precision 1024",
+                    path.display(),
+                    report.fell_back_after.unwrap_or(report.flips)
+                ))),
+            }
+        }
+        (Prec::Exact, ..) => Err(CliError::Input(
+            "--precision exact needs --flips ptolemy and exact (not squared) lengths: Euclidean flips make lengths irrational"
+                .to_string(),
+        )),
+        (Prec::F64, ..) => flip_real::<f64>(case, (), kind, squares, opts),
+        (Prec::Dd, ..) => flip_real::<Dd>(case, (), kind, None, opts),
+        (Prec::Mpfr(p), ..) => flip_real::<Mpfr>(case, p, kind, None, opts),
+    }
+}
+
+/// The flip kind asked for.
+fn flip_kind(k: ArgFlipKind) -> FlipKind {
+    match k {
+        ArgFlipKind::Euclidean => FlipKind::Euclidean,
+        ArgFlipKind::Ptolemy => FlipKind::Ptolemy,
+    }
+}
+
 /// Run `penner delaunay`.
 pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     let precs = super::precisions(o.precision)?;
@@ -256,55 +304,23 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         }
         _ => None,
     };
-    let kind = match o.flips {
-        ArgFlipKind::Euclidean => FlipKind::Euclidean,
-        ArgFlipKind::Ptolemy => FlipKind::Ptolemy,
-    };
+    let kind = flip_kind(o.flips);
     let bar = spinner(o.path, case.mesh().n_faces());
     let scale = match o.scale_factors {
         Some(path) => Some(read_scale_factors(path, prec, case.mesh().n_vertices())?),
         None => None,
     };
-    // Cloned only for the exact rung, which consumes them.
-    let exact_lengths = if prec == Prec::Exact {
-        case.exact_lengths().cloned()
-    } else {
-        None
-    };
     let counter = FlipCounter::default();
     let opts = record(&counter);
     let faces = case.mesh().n_faces();
     let result = with_flip_progress(bar.as_ref(), &counter, (o.path, faces), || {
-        match (
-        prec,
-        kind,
-        exact_lengths,
-        &scale,
-    ) {
-        (.., Some(u)) => flip_scaled(&mut case, u, kind, &opts),
-        (Prec::Exact, FlipKind::Ptolemy, Some(l), None) => {
-            let (report, lengths) =
-                flip_to_delaunay_exact(case.mesh_mut(), l, EXACT_GUARD_BITS, &opts)
-                    .map_err(|e| CliError::Input(format!("{}: {e}", o.path.display())))?;
-            match lengths {
-                ExactLengths::Exact(v) => Ok((report, FlipValues::Exact(v))),
-                ExactLengths::Enclosed(_) => Err(CliError::Input(format!(
-                    "{}: exact lengths outgrew {EXACT_GUARD_BITS} bits after {} flips; use a bit count such as --precision 1024",
-                    o.path.display(),
-                    report.fell_back_after.unwrap_or(report.flips)
-                ))),
-            }
-        }
-        (Prec::Exact, ..) => Err(CliError::Input(
-            "--precision exact needs --flips ptolemy and exact (not squared) lengths: Euclidean flips make lengths irrational"
-                .to_string(),
-        )),
-        (Prec::F64, ..) => flip_real::<f64>(&mut case, (), kind, squares.as_deref(), &opts),
-        (Prec::Dd, ..) => flip_real::<Dd>(&mut case, (), kind, None, &opts),
-        (Prec::Mpfr(p), ..) => {
-            flip_real::<Mpfr>(&mut case, p, kind, None, &opts)
-        }
-    }
+        flip_case(
+            &mut case,
+            (o.path, prec, kind),
+            scale.as_deref(),
+            squares.as_deref(),
+            &opts,
+        )
     });
     let (report, lengths) = match result {
         Ok(r) => r,

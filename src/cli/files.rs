@@ -154,7 +154,7 @@ pub type SurfaceFile = Result<PathBuf, (PathBuf, CliError)>;
 /// `.json`, `.obj` and `.off` entries (any case, not recursing into subdirectories, failure
 /// files `*.penner-failure-N.json` left out), sorted by name. A directory that cannot be
 /// listed, or holds no surface file, is an error entry; the others still run.
-pub fn surface_files(paths: &[PathBuf]) -> Result<Vec<SurfaceFile>, CliError> {
+pub fn surface_files(paths: &[PathBuf]) -> Vec<SurfaceFile> {
     let mut out = Vec::new();
     for p in paths {
         if !p.is_dir() {
@@ -187,7 +187,7 @@ pub fn surface_files(paths: &[PathBuf]) -> Result<Vec<SurfaceFile>, CliError> {
         }
         out.extend(found.into_iter().map(Ok));
     }
-    Ok(out)
+    out
 }
 
 /// Whether a directory entry is a surface file to check: a `.json`, `.obj` or `.off`

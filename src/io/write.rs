@@ -121,9 +121,9 @@ pub fn gluing_exceptions(mesh: &Mesh) -> Option<Vec<(FaceSide, FaceSide)>> {
             .into_iter()
             .find(|&h| !mesh.is_boundary_halfedge(h))?;
         let (a, b) = (mesh.tail(h), mesh.tip(h));
-        let partner = mesh.outgoing(b).any(|g| {
-            !mesh.is_boundary_halfedge(g) && mesh.tip(g) == a && !listed[g.edge().idx()]
-        });
+        let partner = mesh
+            .outgoing(b)
+            .any(|g| !mesh.is_boundary_halfedge(g) && mesh.tip(g) == a && !listed[g.edge().idx()]);
         if a == b || partner {
             return None;
         }

@@ -41,13 +41,14 @@ fn fan_json(p: &[(Integer, Integer)]) -> String {
 
 /// The OFF text of the fan of `p` (vertex 0), the same surface as [`fan_json`].
 fn fan_off(p: &[(Integer, Integer)]) -> String {
+    use std::fmt::Write;
     let n = p.len();
     let mut s = format!("OFF\n{n} {} 0\n", n - 2);
     for (x, y) in p {
-        s += &format!("{x} {y} 0\n");
+        let _ = writeln!(s, "{x} {y} 0");
     }
     for i in 1..n - 1 {
-        s += &format!("3 0 {i} {}\n", i + 1);
+        let _ = writeln!(s, "3 0 {i} {}", i + 1);
     }
     s
 }
