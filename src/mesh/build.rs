@@ -114,9 +114,10 @@ impl Mesh {
     ///
     /// ```
     /// use penner::mesh::Mesh;
-    /// // A tetrahedron with edge 01 flipped: two edges join vertices 2 and 3.
-    /// let faces = [[3, 2, 1], [2, 3, 0], [0, 2, 3], [1, 3, 2]];
-    /// let m = Mesh::from_faces_with_exceptions(4, &faces, &[((0, 0), (1, 0)), ((2, 1), (3, 1))])
+    /// // A tetrahedron with edge 01 flipped: two edges join vertices 2 and 3 (the new
+    /// // diagonal, sides 0 of faces 0 and 2, and the old edge, sides 1 of faces 1 and 3).
+    /// let faces = [[3, 2, 0], [0, 2, 3], [2, 3, 1], [1, 3, 2]];
+    /// let m = Mesh::from_faces_with_exceptions(4, &faces, &[((0, 0), (2, 0)), ((1, 1), (3, 1))])
     ///     .unwrap();
     /// assert_eq!((m.n_edges(), m.euler_characteristic()), (6, 2));
     /// assert!(Mesh::from_faces(4, &faces).is_err());

@@ -407,9 +407,10 @@ fn compact_json_needs_gluing_only_where_faces_do_not_determine_it() {
 /// Parallel edges (a tetrahedron with one edge flipped: two edges join the same two
 /// vertices) and loops (the one-vertex torus) are written as `gluing_exceptions`: only the
 /// pairs the vertex triples cannot describe; the file reads back to the same faces, gluing
-/// and values. Negative controls: the same file without one listed pair, or without the
-/// field, is refused with a typed error naming the faces; `gluing` and
-/// `gluing_exceptions` together are refused.
+/// and values; a disk bounded by two parallel edges, which no exception list describes,
+/// gets the full gluing. Negative controls: the file without the field is refused with a
+/// typed error; without one pair the torus's loops are refused; crossed pairs are refused
+/// or glue another surface; `gluing` and `gluing_exceptions` together are refused.
 #[test]
 fn compact_json_writes_gluing_exceptions_that_read_back_exactly() {
     let mut flipped = builders::tetrahedron().mesh;
@@ -485,6 +486,32 @@ fn compact_json_writes_gluing_exceptions_that_read_back_exactly() {
         let err = json::read(&both.to_string()).unwrap_err().to_string();
         assert!(err.contains("gluing_exceptions"), "{err}");
     }
+    // A disk bounded by two edges between the same vertices (sides 0→1 and 1→0 both on
+    // the boundary): the triples would glue them, so no exception list describes it and
+    // the full gluing is written.
+    let bigon = Surface::new(
+        "bigon",
+        Mesh::from_gluing(
+            3,
+            &[[0, 1, 2], [1, 0, 2]],
+            &[((0, 1), (1, 2)), ((0, 2), (1, 1))],
+        )
+        .unwrap(),
+        Metric::Lengths(vec![Rational::from(1); 4]),
+        None,
+    )
+    .unwrap();
+    assert_eq!(writer::gluing_exceptions(&bigon.mesh), None);
+    let mut out = Vec::new();
+    writer::surface_json(&mut out, &bigon).unwrap();
+    let t = String::from_utf8(out).unwrap();
+    assert!(
+        t.contains("\"gluing\":[") && !t.contains("gluing_exceptions"),
+        "{t}"
+    );
+    let back = json::read(&t).unwrap();
+    assert_eq!(glued(&back.mesh), glued(&bigon.mesh));
+    assert_eq!(back.mesh.n_boundary_edges(), 2);
     // The full gluing of older files still reads to the same surface.
     let old = json::write(&tet);
     assert!(old.contains("\"gluing\""));
