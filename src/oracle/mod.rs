@@ -16,6 +16,7 @@ pub mod registry;
 // After `registry`, whose `at_precision!` macro it uses.
 pub mod checks;
 pub mod checks_extra;
+pub mod checks_lobachevsky;
 pub mod controls;
 /// Vertex-fixing comparison of triangulations, kept here under its former path.
 pub use crate::mesh::relabel;

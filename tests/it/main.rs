@@ -2,6 +2,7 @@
 
 mod adversarial_gen;
 mod claims;
+mod claims_lobachevsky;
 mod cli;
 mod cli_controls;
 mod cli_delaunay;
@@ -44,6 +45,7 @@ mod scalar_dd_exp;
 mod scalar_dd_reduction;
 mod scalar_nearest;
 mod sharding;
+mod special;
 #[cfg(feature = "strategies")]
 mod strategies;
 #[allow(dead_code)] // helpers used by some areas only

@@ -22,6 +22,7 @@ use rug::Rational;
 
 pub mod conformal;
 pub mod flips;
+pub mod lobachevsky;
 pub mod metric;
 
 /// The relative perturbation of a length (or squared length) used by the metric controls:
@@ -61,6 +62,7 @@ pub fn controls() -> Vec<Check> {
     let mut all = metric::controls();
     all.extend(conformal::controls());
     all.extend(flips::controls());
+    all.extend(lobachevsky::controls());
     all.sort_by_key(|c| c.id);
     all
 }
