@@ -64,6 +64,8 @@ use crate::predicates::ladder::{decide, Ladder, SignPredicate};
 use crate::predicates::triangle::{strict_triangle_f64, strict_triangle_real};
 use crate::scalar::{Certified, Interval, Mpfr, Precision, Real, Sign, Stage};
 use rug::Rational;
+use std::sync::atomic::{AtomicUsize, Ordering as AtomicOrdering};
+use std::sync::Arc;
 
 /// At most this many times a rounded new diagonal is replaced by `fl(ℓ − fl(4u·ℓ))`
 /// (a relative decrease in `[3u, 5u]`) before a flip is refused (proof: B65).
@@ -81,6 +83,26 @@ pub struct FlipOptions {
     pub order_seed: Option<u64>,
     /// Record the flipped edges in order in [`FlipReport::sequence`].
     pub record: bool,
+    /// A counter of the flips done, which another thread may read for a progress display.
+    pub progress: Option<FlipCounter>,
+}
+
+/// A shared count of flips done (relaxed atomic increments; read for display only).
+#[derive(Clone, Debug, Default)]
+pub struct FlipCounter(pub Arc<AtomicUsize>);
+
+impl FlipCounter {
+    /// The flips counted so far.
+    pub fn get(&self) -> usize {
+        self.0.load(AtomicOrdering::Relaxed)
+    }
+}
+
+impl PartialEq for FlipCounter {
+    /// The same counter.
+    fn eq(&self, other: &FlipCounter) -> bool {
+        Arc::ptr_eq(&self.0, &other.0)
+    }
 }
 
 /// How many decisions each rung of the ladder made.
@@ -339,6 +361,9 @@ fn accept<M: Metric>(
     report.flips += 1;
     if opts.record {
         report.sequence.push(q.edge);
+    }
+    if let Some(c) = &opts.progress {
+        c.0.fetch_add(1, AtomicOrdering::Relaxed);
     }
     m.accepted(report.flips);
     for side in [q.edges.jk, q.edges.ki, q.edges.il, q.edges.lj] {

@@ -15,3 +15,4 @@ pub mod flip_to_delaunay;
 pub mod flips;
 pub mod naive;
 pub mod replay;
+pub mod replay_input;

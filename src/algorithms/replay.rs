@@ -18,12 +18,16 @@ use super::flip_to_delaunay::rational_bits;
 use super::flips::{
     euclidean_length_enclosure, ptolemy_length_enclosure, ptolemy_length_exact, FlipKind,
 };
+use super::replay_input::InputMetric;
 use crate::io::Metric;
 use crate::mesh::{Edge, Mesh};
 use crate::predicates::delaunay::{delaunay_sign_squared, enclose_p, exact_p, Quad, QuadEdges};
+use crate::predicates::delaunay_widened::{in_range, sign_p, Bounds};
 use crate::predicates::directed::valid;
 use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
 use rug::Rational;
+use std::borrow::Cow;
+use std::collections::HashMap;
 
 /// Bit size (numerator + denominator) past which exact Ptolemy lengths are replaced by
 /// enclosures in a replay.
@@ -129,8 +133,11 @@ pub fn sign_after_f64(
             }
         }
     }
-    let l = q.map(|e| &lens[e.idx()]);
-    let arr = l.to_array();
+    sign_of_lens(q.map(|e| &lens[e.idx()]).to_array(), bits)
+}
+
+/// The MPFR and exact rungs of [`sign`] on the five lengths `ℓ_ij, ℓ_jk, ℓ_ki, ℓ_il, ℓ_lj`.
+fn sign_of_lens(arr: [&Len; 5], bits: u32) -> Option<Sign> {
     // The enclosure first: it decides every sign away from zero, and costs less than exact
     // arithmetic on long rationals; only a straddling enclosure goes to the exact rules.
     let [a, b, c, d, e] = arr.map(|x| x.enclose(bits));
@@ -240,13 +247,18 @@ pub enum BrokenStep {
     NoLength,
 }
 
-/// The outcome of [`replay_on_input`].
+/// The lengths of the edges flipped in a lazy replay ([`replay_lazy`]), by edge index;
+/// every other edge keeps its input length.
+pub type FlippedLens = HashMap<u32, Len>;
+
+/// The outcome of [`replay_on_input`] (lengths `L = Vec<Len>`, one per edge) or of
+/// [`replay_lazy`] (`L =` [`FlippedLens`]).
 #[derive(Clone, Debug)]
-pub struct Replayed {
+pub struct Replayed<L = Vec<Len>> {
     /// The triangulation after the replayed flips (all of them when `broken` is `None`).
     pub mesh: Mesh,
     /// Its lengths for the input metric: exact or enclosed.
-    pub lens: Vec<Len>,
+    pub lens: L,
     /// The first step that is not a certified legal flip, with its index and edge; the
     /// replay stops there and the triangulation is then not certified for the input.
     pub broken: Option<(usize, Edge, BrokenStep)>,
@@ -258,11 +270,79 @@ pub struct Replayed {
     pub undecided: Vec<Edge>,
 }
 
-impl Replayed {
+impl<L> Replayed<L> {
     /// Whether the replayed triangulation is certified intrinsic Delaunay for the input
     /// metric: every step legal and every interior edge certified `D ≥ 0`.
     pub fn certified_delaunay(&self) -> bool {
         self.broken.is_none() && self.negative.is_empty() && self.undecided.is_empty()
+    }
+    /// Whether a sign or a length was left open (an undecided step, a length not
+    /// enclosed, an undecided edge at the end): more bits may decide it.
+    fn open(&self) -> bool {
+        matches!(
+            self.broken,
+            Some((_, _, BrokenStep::Undecided | BrokenStep::NoLength))
+        ) || !self.undecided.is_empty()
+    }
+}
+
+impl Replayed<FlippedLens> {
+    /// Every edge's length: the flipped ones', the input's for the others.
+    pub fn materialized<S: InputMetric + ?Sized>(self, input: &S) -> Replayed {
+        let Replayed {
+            mesh,
+            mut lens,
+            broken,
+            ties,
+            negative,
+            undecided,
+        } = self;
+        let lens = (0..input.n_edges() as u32)
+            .map(|e| lens.remove(&e).unwrap_or_else(|| input.exact(Edge(e))))
+            .collect();
+        Replayed {
+            mesh,
+            lens,
+            broken,
+            ties,
+            negative,
+            undecided,
+        }
+    }
+}
+
+/// The lengths during a lazy replay: the first-rung enclosures of all edges (B83), the
+/// exact or enclosed lengths of the flipped edges, and the input for the others.
+struct Lazy<'a, S: ?Sized> {
+    input: &'a S,
+    first: Vec<Option<Bounds>>,
+    flipped: FlippedLens,
+}
+
+impl<S: InputMetric + ?Sized> Lazy<'_, S> {
+    /// The length of `e`, built from the input when `e` was not flipped.
+    fn len(&self, e: Edge) -> Cow<'_, Len> {
+        match self.flipped.get(&e.0) {
+            Some(l) => Cow::Borrowed(l),
+            None => Cow::Owned(self.input.exact(e)),
+        }
+    }
+    /// The certified sign of `D` on the quadrilateral `q`: the first rung on `f64`
+    /// enclosures (B83), then the MPFR and exact rungs of [`sign`] on the lengths.
+    fn sign(&self, q: Quad<Edge>, bits: u32) -> Option<Sign> {
+        if let [Some(a), Some(b), Some(c), Some(d), Some(e)] =
+            q.map(|e| self.first[e.idx()]).to_array()
+        {
+            if let Some(s) = sign_p([a, b, c, d, e]) {
+                return Some(s);
+            }
+        }
+        let l = q.map(|e| self.len(e)).to_array();
+        sign_of_lens([&*l[0], &*l[1], &*l[2], &*l[3], &*l[4]], bits)
+    }
+    /// The lengths of the quadrilateral `q`.
+    fn quad(&self, q: Quad<Edge>) -> Quad<Cow<'_, Len>> {
+        q.map(|e| self.len(e))
     }
 }
 
@@ -275,11 +355,22 @@ pub fn replay_on_input(
     kind: FlipKind,
     bits: u32,
 ) -> Replayed {
+    replay_lazy(mesh, metric, sequence, kind, bits).materialized(metric)
+}
+
+/// [`replay_on_input`] on any [`InputMetric`], building exact lengths only for the edges
+/// a sign or a flip needs them for (the first rung decides the rest, proof: B83); the
+/// verdicts are those of [`replay_on_input`] on the same metric.
+pub fn replay_lazy<S: InputMetric + ?Sized>(
+    mesh: &Mesh,
+    input: &S,
+    sequence: &[Edge],
+    kind: FlipKind,
+    bits: u32,
+) -> Replayed<FlippedLens> {
     let ptolemy = kind == FlipKind::Ptolemy;
     let mut mesh = mesh.clone();
-    let mut lens = Len::of_metric(metric);
-    let mut fast: Vec<Option<Interval<f64>>> = lens.iter().map(f64_enclosure).collect();
-    let out = |mesh: Mesh, lens: Vec<Len>, broken| Replayed {
+    let out = |mesh: Mesh, lens: FlippedLens, broken| Replayed {
         mesh,
         lens,
         broken,
@@ -287,52 +378,70 @@ pub fn replay_on_input(
         negative: Vec::new(),
         undecided: Vec::new(),
     };
-    if lens.len() != mesh.n_edges() {
+    if input.n_edges() != mesh.n_edges() {
         let e = Edge(0);
-        return out(mesh, lens, Some((0, e, BrokenStep::NoLength)));
+        return out(mesh, HashMap::new(), Some((0, e, BrokenStep::NoLength)));
     }
+    let mut lens = Lazy {
+        input,
+        first: mesh.edges().map(|e| input.first_rung(e)).collect(),
+        flipped: HashMap::new(),
+    };
     for (n, &e) in sequence.iter().enumerate() {
         let Some(q) = (e.idx() < mesh.n_edges())
             .then(|| QuadEdges::of(&mesh, e))
             .flatten()
         else {
-            return out(mesh, lens, Some((n, e, BrokenStep::NotFlippable)));
+            return out(mesh, lens.flipped, Some((n, e, BrokenStep::NotFlippable)));
         };
-        let tie = match sign_after_f64(&lens, Some(&fast), q.edges, bits) {
+        let tie = match lens.sign(q.edges, bits) {
             Some(Sign::Zero) => true,
             Some(Sign::Negative) => false,
             Some(Sign::Positive) => {
-                return out(mesh, lens, Some((n, e, BrokenStep::StrictlyDelaunay)))
+                return out(
+                    mesh,
+                    lens.flipped,
+                    Some((n, e, BrokenStep::StrictlyDelaunay)),
+                )
             }
-            None => return out(mesh, lens, Some((n, e, BrokenStep::Undecided))),
+            None => return out(mesh, lens.flipped, Some((n, e, BrokenStep::Undecided))),
         };
+        let quad = lens.quad(q.edges);
+        let quad = quad.as_refs().map(|l| &**l);
         let new = if tie {
-            tie_length(q.lengths(&lens), ptolemy, bits)
+            tie_length(quad, ptolemy, bits)
         } else {
-            new_length(q.lengths(&lens), ptolemy, bits)
+            new_length(quad, ptolemy, bits)
         };
         let Some(new) = new else {
-            return out(mesh, lens, Some((n, e, BrokenStep::NoLength)));
+            return out(mesh, lens.flipped, Some((n, e, BrokenStep::NoLength)));
         };
         if mesh.flip(e).is_err() {
-            return out(mesh, lens, Some((n, e, BrokenStep::NotFlippable)));
+            return out(mesh, lens.flipped, Some((n, e, BrokenStep::NotFlippable)));
         }
-        fast[e.idx()] = f64_enclosure(&new);
-        lens[e.idx()] = new;
+        lens.first[e.idx()] = f64_enclosure(&new).and_then(|x| in_range([*x.lo(), *x.hi()]));
+        lens.flipped.insert(e.0, new);
     }
-    let mut r = out(mesh, lens, None);
-    for e in r.mesh.edges() {
-        let Some(q) = QuadEdges::of(&r.mesh, e) else {
+    let (mut ties, mut negative, mut undecided) = (Vec::new(), Vec::new(), Vec::new());
+    for e in mesh.edges() {
+        let Some(q) = QuadEdges::of(&mesh, e) else {
             continue;
         };
-        match sign_after_f64(&r.lens, Some(&fast), q.edges, bits) {
+        match lens.sign(q.edges, bits) {
             Some(Sign::Positive) => {}
-            Some(Sign::Zero) => r.ties.push(e),
-            Some(Sign::Negative) => r.negative.push(e),
-            None => r.undecided.push(e),
+            Some(Sign::Zero) => ties.push(e),
+            Some(Sign::Negative) => negative.push(e),
+            None => undecided.push(e),
         }
     }
-    r
+    Replayed {
+        mesh,
+        lens: lens.flipped,
+        broken: None,
+        ties,
+        negative,
+        undecided,
+    }
 }
 
 /// [`replay_on_input`] from `start_bits`, doubling up to `max_bits` while a sign or a length
@@ -346,15 +455,24 @@ pub fn replay_escalating(
     start_bits: u32,
     max_bits: u32,
 ) -> (Replayed, u32) {
+    let (r, bits) = replay_escalating_lazy(mesh, metric, sequence, kind, start_bits, max_bits);
+    (r.materialized(metric), bits)
+}
+
+/// [`replay_escalating`] with [`replay_lazy`] on any [`InputMetric`].
+pub fn replay_escalating_lazy<S: InputMetric + ?Sized>(
+    mesh: &Mesh,
+    input: &S,
+    sequence: &[Edge],
+    kind: FlipKind,
+    start_bits: u32,
+    max_bits: u32,
+) -> (Replayed<FlippedLens>, u32) {
     let mut bits = start_bits.max(53);
     loop {
-        let r = replay_on_input(mesh, metric, sequence, kind, bits);
-        let open = matches!(
-            r.broken,
-            Some((_, _, BrokenStep::Undecided | BrokenStep::NoLength))
-        ) || !r.undecided.is_empty();
+        let r = replay_lazy(mesh, input, sequence, kind, bits);
         let next = bits.saturating_mul(2);
-        if !open || next > max_bits {
+        if !r.open() || next > max_bits {
             return (r, bits);
         }
         bits = next;

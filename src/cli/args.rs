@@ -17,10 +17,12 @@ pub struct Cli {
 /// The subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Run every applicable catalogue check on a surface (JSON, OBJ or OFF).
+    /// Run every applicable catalogue check on surfaces (JSON, OBJ or OFF).
     Check {
-        /// The surface file.
-        surface: PathBuf,
+        /// The surface files, or directories (their .json, .obj and .off files, sorted, not
+        /// recursively); one report per file.
+        #[arg(required = true, num_args = 1..)]
+        surfaces: Vec<PathBuf>,
         /// Comma list of precisions: f64, dd, MPFR bits (53..=65536), exact.
         #[arg(long, default_value = penner::oracle::precision::DEFAULT_LIST)]
         precision: String,

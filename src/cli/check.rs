@@ -1,5 +1,6 @@
-//! `penner check SURFACE`: every applicable check at the chosen precisions, with failure
-//! files for failing checks.
+//! `penner check SURFACE…`: every applicable check at the chosen precisions, with failure
+//! files for failing checks; several files, or every surface file of a directory, one
+//! report each.
 
 use super::error::CliError;
 use super::files::{emit, write_fresh_failure};
@@ -12,8 +13,8 @@ use std::path::{Path, PathBuf};
 
 /// Options of `penner check`.
 pub struct Options<'a> {
-    /// The surface file.
-    pub path: &'a Path,
+    /// The surface files and directories, as given.
+    pub paths: &'a [PathBuf],
     /// Precision list as typed.
     pub precision: &'a str,
     /// Check IDs to run (empty: all).
@@ -28,8 +29,100 @@ pub struct Options<'a> {
     pub lengths: Option<&'a Path>,
 }
 
-/// Run `penner check`.
+/// Run `penner check`: one file as before; several files (or a directory) one report
+/// each — a table with a header per file, or with `--json` a JSON array of one object per
+/// file (`{"file": …, "rows": …}`, or `{"file": …, "error": …, "exit_code": 3}` for a file
+/// that cannot be read). A bad file is reported and the others still run; the exit code
+/// is the worst over the files ([`worse`]); a write error ends the command (exit 4).
 pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
+    let files = super::files::surface_files(o.paths);
+    let single =
+        o.paths.len() == 1 && files.len() == 1 && files[0].as_ref().is_ok_and(|f| f == &o.paths[0]);
+    if single {
+        let path = &o.paths[0];
+        let (code, doc) = run_file(o, path)?;
+        if let Some(doc) = doc {
+            emit(&format!("{doc:#}\n"))?;
+        }
+        return Ok(code);
+    }
+    if o.lengths.is_some() {
+        return Err(CliError::Input(
+            "--lengths goes with one surface file, not several".to_string(),
+        ));
+    }
+    let mut worst = super::error::code::HOLDS;
+    let mut first = true;
+    if o.json {
+        emit("[")?;
+    }
+    for file in files {
+        let (path, outcome) = match file {
+            Ok(path) => {
+                let r = run_file(o, &path);
+                (path, r)
+            }
+            Err((path, e)) => (path, Err(e)),
+        };
+        let (code, doc) = match outcome {
+            Ok(r) => r,
+            Err(e @ CliError::Write { .. }) => return Err(e),
+            Err(e) => {
+                eprintln!("penner: {e}");
+                let doc = o.json.then(|| {
+                    serde_json::json!({
+                        "error": e.to_string(),
+                        "exit_code": e.exit_code(),
+                    })
+                });
+                (e.exit_code(), doc)
+            }
+        };
+        worst = worse(worst, code);
+        if let Some(mut doc) = doc {
+            let mut obj = serde_json::Map::new();
+            obj.insert("file".into(), path.display().to_string().into());
+            if let serde_json::Value::Object(m) = std::mem::take(&mut doc) {
+                obj.extend(m);
+            }
+            let sep = if first { "\n" } else { ",\n" };
+            emit(&format!("{sep}{:#}", serde_json::Value::Object(obj)))?;
+        } else if !o.json && code != super::error::code::HOLDS {
+            emit(&format!("({}: exit code {code})\n", path.display()))?;
+        }
+        if !o.json {
+            emit("\n")?;
+        }
+        first = false;
+    }
+    if o.json {
+        emit("\n]\n")?;
+    }
+    Ok(worst)
+}
+
+/// The worse of two exit codes over files: holds (0) < undecided (2) < bad input (3) <
+/// fails (1) < a defect (5).
+pub fn worse(a: u8, b: u8) -> u8 {
+    use super::error::code::{BAD_INPUT, FAILS, HOLDS, INTERNAL, UNDECIDED};
+    let rank = |c: u8| match c {
+        HOLDS => 0,
+        UNDECIDED => 1,
+        BAD_INPUT => 2,
+        FAILS => 3,
+        INTERNAL => 5,
+        _ => 4,
+    };
+    if rank(b) > rank(a) {
+        b
+    } else {
+        a
+    }
+}
+
+/// Check one surface file: the exit code, and with `--json` the document (not yet
+/// printed); the table is printed here.
+fn run_file(o: &Options<'_>, path: &Path) -> Result<(u8, Option<serde_json::Value>), CliError> {
     let mut precs = super::precisions(o.precision)?;
     // Several controls are exact-only; they always run at `exact` too.
     if o.negative_controls && !precs.contains(&Prec::Exact) {
@@ -40,7 +133,7 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     } else {
         select(o.only)?
     };
-    let mut case = super::input::load_case(o.path)?;
+    let mut case = super::input::load_case(path)?;
     if let Some(l) = o.lengths {
         case = super::input::with_lengths(case, l)?;
     }
@@ -61,29 +154,30 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
                 let doc = Failure {
                     check: check.id.to_string(),
                     precision: row.precision,
-                    source: o.path.display().to_string(),
+                    source: path.display().to_string(),
                     source_faces: case.mesh.n_faces(),
                     witnesses: witnesses.clone(),
                     surface: small,
                 };
-                let path = write_fresh_failure(o.path, &format!("{:#}\n", doc.to_json()))?;
-                written.push((check.id.to_string(), path, faces));
+                let file = write_fresh_failure(path, &format!("{:#}\n", doc.to_json()))?;
+                written.push((check.id.to_string(), file, faces));
             }
         }
     }
+    let mut doc = None;
     if o.json {
-        let mut doc = report::json(&rows);
-        doc["failure_files"] = written
+        let mut d = report::json(&rows);
+        d["failure_files"] = written
             .iter()
             .map(|(id, p, faces)| {
                 serde_json::json!({ "check": id, "file": p.display().to_string(), "faces": faces })
             })
             .collect();
-        emit(&format!("{doc:#}\n"))?;
+        doc = Some(d);
     } else {
         emit(&format!(
             "{}: {} vertices, {} edges, {} faces, χ = {}\n\n",
-            o.path.display(),
+            path.display(),
             case.mesh.n_vertices(),
             case.mesh.n_edges(),
             case.mesh.n_faces(),
@@ -100,9 +194,9 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         }
     }
     if o.negative_controls {
-        return controls_verdict(&rows, &checks, o.json);
+        return Ok((controls_verdict(&rows, &checks, o.json)?, doc));
     }
-    Ok(super::status_code(report::status(&rows)))
+    Ok((super::status_code(report::status(&rows)), doc))
 }
 
 /// The negative controls whose check IDs are named by `--only` (`T16` selects `T16-NC`),

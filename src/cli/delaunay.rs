@@ -7,9 +7,12 @@ use super::input::FlipCase;
 use super::output::{self, FlipValues};
 use penner::algorithms::flip_scaled::flip_to_delaunay_scaled;
 use penner::algorithms::flip_to_delaunay::{
-    flip_to_delaunay, flip_to_delaunay_exact, ExactLengths, FlipKind, FlipOptions, FlipReport,
+    flip_to_delaunay, flip_to_delaunay_exact, ExactLengths, FlipCounter, FlipKind, FlipOptions,
+    FlipReport,
 };
-use penner::algorithms::replay::{replay_escalating, BrokenStep, Replayed};
+use penner::algorithms::replay::{replay_escalating_lazy, BrokenStep, FlippedLens, Replayed};
+use penner::algorithms::replay_input::PositionMetric;
+use penner::mesh::{Edge, Mesh};
 use penner::oracle::Prec;
 use penner::predicates::delaunay::QuadEdges;
 use penner::scalar::exp_length::ExpLength;
@@ -112,10 +115,11 @@ fn flip_scaled(
     case: &mut FlipCase,
     u: &[f64],
     kind: FlipKind,
+    opts: &FlipOptions,
 ) -> Result<(FlipReport, FlipValues), CliError> {
     let base: Vec<f64> = case.lengths(());
     let name = case.name().to_string();
-    let (report, lengths) = flip_to_delaunay_scaled(case.mesh_mut(), &base, u, kind, &record())
+    let (report, lengths) = flip_to_delaunay_scaled(case.mesh_mut(), &base, u, kind, opts)
         .map_err(|e| CliError::Input(format!("{name}: {e}")))?;
     Ok((
         report,
@@ -125,14 +129,25 @@ fn flip_scaled(
 
 /// Flip real lengths of backend `T` and return the report and the exact values of the
 /// stored lengths (`f64` values as they are: each is exact).
+/// `squares`, when given, are the `f64` squared lengths of an OBJ/OFF input
+/// (`DecimalSurface::squared_lengths_f64`), whose square roots are its `f64` lengths.
 fn flip_real<T: Real + 'static>(
     case: &mut FlipCase,
     ctx: T::Ctx,
     kind: FlipKind,
+    squares: Option<&[f64]>,
+    opts: &FlipOptions,
 ) -> Result<(FlipReport, FlipValues), CliError> {
-    let mut l: Vec<T> = case.lengths(ctx);
+    let from_squares = squares.and_then(|s| {
+        let l: Box<dyn Any> = Box::new(s.iter().map(|&x| x.sqrt()).collect::<Vec<f64>>());
+        l.downcast::<Vec<T>>().ok()
+    });
+    let mut l: Vec<T> = match from_squares {
+        Some(l) => *l,
+        None => case.lengths(ctx),
+    };
     let name = case.name().to_string();
-    let report = flip_to_delaunay(case.mesh_mut(), &mut l, kind, &record())
+    let report = flip_to_delaunay(case.mesh_mut(), &mut l, kind, opts)
         .map_err(|e| CliError::Input(format!("{name}: {e}")))?;
     let l = match (Box::new(l) as Box<dyn Any>).downcast::<Vec<f64>>() {
         Ok(binary64) => return Ok((report, FlipValues::Binary64(*binary64))),
@@ -151,10 +166,12 @@ fn flip_real<T: Real + 'static>(
     Ok((report, FlipValues::Exact(exact)))
 }
 
-/// The flip options of every run: default, with the sequence recorded (for the replay).
-fn record() -> FlipOptions {
+/// The flip options of every run: default, with the sequence recorded (for the replay)
+/// and the flips counted in `progress`.
+fn record(progress: &FlipCounter) -> FlipOptions {
     FlipOptions {
         record: true,
+        progress: Some(progress.clone()),
         ..FlipOptions::default()
     }
 }
@@ -175,13 +192,90 @@ fn refuse_existing(output: Option<&Path>) -> Result<(), CliError> {
 fn spinner(path: &Path, faces: usize) -> Option<indicatif::ProgressBar> {
     std::io::stderr().is_terminal().then(|| {
         let b = indicatif::ProgressBar::new_spinner();
-        b.set_message(format!(
-            "flipping {} ({faces} faces) to intrinsic Delaunay",
-            path.display(),
-        ));
+        b.set_message(flipping_message(path, faces, 0));
         b.enable_steady_tick(Duration::from_millis(120));
         b
     })
+}
+
+/// The spinner's message while flipping.
+fn flipping_message(path: &Path, faces: usize, flips: usize) -> String {
+    format!(
+        "flipping {} ({faces} faces) to intrinsic Delaunay: {flips} flips",
+        path.display()
+    )
+}
+
+/// Run `flip`, showing the flips counted by `counter` on `bar` (if any) while it runs.
+fn with_flip_progress<R>(
+    bar: Option<&indicatif::ProgressBar>,
+    counter: &FlipCounter,
+    (path, faces): (&Path, usize),
+    flip: impl FnOnce() -> R,
+) -> R {
+    let Some(bar) = bar else {
+        return flip();
+    };
+    let done = std::sync::atomic::AtomicBool::new(false);
+    std::thread::scope(|s| {
+        s.spawn(|| {
+            while !done.load(std::sync::atomic::Ordering::Relaxed) {
+                bar.set_message(flipping_message(path, faces, counter.get()));
+                std::thread::sleep(Duration::from_millis(150));
+            }
+        });
+        let r = flip();
+        done.store(true, std::sync::atomic::Ordering::Relaxed);
+        r
+    })
+}
+
+/// Flip `case` at `prec` with flips of `kind` (the scaled metric when `scale` is given),
+/// from the `f64` `squares` when kept; the report and the stored lengths' values.
+fn flip_case(
+    case: &mut FlipCase,
+    (path, prec, kind): (&Path, Prec, FlipKind),
+    scale: Option<&[f64]>,
+    squares: Option<&[f64]>,
+    opts: &FlipOptions,
+) -> Result<(FlipReport, FlipValues), CliError> {
+    // Cloned only for the exact rung, which consumes them.
+    let exact_lengths = if prec == Prec::Exact {
+        case.exact_lengths().cloned()
+    } else {
+        None
+    };
+    match (prec, kind, exact_lengths, scale) {
+        (.., Some(u)) => flip_scaled(case, u, kind, opts),
+        (Prec::Exact, FlipKind::Ptolemy, Some(l), None) => {
+            let (report, lengths) =
+                flip_to_delaunay_exact(case.mesh_mut(), l, EXACT_GUARD_BITS, opts)
+                    .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+            match lengths {
+                ExactLengths::Exact(v) => Ok((report, FlipValues::Exact(v))),
+                ExactLengths::Enclosed(_) => Err(CliError::Input(format!(
+                    "{}: exact lengths outgrew {EXACT_GUARD_BITS} bits after {} flips; use a bit count such as --precision 1024",
+                    path.display(),
+                    report.fell_back_after.unwrap_or(report.flips)
+                ))),
+            }
+        }
+        (Prec::Exact, ..) => Err(CliError::Input(
+            "--precision exact needs --flips ptolemy and exact (not squared) lengths: Euclidean flips make lengths irrational"
+                .to_string(),
+        )),
+        (Prec::F64, ..) => flip_real::<f64>(case, (), kind, squares, opts),
+        (Prec::Dd, ..) => flip_real::<Dd>(case, (), kind, None, opts),
+        (Prec::Mpfr(p), ..) => flip_real::<Mpfr>(case, p, kind, None, opts),
+    }
+}
+
+/// The flip kind asked for.
+fn flip_kind(k: ArgFlipKind) -> FlipKind {
+    match k {
+        ArgFlipKind::Euclidean => FlipKind::Euclidean,
+        ArgFlipKind::Ptolemy => FlipKind::Ptolemy,
+    }
 }
 
 /// Run `penner delaunay`.
@@ -198,69 +292,69 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     refuse_existing(o.lengths_out)?;
     let format = output::format_of(o.output, o.lengths_out)?;
     let mut case = super::input::load_flip_case(o.path)?;
-    let input_mesh = case.mesh().clone();
-    // The exact input metric, for the replay of a rounded run (taken before flipping: the
-    // squared lengths of positions follow the mesh's edges).
-    let input_metric = (o.input_replay && prec != Prec::Exact && o.scale_factors.is_none())
-        .then(|| case.exact_metric());
-    let kind = match o.flips {
-        ArgFlipKind::Euclidean => FlipKind::Euclidean,
-        ArgFlipKind::Ptolemy => FlipKind::Ptolemy,
+    // The input triangulation, for the replay of a rounded run on the exact input metric
+    // (the squared lengths of positions follow the input mesh's edges).
+    let input_mesh = (o.input_replay && prec != Prec::Exact && o.scale_factors.is_none())
+        .then(|| case.mesh().clone());
+    // The f64 squared lengths of OBJ/OFF input, computed once for the f64 lengths and the
+    // replay's first rung.
+    let squares = match &case {
+        FlipCase::Decimal(s) if input_mesh.is_some() && prec == Prec::F64 => {
+            Some(s.squared_lengths_f64())
+        }
+        _ => None,
     };
+    let kind = flip_kind(o.flips);
     let bar = spinner(o.path, case.mesh().n_faces());
     let scale = match o.scale_factors {
         Some(path) => Some(read_scale_factors(path, prec, case.mesh().n_vertices())?),
         None => None,
     };
-    // Cloned only for the exact rung, which consumes them.
-    let exact_lengths = if prec == Prec::Exact {
-        case.exact_lengths().cloned()
-    } else {
-        None
-    };
-    let result = match (prec, kind, exact_lengths, &scale) {
-        (.., Some(u)) => flip_scaled(&mut case, u, kind),
-        (Prec::Exact, FlipKind::Ptolemy, Some(l), None) => {
-            let (report, lengths) =
-                flip_to_delaunay_exact(case.mesh_mut(), l, EXACT_GUARD_BITS, &record())
-                    .map_err(|e| CliError::Input(format!("{}: {e}", o.path.display())))?;
-            match lengths {
-                ExactLengths::Exact(v) => Ok((report, FlipValues::Exact(v))),
-                ExactLengths::Enclosed(_) => Err(CliError::Input(format!(
-                    "{}: exact lengths outgrew {EXACT_GUARD_BITS} bits after {} flips; use a bit count such as --precision 1024",
-                    o.path.display(),
-                    report.fell_back_after.unwrap_or(report.flips)
-                ))),
+    let counter = FlipCounter::default();
+    let opts = record(&counter);
+    let faces = case.mesh().n_faces();
+    let result = with_flip_progress(bar.as_ref(), &counter, (o.path, faces), || {
+        flip_case(
+            &mut case,
+            (o.path, prec, kind),
+            scale.as_deref(),
+            squares.as_deref(),
+            &opts,
+        )
+    });
+    let (report, lengths) = match result {
+        Ok(r) => r,
+        Err(e) => {
+            if let Some(b) = bar {
+                b.finish_and_clear();
             }
-        }
-        (Prec::Exact, ..) => Err(CliError::Input(
-            "--precision exact needs --flips ptolemy and exact (not squared) lengths: Euclidean flips make lengths irrational"
-                .to_string(),
-        )),
-        (Prec::F64, ..) => flip_real::<f64>(&mut case, (), kind),
-        (Prec::Dd, ..) => flip_real::<Dd>(&mut case, (), kind),
-        (Prec::Mpfr(p), ..) => {
-            flip_real::<Mpfr>(&mut case, p, kind)
+            return Err(e);
         }
     };
-    if let Some(b) = bar {
-        b.finish_and_clear();
+    if let (Some(b), Some(_)) = (&bar, &input_mesh) {
+        b.set_message(format!(
+            "{} flips done; replaying them on the exact input metric",
+            report.flips
+        ));
     }
-    let (report, lengths) = result?;
     // Exact Ptolemy flipping has no rounding: its certificate is for the input metric.
     let exact_run = prec == Prec::Exact;
     let rounded_ok = report.all_certified_delaunay();
-    let replay = input_metric
+    let replay = input_mesh
         .as_ref()
         .filter(|_| rounded_ok && !exact_run)
-        .map(|metric| {
-            let (lo, hi) = REPLAY_BITS;
-            replay_escalating(&input_mesh, metric, &report.sequence, kind, lo, hi)
-        });
+        .map(|mesh| replay_on_input(&case, mesh, squares.as_deref(), &report.sequence, kind));
+    if let Some(b) = &bar {
+        b.set_message(format!("{} flips done; writing", report.flips));
+    }
     let (certificate, not_for_input) = certificate_of(rounded_ok, exact_run, replay.as_ref());
     // The output is a plain surface file (readable by `penner check`); the flip count
     // and the certificate go to standard error (and to the summary file).
-    output::write_flipped(&case, &lengths, format, o.output, o.lengths_out)?;
+    let written = output::write_flipped(&case, &lengths, format, o.output, o.lengths_out);
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    written?;
     let what = certificate_words(
         certificate,
         not_for_input,
@@ -293,12 +387,35 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     })
 }
 
+/// Replay `sequence` on the exact input metric of `case` (B80), whose input triangulation
+/// is `mesh` (with its `f64` squared lengths when kept): exact values are built only for the edges the first rung leaves open (B83).
+fn replay_on_input(
+    case: &FlipCase,
+    mesh: &Mesh,
+    squares: Option<&[f64]>,
+    sequence: &[Edge],
+    kind: FlipKind,
+) -> (Replayed<FlippedLens>, u32) {
+    let (lo, hi) = REPLAY_BITS;
+    match case {
+        FlipCase::Exact(s) => replay_escalating_lazy(mesh, &s.metric, sequence, kind, lo, hi),
+        FlipCase::Decimal(surface) => {
+            let input = PositionMetric {
+                mesh,
+                surface,
+                squares,
+            };
+            replay_escalating_lazy(mesh, &input, sequence, kind, lo, hi)
+        }
+    }
+}
+
 /// The certificate of a run and the count of edges not certified for the input metric
 /// (`None` when not counted: no replay, or the rounded run itself is not certified).
 fn certificate_of(
     rounded_ok: bool,
     exact_run: bool,
-    replay: Option<&(Replayed, u32)>,
+    replay: Option<&(Replayed<FlippedLens>, u32)>,
 ) -> (Certificate, Option<usize>) {
     match (replay, rounded_ok) {
         (_, false) => (Certificate::None, None),
@@ -345,7 +462,7 @@ fn summary_json(
 fn certificate_words(
     certificate: Certificate,
     not_for_input: Option<usize>,
-    replay: Option<&(Replayed, u32)>,
+    replay: Option<&(Replayed<FlippedLens>, u32)>,
     scaled: bool,
     report: &FlipReport,
 ) -> String {
@@ -378,7 +495,7 @@ fn certificate_words(
 /// interior edges certified non-Delaunay or undecided there; when a flip of the sequence is
 /// not a certified legal step on the input metric, the triangulation itself is not one of
 /// the input's certified flips, and no interior edge is certified.
-fn not_certified(r: &Replayed) -> usize {
+fn not_certified(r: &Replayed<FlippedLens>) -> usize {
     if r.broken.is_some() {
         return r
             .mesh
@@ -390,7 +507,7 @@ fn not_certified(r: &Replayed) -> usize {
 }
 
 /// The first reason of a failed replay, for the message.
-fn replay_detail(r: &Replayed, bits: u32) -> String {
+fn replay_detail(r: &Replayed<FlippedLens>, bits: u32) -> String {
     match &r.broken {
         Some((n, e, why)) => format!(
             " (flip {n} of the sequence, edge {e}, is {} for the input metric at {bits} bits)",

@@ -146,3 +146,60 @@ pub fn stdout_error(e: &std::io::Error) -> CliError {
         reason: e.to_string(),
     }
 }
+
+/// A surface file to check, or the path and error of an entry that gives none.
+pub type SurfaceFile = Result<PathBuf, (PathBuf, CliError)>;
+
+/// The surface files named by `paths`, in order: a file as given; a directory as its
+/// `.json`, `.obj` and `.off` entries (any case, not recursing into subdirectories, failure
+/// files `*.penner-failure-N.json` left out), sorted by name. A directory that cannot be
+/// listed, or holds no surface file, is an error entry; the others still run.
+pub fn surface_files(paths: &[PathBuf]) -> Vec<SurfaceFile> {
+    let mut out = Vec::new();
+    for p in paths {
+        if !p.is_dir() {
+            out.push(Ok(p.clone()));
+            continue;
+        }
+        let entries = match std::fs::read_dir(p) {
+            Ok(entries) => entries,
+            Err(source) => {
+                let e = CliError::Read {
+                    path: p.clone(),
+                    source,
+                };
+                out.push(Err((p.clone(), e)));
+                continue;
+            }
+        };
+        let mut found: Vec<PathBuf> = entries
+            .filter_map(Result::ok)
+            .map(|e| e.path())
+            .filter(|f| !f.is_dir() && is_surface_name(f))
+            .collect();
+        found.sort();
+        if found.is_empty() {
+            let e = CliError::Input(format!(
+                "{}: a directory without .json, .obj or .off files",
+                p.display()
+            ));
+            out.push(Err((p.clone(), e)));
+        }
+        out.extend(found.into_iter().map(Ok));
+    }
+    out
+}
+
+/// Whether a directory entry is a surface file to check: a `.json`, `.obj` or `.off`
+/// name (any case) that is not a failure file penner wrote.
+fn is_surface_name(f: &Path) -> bool {
+    let ext = f
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    let failure = f
+        .file_name()
+        .and_then(|n| n.to_str())
+        .is_some_and(|n| n.contains(".penner-failure-"));
+    matches!(ext.as_deref(), Some("json" | "obj" | "off")) && !failure
+}

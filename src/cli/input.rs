@@ -82,16 +82,6 @@ impl FlipCase {
             _ => None,
         }
     }
-    /// The exact metric on the current mesh: the surface's own, or the squared lengths of
-    /// the exact positions (for OBJ and OFF input), edge by edge.
-    pub fn exact_metric(&self) -> Metric {
-        match self {
-            FlipCase::Exact(s) => s.metric.clone(),
-            FlipCase::Decimal(s) => {
-                Metric::SquaredLengths(s.mesh.edges().map(|e| s.squared_length(e)).collect())
-            }
-        }
-    }
 }
 
 /// Read the surface at `path` for flipping: OBJ and OFF into the compact form, JSON as in

@@ -36,7 +36,7 @@ pub fn main() -> ExitCode {
         None => report::run(penner::oracle::precision::REPORT_LIST, false),
         Some(Command::Report { precision, json }) => report::run(&precision, json),
         Some(Command::Check {
-            surface,
+            surfaces,
             precision,
             only,
             json,
@@ -44,7 +44,7 @@ pub fn main() -> ExitCode {
             negative_controls,
             lengths,
         }) => check::run(&check::Options {
-            path: &surface,
+            paths: &surfaces,
             precision: &precision,
             only: &only,
             json,

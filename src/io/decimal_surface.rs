@@ -11,7 +11,7 @@ use super::decimal::{
     squared_distance, Coordinate,
 };
 use super::surface::{heron16, Metric, MetricError, Surface};
-use crate::mesh::{Edge, Face, Mesh};
+use crate::mesh::{Edge, Face, Mesh, Vertex};
 use crate::scalar::Real;
 use rug::Rational;
 use std::cmp::Ordering;
@@ -114,8 +114,7 @@ impl DecimalSurface {
     /// standard library's correctly rounded parser — the value `f64::from_rational` gives
     /// for a normal result, without a rational's gcd. `None` when a coordinate is not a
     /// decimal or the result is not a normal `f64` (the exact path decides).
-    fn squared_f64_wide(&self, e: Edge) -> Option<f64> {
-        let (a, b) = self.ends(e);
+    fn squared_f64_wide(a: &[Coordinate; 3], b: &[Coordinate; 3]) -> Option<f64> {
         let (m, k) = common_scale([&a[0], &a[1], &a[2], &b[0], &b[1], &b[2]])?;
         let mut n = rug::Integer::new();
         for i in 0..3 {
@@ -128,16 +127,22 @@ impl DecimalSurface {
 
     /// The exact squared length `ℓ_e² = |p_tip − p_tail|²`.
     pub fn squared_length(&self, e: Edge) -> Rational {
-        if let Some((n, k)) = self.squared_decimal(e) {
-            return decimal_to_rational(n, 2 * k);
-        }
         let (a, b) = self.ends(e);
-        let mut s = Rational::new();
-        for k in 0..3 {
-            let d = b[k].to_rational() - a[k].to_rational();
-            s += Rational::from(&d * &d);
-        }
-        s
+        squared_distance_exact(a, b)
+    }
+
+    /// The exact squared distance `|p_v − p_u|²` of two vertices (on any triangulation of
+    /// these positions, e.g. the input one after the surface's mesh was flipped).
+    pub fn squared_distance(&self, u: Vertex, v: Vertex) -> Rational {
+        squared_distance_exact(&self.positions[u.idx()], &self.positions[v.idx()])
+    }
+
+    /// `|p_v − p_u|²` rounded to the nearest `f64` (the value of
+    /// `f64::from_rational(&self.squared_distance(u, v))`, proof: B19), from the integer
+    /// form where it fits; `None` where the result is not a normal `f64`.
+    pub fn squared_distance_f64(&self, u: Vertex, v: Vertex) -> Option<f64> {
+        let (a, b) = (&self.positions[u.idx()], &self.positions[v.idx()]);
+        Some(squared_f64(a, b)).filter(|x| x.is_normal())
     }
 
     /// The lengths in `f64`: `√(fl(ℓ²))` with `fl` rounding to nearest, as
@@ -146,11 +151,20 @@ impl DecimalSurface {
         self.mesh
             .edges()
             .map(|e| {
-                self.squared_decimal(e)
-                    .and_then(|(n, k)| decimal_to_f64(n, 2 * k))
-                    .or_else(|| self.squared_f64_wide(e))
-                    .unwrap_or_else(|| f64::from_rational(&self.squared_length(e), ()))
-                    .sqrt()
+                let (a, b) = self.ends(e);
+                squared_f64(a, b).sqrt()
+            })
+            .collect()
+    }
+
+    /// The squared lengths `fl(ℓ²)` of which [`DecimalSurface::lengths_f64`] takes the
+    /// square roots (rounded to nearest where the result is a normal `f64`, B19).
+    pub fn squared_lengths_f64(&self) -> Vec<f64> {
+        self.mesh
+            .edges()
+            .map(|e| {
+                let (a, b) = self.ends(e);
+                squared_f64(a, b)
             })
             .collect()
     }
@@ -190,4 +204,25 @@ impl DecimalSurface {
             name: self.name,
         }
     }
+}
+
+/// The exact `|b − a|²`: in integers when it fits, in ℚ otherwise.
+fn squared_distance_exact(a: &[Coordinate; 3], b: &[Coordinate; 3]) -> Rational {
+    if let Some((n, k)) = squared_distance(a, b) {
+        return decimal_to_rational(n, 2 * k);
+    }
+    let mut s = Rational::new();
+    for k in 0..3 {
+        let d = b[k].to_rational() - a[k].to_rational();
+        s += Rational::from(&d * &d);
+    }
+    s
+}
+
+/// `|b − a|²` rounded to the nearest `f64`, as `f64::from_rational` of the exact value.
+fn squared_f64(a: &[Coordinate; 3], b: &[Coordinate; 3]) -> f64 {
+    squared_distance(a, b)
+        .and_then(|(n, k)| decimal_to_f64(n, 2 * k))
+        .or_else(|| DecimalSurface::squared_f64_wide(a, b))
+        .unwrap_or_else(|| f64::from_rational(&squared_distance_exact(a, b), ()))
 }

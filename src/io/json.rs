@@ -14,13 +14,14 @@ pub const FORMAT: &str = "penner-surface";
 /// The format version written, and the only one read.
 pub const VERSION: u64 = 1;
 
-const KEYS: [&str; 9] = [
+const KEYS: [&str; 10] = [
     "format",
     "version",
     "name",
     "vertices",
     "faces",
     "gluing",
+    "gluing_exceptions",
     "lengths",
     "squared_lengths",
     "positions",
@@ -152,11 +153,27 @@ pub fn from_value(v: &Value) -> Result<Surface, ReadError> {
         obj.get("faces").ok_or_else(|| schema("faces", "missing"))?,
         n,
     )?;
-    let mesh = match obj.get("gluing") {
-        None => Mesh::from_faces(n, &faces),
-        Some(g) => Mesh::from_gluing(n, &faces, &read_gluing(g, faces.len())?),
+    let field = if obj.contains_key("gluing_exceptions") {
+        "gluing_exceptions"
+    } else {
+        "gluing"
+    };
+    let mesh = match (obj.get("gluing"), obj.get("gluing_exceptions")) {
+        (Some(_), Some(_)) => {
+            return Err(schema(
+                "gluing_exceptions",
+                "give `gluing` or `gluing_exceptions`, not both",
+            ))
+        }
+        (None, None) => Mesh::from_faces(n, &faces),
+        (Some(g), None) => Mesh::from_gluing(n, &faces, &read_gluing(g, "gluing", faces.len())?),
+        (None, Some(g)) => Mesh::from_faces_with_exceptions(
+            n,
+            &faces,
+            &read_gluing(g, "gluing_exceptions", faces.len())?,
+        ),
     }
-    .map_err(mesh_error)?;
+    .map_err(|e| mesh_error(e, field))?;
     let positions = match obj.get("positions") {
         None => None,
         Some(p) => Some(read_positions(p, mesh.n_vertices())?),
@@ -233,11 +250,15 @@ fn read_faces(v: &Value, n: u32) -> Result<Vec<[u32; 3]>, ReadError> {
     Ok(faces)
 }
 
-fn read_gluing(v: &Value, n_faces: usize) -> Result<Vec<(FaceSide, FaceSide)>, ReadError> {
-    let arr = array(v, "gluing")?;
+fn read_gluing(
+    v: &Value,
+    field: &str,
+    n_faces: usize,
+) -> Result<Vec<(FaceSide, FaceSide)>, ReadError> {
+    let arr = array(v, field)?;
     let mut out = Vec::new();
     for (i, pair) in arr.iter().enumerate() {
-        let el = format!("gluing[{i}]");
+        let el = format!("{field}[{i}]");
         let p = array(pair, &el)?;
         if p.len() != 2 {
             return Err(schema(
@@ -247,7 +268,7 @@ fn read_gluing(v: &Value, n_faces: usize) -> Result<Vec<(FaceSide, FaceSide)>, R
         }
         let mut sides = [(0u32, 0u8); 2];
         for (k, s) in p.iter().enumerate() {
-            let el = format!("gluing[{i}][{k}]");
+            let el = format!("{field}[{i}][{k}]");
             let fs = array(s, &el)?;
             if fs.len() != 2 {
                 return Err(schema(el, "expected [face, side]"));
@@ -360,13 +381,15 @@ fn read_metric(v: &Value, key: &str, mesh: &Mesh) -> Result<Vec<Rational>, ReadE
         .collect())
 }
 
-fn mesh_error(e: MeshError) -> ReadError {
+/// The reader's error for a mesh error, naming the face or the entry of the gluing list
+/// `field` (`gluing` or `gluing_exceptions`).
+fn mesh_error(e: MeshError, field: &str) -> ReadError {
     let element = match &e {
         MeshError::VertexOutOfRange { face, .. } | MeshError::AmbiguousLoop { face, .. } => {
             format!("faces[{face}]")
         }
         MeshError::GluingOutOfRange { index, .. } | MeshError::InconsistentGluing { index, .. } => {
-            format!("gluing[{index}]")
+            format!("{field}[{index}]")
         }
         MeshError::SideGluedTwice { face, side } => format!("faces[{face}] side {side}"),
         _ => "surface".into(),

@@ -6,7 +6,7 @@
 
 use super::json::{edge_order, exact_number, FORMAT, VERSION};
 use super::ReadError;
-use crate::mesh::Mesh;
+use crate::mesh::{FaceSide, HalfEdge, Mesh};
 use rug::Rational;
 use std::fmt::Display;
 use std::io::{self, Write};
@@ -65,6 +65,72 @@ pub fn faces_determine_gluing(mesh: &Mesh) -> bool {
         .is_ok_and(|m| side_twins(&m) == side_twins(mesh))
 }
 
+/// The glued pairs of face sides that `mesh`'s vertex triples cannot describe — the
+/// sides of interior edges with a loop side or with a directed side `a→b` or `b→a` that
+/// occurs more than once among the face sides (parallel edges) — when the triples with
+/// these pairs determine the gluing ([`Mesh::from_faces_with_exceptions`] rebuilds it);
+/// `None` when they do not (a boundary loop, or a boundary side `a→b` beside an unlisted
+/// side `b→a`): then the full gluing is needed. An empty list when the triples alone
+/// determine it ([`faces_determine_gluing`]).
+///
+/// Why the rebuild is the mesh: a listed pair is an edge's two sides; an unlisted interior
+/// side `a→b` is the only unlisted `a→b` and its twin the only `b→a`, so they are matched;
+/// an unlisted boundary side has no unlisted `b→a` to be matched with (checked here).
+/// Linear time, memory one flag per edge: per vertex, the tips of its outgoing face sides.
+pub fn gluing_exceptions(mesh: &Mesh) -> Option<Vec<(FaceSide, FaceSide)>> {
+    // Directed sides a→b that occur more than once, as (a, b), sorted.
+    let mut repeated: Vec<(u32, u32)> = Vec::new();
+    let mut tips: Vec<u32> = Vec::new();
+    for a in mesh.vertices() {
+        tips.clear();
+        tips.extend(
+            mesh.outgoing(a)
+                .filter(|&h| !mesh.is_boundary_halfedge(h))
+                .map(|h| mesh.tip(h).0),
+        );
+        tips.sort_unstable();
+        for w in tips.windows(2) {
+            if w[0] == w[1] && repeated.last() != Some(&(a.0, w[0])) {
+                repeated.push((a.0, w[0]));
+            }
+        }
+    }
+    let is_repeated = |a: u32, b: u32| repeated.binary_search(&(a, b)).is_ok();
+    let special = |h: HalfEdge| {
+        let (a, b) = (mesh.tail(h).0, mesh.tip(h).0);
+        a == b || is_repeated(a, b) || is_repeated(b, a)
+    };
+    let side_of = |h: HalfEdge| -> Option<FaceSide> {
+        let f = mesh.face(h)?;
+        let s = mesh.face_halfedges(f).iter().position(|&g| g == h)?;
+        Some((f.0, s as u8))
+    };
+    let mut listed = vec![false; mesh.n_edges()];
+    let mut exceptions = Vec::new();
+    for e in mesh.edges() {
+        let (p, q) = (e.side(0), e.side(1));
+        if mesh.is_boundary_edge(e) || !(special(p) || special(q)) {
+            continue;
+        }
+        listed[e.idx()] = true;
+        exceptions.push((side_of(p)?, side_of(q)?));
+    }
+    // An unlisted boundary side a→b must have no unlisted face side b→a (nor be a loop).
+    for e in mesh.edges().filter(|&e| mesh.is_boundary_edge(e)) {
+        let h = [e.side(0), e.side(1)]
+            .into_iter()
+            .find(|&h| !mesh.is_boundary_halfedge(h))?;
+        let (a, b) = (mesh.tail(h), mesh.tip(h));
+        let partner = mesh
+            .outgoing(b)
+            .any(|g| !mesh.is_boundary_halfedge(g) && mesh.tip(g) == a && !listed[g.edge().idx()]);
+        if a == b || partner {
+            return None;
+        }
+    }
+    Some(exceptions)
+}
+
 /// For side `s` of face `f` (entry `3f + s`), the face side glued to it (`None` on the
 /// boundary): the gluing, independent of how edges are numbered.
 fn side_twins(mesh: &Mesh) -> Vec<Option<(u32, u8)>> {
@@ -93,8 +159,9 @@ pub enum MetricKind {
 }
 
 /// Write a surface as compact JSON: the header fields on the first line (starting with
-/// [`JSON_MARKER`]), then one face per line, the `gluing` (only when the faces do not
-/// determine it, [`faces_determine_gluing`]), one metric value per line in
+/// [`JSON_MARKER`]), then one face per line, the glued side pairs the faces cannot
+/// describe as `gluing_exceptions` ([`gluing_exceptions`]; the full `gluing` when those
+/// do not determine it, nothing when the faces do), one metric value per line in
 /// [`edge_order`], and the positions (one vertex per line) when given.
 ///
 /// ```
@@ -133,9 +200,14 @@ pub fn json<P: Display>(
         write!(w, "{sep}[{},{},{}]", f[0], f[1], f[2])?;
     }
     w.write_all(b"]")?;
-    if !faces_determine_gluing(mesh) {
-        w.write_all(b",\n\"gluing\":[")?;
-        for (i, ((fa, sa), (fb, sb))) in mesh.gluing_list().iter().enumerate() {
+    let (field, pairs) = match gluing_exceptions(mesh) {
+        Some(e) if e.is_empty() => ("", e),
+        Some(e) => ("gluing_exceptions", e),
+        None => ("gluing", mesh.gluing_list()),
+    };
+    if !field.is_empty() {
+        write!(w, ",\n\"{field}\":[")?;
+        for (i, ((fa, sa), (fb, sb))) in pairs.iter().enumerate() {
             let sep = if i == 0 { "\n" } else { ",\n" };
             write!(w, "{sep}[[{fa},{sa}],[{fb},{sb}]]")?;
         }

@@ -102,78 +102,47 @@ impl Mesh {
     /// ```
     pub fn from_faces(n_vertices: u32, faces: &[[u32; 3]]) -> Result<Mesh, MeshError> {
         check_faces(n_vertices, faces)?;
-        let side = |p: usize| -> (u32, u32) {
-            let t = faces[p / 3];
-            (t[p % 3], t[(p % 3 + 1) % 3])
-        };
-        let n_sides = 3 * faces.len();
-        // Sides bucketed by tail vertex (a counting sort), each bucket sorted by (tip,
-        // position): equal directed sides are adjacent, and a side's opposite is found by
-        // binary search in its tip's bucket. Linear memory, no hashing.
-        let mut start = vec![0u32; n_vertices as usize + 1];
-        for p in 0..n_sides {
-            start[side(p).0 as usize + 1] += 1;
-        }
-        for v in 0..n_vertices as usize {
-            start[v + 1] += start[v];
-        }
-        let mut fill = start.clone();
-        let mut by_tail = vec![(0u32, 0u32); n_sides];
-        for p in 0..n_sides {
-            let (a, b) = side(p);
-            let slot = &mut fill[a as usize];
-            by_tail[*slot as usize] = (b, p as u32);
-            *slot += 1;
-        }
-        // The first error in face order, as a scan inserting side after side finds it: a
-        // loop, or the second occurrence of a directed side.
-        let mut first: Option<(u32, MeshError)> = None;
-        let mut keep_first = |pos: u32, e: MeshError| {
-            if first.as_ref().is_none_or(|(q, _)| pos < *q) {
-                first = Some((pos, e));
-            }
-        };
-        for a in 0..n_vertices {
-            let lo = start[a as usize] as usize;
-            let hi = start[a as usize + 1] as usize;
-            by_tail[lo..hi].sort_unstable();
-            for w in by_tail[lo..hi].windows(2) {
-                if w[0].0 == w[1].0 {
-                    keep_first(w[1].1, MeshError::NonManifoldEdge { a, b: w[0].0 });
+        let gluing = gluing_by_vertices(n_vertices, faces, None)?;
+        Mesh::from_gluing(n_vertices, faces, &gluing)
+    }
+
+    /// Build from vertex triples and the glued pairs of face sides that the triples cannot
+    /// describe (`exceptions`, e.g. the sides of loops and of parallel edges): the listed
+    /// pairs are glued as in [`Mesh::from_gluing`], and every other side `a→b` to the
+    /// unique other unlisted side `b→a` as in [`Mesh::from_faces`]. With no exceptions this
+    /// is [`Mesh::from_faces`].
+    ///
+    /// ```
+    /// use penner::mesh::Mesh;
+    /// // A tetrahedron with edge 01 flipped: two edges join vertices 2 and 3 (the new
+    /// // diagonal, sides 0 of faces 0 and 2, and the old edge, sides 1 of faces 1 and 3).
+    /// let faces = [[3, 2, 0], [0, 2, 3], [2, 3, 1], [1, 3, 2]];
+    /// let m = Mesh::from_faces_with_exceptions(4, &faces, &[((0, 0), (2, 0)), ((1, 1), (3, 1))])
+    ///     .unwrap();
+    /// assert_eq!((m.n_edges(), m.euler_characteristic()), (6, 2));
+    /// assert!(Mesh::from_faces(4, &faces).is_err());
+    /// ```
+    pub fn from_faces_with_exceptions(
+        n_vertices: u32,
+        faces: &[[u32; 3]],
+        exceptions: &[(FaceSide, FaceSide)],
+    ) -> Result<Mesh, MeshError> {
+        check_faces(n_vertices, faces)?;
+        let mut listed = vec![false; 3 * faces.len()];
+        for (index, &(p, q)) in exceptions.iter().enumerate() {
+            for (f, s) in [p, q] {
+                if f as usize >= faces.len() || s > 2 {
+                    return Err(MeshError::GluingOutOfRange {
+                        index,
+                        face: f,
+                        side: s,
+                    });
                 }
-            }
-            for &(b, p) in &by_tail[lo..hi] {
-                if a == b {
-                    keep_first(
-                        p,
-                        MeshError::AmbiguousLoop {
-                            face: p / 3,
-                            vertex: a,
-                        },
-                    );
-                }
+                listed[3 * f as usize + s as usize] = true;
             }
         }
-        if let Some((_, e)) = first {
-            return Err(e);
-        }
-        // Glue each side a→b (a < b) to the side b→a, in order of the first side: the
-        // list comes out sorted.
-        let bucket = |a: u32| &by_tail[start[a as usize] as usize..start[a as usize + 1] as usize];
-        let mut gluing = Vec::new();
-        for p in 0..n_sides {
-            let (a, b) = side(p);
-            if a < b {
-                let twins = bucket(b);
-                if let Ok(k) = twins.binary_search_by(|&(t, _)| t.cmp(&a)) {
-                    let q = twins[k].1 as usize;
-                    gluing.push((
-                        ((p / 3) as u32, (p % 3) as u8),
-                        ((q / 3) as u32, (q % 3) as u8),
-                    ));
-                }
-            }
-        }
+        let mut gluing = exceptions.to_vec();
+        gluing.extend(gluing_by_vertices(n_vertices, faces, Some(&listed))?);
         Mesh::from_gluing(n_vertices, faces, &gluing)
     }
 
@@ -383,4 +352,88 @@ fn check_faces(n_vertices: u32, faces: &[[u32; 3]]) -> Result<(), MeshError> {
         return Err(MeshError::IsolatedVertex { vertex });
     }
     Ok(())
+}
+
+/// The gluing of [`Mesh::from_faces`] over the sides not marked in `skip`: each side
+/// `a→b` glued to the unique unmarked side `b→a`; a loop side or a repeated directed side
+/// among them is an error.
+fn gluing_by_vertices(
+    n_vertices: u32,
+    faces: &[[u32; 3]],
+    skip: Option<&[bool]>,
+) -> Result<Vec<(FaceSide, FaceSide)>, MeshError> {
+    let side = |p: usize| -> (u32, u32) {
+        let t = faces[p / 3];
+        (t[p % 3], t[(p % 3 + 1) % 3])
+    };
+    let n_sides = 3 * faces.len();
+    let used = |p: usize| skip.is_none_or(|s| !s[p]);
+    // Sides bucketed by tail vertex (a counting sort), each bucket sorted by (tip,
+    // position): equal directed sides are adjacent, and a side's opposite is found by
+    // binary search in its tip's bucket. Linear memory, no hashing.
+    let mut start = vec![0u32; n_vertices as usize + 1];
+    for p in (0..n_sides).filter(|&p| used(p)) {
+        start[side(p).0 as usize + 1] += 1;
+    }
+    for v in 0..n_vertices as usize {
+        start[v + 1] += start[v];
+    }
+    let mut fill = start.clone();
+    let mut by_tail = vec![(0u32, 0u32); start[n_vertices as usize] as usize];
+    for p in (0..n_sides).filter(|&p| used(p)) {
+        let (a, b) = side(p);
+        let slot = &mut fill[a as usize];
+        by_tail[*slot as usize] = (b, p as u32);
+        *slot += 1;
+    }
+    // The first error in face order, as a scan inserting side after side finds it: a
+    // loop, or the second occurrence of a directed side.
+    let mut first: Option<(u32, MeshError)> = None;
+    let mut keep_first = |pos: u32, e: MeshError| {
+        if first.as_ref().is_none_or(|(q, _)| pos < *q) {
+            first = Some((pos, e));
+        }
+    };
+    for a in 0..n_vertices {
+        let lo = start[a as usize] as usize;
+        let hi = start[a as usize + 1] as usize;
+        by_tail[lo..hi].sort_unstable();
+        for w in by_tail[lo..hi].windows(2) {
+            if w[0].0 == w[1].0 {
+                keep_first(w[1].1, MeshError::NonManifoldEdge { a, b: w[0].0 });
+            }
+        }
+        for &(b, p) in &by_tail[lo..hi] {
+            if a == b {
+                keep_first(
+                    p,
+                    MeshError::AmbiguousLoop {
+                        face: p / 3,
+                        vertex: a,
+                    },
+                );
+            }
+        }
+    }
+    if let Some((_, e)) = first {
+        return Err(e);
+    }
+    // Glue each side a→b (a < b) to the side b→a, in order of the first side: the
+    // list comes out sorted.
+    let bucket = |a: u32| &by_tail[start[a as usize] as usize..start[a as usize + 1] as usize];
+    let mut gluing = Vec::new();
+    for p in (0..n_sides).filter(|&p| used(p)) {
+        let (a, b) = side(p);
+        if a < b {
+            let twins = bucket(b);
+            if let Ok(k) = twins.binary_search_by(|&(t, _)| t.cmp(&a)) {
+                let q = twins[k].1 as usize;
+                gluing.push((
+                    ((p / 3) as u32, (p % 3) as u8),
+                    ((q / 3) as u32, (q % 3) as u8),
+                ));
+            }
+        }
+    }
+    Ok(gluing)
 }

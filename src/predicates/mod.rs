@@ -2,6 +2,7 @@
 pub mod cotan;
 pub mod delaunay;
 pub mod delaunay_exp;
+pub mod delaunay_widened;
 pub mod directed;
 mod filter;
 pub mod ladder;

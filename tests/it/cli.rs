@@ -535,3 +535,95 @@ fn delaunay_with_scale_factors_up_to_800() {
     bad("trunc.json", b"[0, 0,", "f64", &["trunc.json"]);
     bad("prec.json", b"[0, 0, 0, 0]", "256", &["--precision f64"]);
 }
+
+/// `check` on several files and a directory: one report per file in name order, a bad file
+/// reported with its typed error (naming the file and line) while the others run, the exit
+/// code the worst over the files; `--json` prints an array of one object per file. Negative
+/// control: without the bad file the same run exits 0.
+#[test]
+fn check_takes_several_files_and_a_directory() {
+    let d = scratch("check-many");
+    let dir = d.join("meshes");
+    std::fs::create_dir(&dir).unwrap();
+    write(&dir, "b.off", TET_OFF.as_bytes());
+    write(&dir, "a.json", TETRAHEDRON.as_bytes());
+    write(&dir, "c.OBJ", TET_OBJ.as_bytes());
+    write(&dir, "bad.off", b"OFF\n4 4 0\n1 1 1\n1 -1 -1\n-1 1 x\n");
+    write(&dir, "notes.txt", b"not a surface");
+    write(&dir, "a.penner-failure-1.json", b"{}");
+    std::fs::create_dir(dir.join("sub.json")).unwrap();
+    let extra = write(&d, "extra.obj", TET_OBJ.as_bytes());
+    let args = |json: bool| {
+        let mut a = vec![
+            "check".to_string(),
+            dir.display().to_string(),
+            extra.display().to_string(),
+            "--precision".into(),
+            "f64".into(),
+            "--only".into(),
+            "T01".into(),
+        ];
+        if json {
+            a.push("--json".into());
+        }
+        a
+    };
+    let run = |a: Vec<String>| penner(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    let out = run(args(false));
+    let (s, err) = (text(&out.stdout), text(&out.stderr));
+    assert_eq!(out.status.code(), Some(3), "{s}\n{err}");
+    assert!(err.contains("bad.off") && err.contains("line 5"), "{err}");
+    let at = |name: &str| s.find(&format!("{name}: 4 vertices")).unwrap_or(usize::MAX);
+    let order = ["a.json", "b.off", "c.OBJ", "extra.obj"].map(at);
+    assert!(
+        order.windows(2).all(|w| w[0] < w[1] && w[1] != usize::MAX),
+        "{s}"
+    );
+    assert!(!s.contains("notes.txt") && !s.contains("penner-failure") && !s.contains("sub.json"));
+    let out = run(args(true));
+    assert_eq!(out.status.code(), Some(3));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let files: Vec<&str> = v
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|o| o["file"].as_str().unwrap())
+        .collect();
+    let names: Vec<&str> = files
+        .iter()
+        .map(|f| f.rsplit('/').next().unwrap())
+        .collect();
+    assert_eq!(names, ["a.json", "b.off", "bad.off", "c.OBJ", "extra.obj"]);
+    for o in v.as_array().unwrap() {
+        if o["file"].as_str().unwrap().ends_with("bad.off") {
+            assert_eq!(o["exit_code"], 3);
+            assert!(o["error"].as_str().unwrap().contains("line 5"), "{o}");
+        } else {
+            assert_eq!(o["status"], "holds", "{o}");
+        }
+    }
+    // Negative control: the good files alone hold; one file alone prints one object.
+    std::fs::remove_file(dir.join("bad.off")).unwrap();
+    assert_eq!(run(args(false)).status.code(), Some(0));
+    let one = penner(&[
+        "check",
+        &extra.display().to_string(),
+        "--precision",
+        "f64",
+        "--only",
+        "T01",
+        "--json",
+    ]);
+    let v: serde_json::Value = serde_json::from_slice(&one.stdout).unwrap();
+    assert!(v.is_object() && v["status"] == "holds", "{v}");
+    // --lengths goes with one file only.
+    let l = write(&d, "l.json", b"[1]");
+    let out = penner(&[
+        "check",
+        &extra.display().to_string(),
+        &extra.display().to_string(),
+        "--lengths",
+        &l.display().to_string(),
+    ]);
+    assert_refused(&out, 3, &["--lengths"]);
+}

@@ -39,6 +39,20 @@ fn fan_json(p: &[(Integer, Integer)]) -> String {
     serde_json::json!({"vertices": n, "faces": faces, "positions": pos}).to_string()
 }
 
+/// The OFF text of the fan of `p` (vertex 0), the same surface as [`fan_json`].
+fn fan_off(p: &[(Integer, Integer)]) -> String {
+    use std::fmt::Write;
+    let n = p.len();
+    let mut s = format!("OFF\n{n} {} 0\n", n - 2);
+    for (x, y) in p {
+        let _ = writeln!(s, "{x} {y} 0");
+    }
+    for i in 1..n - 1 {
+        let _ = writeln!(s, "3 0 {i} {}", i + 1);
+    }
+    s
+}
+
 /// Interior edges of `m` whose quadrilateral has its fourth point strictly inside the
 /// circle through the other three (integer incircle determinant): not Delaunay for the
 /// exact points.
@@ -81,7 +95,8 @@ fn not_delaunay(m: &penner::mesh::Mesh, p: &[(Integer, Integer)]) -> usize {
 /// says "certified for the input metric"; otherwise exit 2 with "rounded metric only" and
 /// the summary's count of edges not certified for the input at least the oracle's count.
 /// Both outcomes occur on the family (the rounded certificate alone is wrong on some
-/// inputs). Negative control: the unflipped fans are not Delaunay for the oracle.
+/// inputs). Negative control: the unflipped fans are not Delaunay for the oracle. The same
+/// polygons as OFF (replayed on their positions, B83) give the same exit codes and summaries.
 #[test]
 fn b80_delaunay_cli_certifies_for_the_input_metric_or_says_rounded_only() {
     let d = scratch("delaunay-input-metric");
@@ -146,6 +161,22 @@ fn b80_delaunay_cli_certifies_for_the_input_metric_or_says_rounded_only() {
                     }
                     c => panic!("{name} {prec}: exit {c:?}: {err}"),
                 }
+                // The same polygon as OFF replays on its positions (B83): the same exit
+                // code and summary as from JSON.
+                let off_src = write(&d, &format!("{name}.off"), fan_off(&p).as_bytes());
+                let off_sum = d.join(format!("{name}-{prec}.off-summary.json"));
+                let r_off = penner(&[
+                    "delaunay",
+                    &off_src.display().to_string(),
+                    "--precision",
+                    prec,
+                    "--summary",
+                    &off_sum.display().to_string(),
+                ]);
+                let s_off: serde_json::Value =
+                    serde_json::from_slice(&std::fs::read(&off_sum).unwrap()).unwrap();
+                assert_eq!(r_off.status.code(), r.status.code(), "{name} {prec} OFF");
+                assert_eq!(s_off, s, "{name} {prec} OFF");
             }
         }
     }

@@ -386,7 +386,9 @@ fn compact_json_needs_gluing_only_where_faces_do_not_determine_it() {
         let mut out = Vec::new();
         writer::surface_json(&mut out, s).unwrap();
         let t = String::from_utf8(out).unwrap();
-        assert_eq!(t.contains("\"gluing\""), !determined);
+        // Loops are written as gluing exceptions (the full gluing is never needed here).
+        assert_eq!(t.contains("\"gluing_exceptions\""), !determined);
+        assert!(!t.contains("\"gluing\""));
         let back = json::read(&t).unwrap();
         assert_eq!(back.mesh.face_list(), s.mesh.face_list());
         assert_eq!(glued(&back.mesh), glued(&s.mesh));
@@ -400,6 +402,121 @@ fn compact_json_needs_gluing_only_where_faces_do_not_determine_it() {
             matches!(s.metric, Metric::Lengths(_))
         );
     }
+}
+
+/// Parallel edges (a tetrahedron with one edge flipped: two edges join the same two
+/// vertices) and loops (the one-vertex torus) are written as `gluing_exceptions`: only the
+/// pairs the vertex triples cannot describe; the file reads back to the same faces, gluing
+/// and values; a disk bounded by two parallel edges, which no exception list describes,
+/// gets the full gluing. Negative controls: the file without the field is refused with a
+/// typed error; without one pair the torus's loops are refused; crossed pairs are refused
+/// or glue another surface; `gluing` and `gluing_exceptions` together are refused.
+#[test]
+fn compact_json_writes_gluing_exceptions_that_read_back_exactly() {
+    let mut flipped = builders::tetrahedron().mesh;
+    let e = flipped.edges().next().unwrap();
+    flipped.flip(e).unwrap();
+    let tet = Surface::new(
+        "flipped tetrahedron",
+        flipped,
+        Metric::Lengths(vec![Rational::from(1); 6]),
+        None,
+    )
+    .unwrap();
+    let torus = Surface::new(
+        "torus",
+        builders::one_vertex_torus(),
+        Metric::Lengths(vec![Rational::from((3, 2)); 3]),
+        None,
+    )
+    .unwrap();
+    for (s, listed) in [(&tet, 2), (&torus, 3)] {
+        assert!(!writer::faces_determine_gluing(&s.mesh));
+        let pairs = writer::gluing_exceptions(&s.mesh).unwrap();
+        assert_eq!(pairs.len(), listed, "{}", s.name);
+        let mut out = Vec::new();
+        writer::surface_json(&mut out, s).unwrap();
+        let t = String::from_utf8(out).unwrap();
+        assert!(t.contains("\"gluing_exceptions\":[") && !t.contains("\"gluing\":"));
+        let back = json::read(&t).unwrap();
+        assert_eq!(back.mesh.face_list(), s.mesh.face_list());
+        assert_eq!(glued(&back.mesh), glued(&s.mesh));
+        assert_eq!(
+            ordered(&back.mesh, back.metric.values()),
+            ordered(&s.mesh, s.metric.values())
+        );
+        // Negative controls on the file's JSON value: without the field the triples are
+        // ambiguous (refused); without one pair, the loops of the torus are refused, while
+        // one pair of the tetrahedron's two parallel edges still determines the other;
+        // pairs crossed between two edges are refused or glue another surface.
+        let v: serde_json::Value = serde_json::from_str(&t).unwrap();
+        let mut none = v.clone();
+        none.as_object_mut().unwrap().remove("gluing_exceptions");
+        let err = json::read(&none.to_string()).unwrap_err();
+        assert!(matches!(err, penner::io::ReadError::Mesh { .. }), "{err}");
+        let mut one_less = v.clone();
+        one_less["gluing_exceptions"].as_array_mut().unwrap().pop();
+        match json::read(&one_less.to_string()) {
+            Ok(b) => {
+                assert_eq!(listed, 2);
+                assert_eq!(glued(&b.mesh), glued(&s.mesh));
+            }
+            Err(err) => {
+                assert_eq!(listed, 3);
+                assert!(matches!(err, penner::io::ReadError::Mesh { .. }), "{err}");
+            }
+        }
+        let mut crossed = v.clone();
+        let ex = crossed["gluing_exceptions"].as_array_mut().unwrap();
+        let second = ex[0][1].clone();
+        ex[0][1] = ex[1][1].clone();
+        ex[1][1] = second;
+        if let Ok(b) = json::read(&crossed.to_string()) {
+            assert_ne!(glued(&b.mesh), glued(&s.mesh), "{}", s.name);
+        }
+        let mut both = v.clone();
+        both["gluing"] = serde_json::to_value(
+            s.mesh
+                .gluing_list()
+                .iter()
+                .map(|&((f, a), (g, b))| [[f, u32::from(a)], [g, u32::from(b)]])
+                .collect::<Vec<_>>(),
+        )
+        .unwrap();
+        let err = json::read(&both.to_string()).unwrap_err().to_string();
+        assert!(err.contains("gluing_exceptions"), "{err}");
+    }
+    // A disk bounded by two edges between the same vertices (sides 0→1 and 1→0 both on
+    // the boundary): the triples would glue them, so no exception list describes it and
+    // the full gluing is written.
+    let bigon = Surface::new(
+        "bigon",
+        Mesh::from_gluing(
+            3,
+            &[[0, 1, 2], [1, 0, 2]],
+            &[((0, 1), (1, 2)), ((0, 2), (1, 1))],
+        )
+        .unwrap(),
+        Metric::Lengths(vec![Rational::from(1); 4]),
+        None,
+    )
+    .unwrap();
+    assert_eq!(writer::gluing_exceptions(&bigon.mesh), None);
+    let mut out = Vec::new();
+    writer::surface_json(&mut out, &bigon).unwrap();
+    let t = String::from_utf8(out).unwrap();
+    assert!(
+        t.contains("\"gluing\":[") && !t.contains("gluing_exceptions"),
+        "{t}"
+    );
+    let back = json::read(&t).unwrap();
+    assert_eq!(glued(&back.mesh), glued(&bigon.mesh));
+    assert_eq!(back.mesh.n_boundary_edges(), 2);
+    // The full gluing of older files still reads to the same surface.
+    let old = json::write(&tet);
+    assert!(old.contains("\"gluing\""));
+    let back = json::read(&old).unwrap();
+    assert_eq!(glued(&back.mesh), glued(&tet.mesh));
 }
 
 #[test]

@@ -30,7 +30,7 @@ use crate::meshgen::{
     rational_cyclic_lengths, rect_lattice_grid, triangular_lattice_grid, LatticeMesh,
 };
 use crate::planar_gen::pow10;
-use crate::support::cases;
+use crate::support::{case_seeds, cases};
 use malachite::rational::Rational as MRational;
 use penner::algorithms::flip_to_delaunay::{
     flip_to_delaunay, flip_to_delaunay_exact, ExactLengths, FlipKind, FlipOptions, FlipReport,
@@ -417,7 +417,7 @@ fn print_tallies(test: &str, tallies: &BTreeMap<String, Tally>) {
 #[test]
 fn t21_adversarial_tie_families_f64_dd_and_scaled() {
     let mut tallies: BTreeMap<String, Tally> = BTreeMap::new();
-    for seed in 0..cases(1, 6) as u64 {
+    for seed in case_seeds(1, 6) {
         for f in tie_families(seed) {
             let variants = f64_variants(&f);
             let dd: Vec<Dd> = f
@@ -483,7 +483,7 @@ fn oracle_signs(mesh: &Mesh, ex: &[MRational]) -> Vec<Option<Sign>> {
 fn t21_adversarial_exact_ties_in_rationals_and_squared_lengths() {
     let opts = FlipOptions::default();
     let (mut rational, mut lattice, mut controls) = (0, 0, 0);
-    for seed in 0..cases(1, 6) as u64 {
+    for seed in case_seeds(1, 6) {
         for f in tie_families(seed) {
             if f.class == "fan" {
                 continue; // irrational chords (squared forms rational only for n = 4, 6)
@@ -598,7 +598,7 @@ fn t21_adversarial_meshes_perturbed_1e20_to_1e40_exact_mpfr_dd() {
     let mut tallies: BTreeMap<String, Tally> = BTreeMap::new();
     let (mut dd_agree, mut dd_edges, mut erased) = (0, 0, 0);
     let (mut dd_runs, mut dd_same) = (0, 0);
-    for seed in 0..cases(1, 4) as u64 {
+    for seed in case_seeds(1, 4) {
         for (fi, f) in tie_families(seed).into_iter().enumerate() {
             for k in (20..=40).step_by(cases(10, 5)) {
                 let mut rng =
@@ -772,7 +772,7 @@ fn sliver_stats(s: &Sliver) -> (usize, usize) {
 fn t21_adversarial_marching_tetrahedra_slivers_f64_and_dd() {
     let mut tallies: BTreeMap<String, Tally> = BTreeMap::new();
     let (mut tiny, mut needles, mut broken) = (0, 0, 0);
-    for seed in 0..cases(1, 8) as u64 {
+    for seed in case_seeds(1, 8) {
         for s in sliver_surfaces(seed) {
             tiny += s.f64s.iter().filter(|&&x| x < 1e-10 * s.mean).count();
             let (n, b) = sliver_stats(&s);
@@ -887,7 +887,7 @@ fn t21_negative_control_naive_f64_flipping_errs_on_adversarial_families() {
             certified_or_refused(name, mesh, l, kind, cert.entry(key).or_default());
         }
     };
-    for seed in 0..cases(1, 6) as u64 {
+    for seed in case_seeds(1, 6) {
         for f in tie_families(seed) {
             let mut variants = f64_variants(&f);
             let mut rng = ChaCha8Rng::seed_from_u64(0x15 + seed);
@@ -982,7 +982,7 @@ fn t21_equilateral_grids_are_strictly_delaunay_not_ties() {
     };
     let mut tallies: BTreeMap<String, Tally> = BTreeMap::new();
     let mut naive = NaiveTally::default();
-    for seed in 0..cases(3, 30) as u64 {
+    for seed in case_seeds(3, 30) {
         let mut rng = ChaCha8Rng::seed_from_u64(0xe9 + seed);
         let mut m = m0.clone();
         let mut flipped = 0;

@@ -3,7 +3,7 @@
 
 use crate::delaunay::{exact_values, exactly_strict_face, oracle_non_delaunay, to_m};
 use crate::meshgen::{icosphere, planar_grid, random_tetrahedron, sheared_torus, Embedded};
-use crate::support::cases;
+use crate::support::case_seeds;
 use malachite::rational::Rational as MRational;
 use penner::algorithms::flip_to_delaunay::{
     flip_to_delaunay, flip_to_delaunay_exact, ExactLengths, FlipKind, FlipOptions,
@@ -73,7 +73,7 @@ fn settings() -> Settings {
 
 #[test]
 fn t21_flipping_terminates_and_certifies_every_edge_f64() {
-    for seed in 0..cases(3, 40) as u64 {
+    for seed in case_seeds(3, 40) {
         for (name, m, l) in surfaces(seed) {
             for kind in [FlipKind::Euclidean, FlipKind::Ptolemy] {
                 let (mut m2, mut l2) = (m.clone(), l.clone());
@@ -209,7 +209,7 @@ fn flips_refuse_boundary_and_self_folded_edges() {
 
 #[test]
 fn t22_planar_flipping_matches_spade() {
-    for seed in 0..cases(4, 50) as u64 {
+    for seed in case_seeds(4, 50) {
         for (n, squash) in [(8u32, 1.0), (6, 1e-6)] {
             let e = planar_grid(n, 0.35, seed);
             let pts: Vec<[f64; 2]> = e.pos.iter().map(|p| [p[0], p[1] * squash]).collect();

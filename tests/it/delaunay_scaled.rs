@@ -5,7 +5,7 @@
 
 use crate::delaunay::{exactly_strict_face, exactly_strict_faces, oracle_non_delaunay, to_m};
 use crate::delaunay_genus::case;
-use crate::support::cases;
+use crate::support::case_seeds;
 use malachite::rational::Rational as MRational;
 use penner::algorithms::flip_scaled::{flip_to_delaunay_scaled, scaled_lengths};
 use penner::algorithms::flip_to_delaunay::{
@@ -36,7 +36,7 @@ fn exact_of(l: &[ExpLength]) -> Vec<MRational> {
 #[test]
 fn b67_scaled_flipping_up_to_800_is_certified_and_matches_mpfr_53() {
     let (mut flips, mut wide, mut compared, mut refused_metrics) = (0, 0, 0, 0);
-    for i in 0..cases(24, 2_000) as u64 {
+    for i in case_seeds(24, 2_000) {
         let c = case(i);
         let mut rng = ChaCha8Rng::seed_from_u64(0x67 + i);
         let base: Vec<f64> = c.lengths.iter().map(rug::Rational::to_f64).collect();
@@ -128,7 +128,7 @@ fn b67_negative_control_the_oracle_flags_unflipped_scaled_inputs() {
     // The same oracle on the scaled inputs before flipping finds non-Delaunay edges: the
     // check above can fail.
     let mut flagged = 0;
-    for i in 0..cases(24, 400) as u64 {
+    for i in case_seeds(24, 400) {
         let c = case(i);
         let mut rng = ChaCha8Rng::seed_from_u64(0x67 + i);
         let base: Vec<f64> = c.lengths.iter().map(rug::Rational::to_f64).collect();
@@ -144,7 +144,7 @@ fn b67_uniform_scaling_keeps_the_flips_of_the_base_metric() {
     // One common u scales every length by e^u: the Delaunay condition and both flip
     // formulas are homogeneous, so the flips are those of the base metric in f64.
     let mut compared = 0;
-    for i in 0..cases(16, 400) as u64 {
+    for i in case_seeds(16, 400) {
         let c = case(i);
         let base: Vec<f64> = c.lengths.iter().map(rug::Rational::to_f64).collect();
         for u0 in [-790.0, 700.0] {

@@ -52,8 +52,11 @@ fn b66_monotone_triangle_test_never_contradicts_exact_sides() {
     let mut rng = ChaCha8Rng::seed_from_u64(660);
     let ladder = Ladder::default();
     let (mut proved, mut declined_strict, mut not_strict) = (0, 0, 0);
-    for _ in 0..cases(20_000, 1_000_000) {
+    for case in 0..cases(20_000, 1_000_000) {
         let [a, b, c] = near_degenerate_triple(&mut rng);
+        if !crate::support::in_shard(case) {
+            continue; // generated, then left to another shard
+        }
         if !(a.is_normal() && b.is_normal() && c.is_normal()) || a <= 0.0 {
             continue;
         }

@@ -1,7 +1,7 @@
 //! T22 on random surfaces of genus 0–3: different flip orders reach the same triangulation
 //! up to renumbering of edges and faces (a vertex-fixing isomorphism of the gluing).
 
-use crate::support::cases;
+use crate::support::{case_seeds, cases};
 use penner::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
 use penner::mesh::Mesh;
 use penner::strategies::ArbSurface;
@@ -23,7 +23,7 @@ fn delaunay(mesh: &Mesh, l: &[f64], kind: FlipKind, seed: u64) -> (Mesh, usize) 
 fn t22_flip_orders_reach_the_same_triangulation_on_random_surfaces_of_genus_0_to_3() {
     let mut flipped = 0;
     let mut controls = 0;
-    for seed in 0..cases(60, 2000) as u64 {
+    for seed in case_seeds(60, 2000) {
         let genus = (seed % 4) as u32;
         let s = ArbSurface::new(genus, 4 + (seed % 9) as u32, seed).surface;
         let l: Vec<f64> = s.lengths(());
@@ -330,7 +330,7 @@ fn t22_ptolemy_delaunay_from_different_start_triangulations_has_equal_lengths() 
     assert!(st.unflipped_rejected * 2 > st.compared, "{st:?}");
     let (untied, controls) = (st.compared, st.perturbed_rejected);
     let (w, h, d) = (3.into(), 4.into(), 5.into());
-    for seed in 0..cases(4, 100) as u64 {
+    for seed in case_seeds(4, 100) {
         let (m, l, _) = crate::delaunay_undecided::rectangle_grid(4, [&w, &h, &d], seed);
         compare_starts(&format!("rectangles {seed}"), &m, &l, seed, &mut st);
     }
@@ -392,7 +392,7 @@ fn t22_planar_flipping_from_randomly_flipped_starts_matches_spade() {
     use rug::Rational;
     let settings = Settings::default();
     let (mut runs, mut flipped, mut rejected) = (0, 0, 0);
-    for seed in 0..cases(16, 200) as u64 {
+    for seed in case_seeds(16, 200) {
         let spade_start = builders::random_planar(20 + (seed % 30) as u32, seed).unwrap();
         let pts_spade: Vec<[Rational; 2]> = spade_start
             .positions

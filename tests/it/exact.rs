@@ -264,8 +264,11 @@ fn parse_rational_agrees_with_malachite_and_num_rational() {
         );
     }
     // The shortest round-trip decimal of an f64 parses to a rational that rounds back to it.
-    for _ in 0..cases(2000, 100_000) {
+    for case in 0..cases(2000, 100_000) {
         let x = random_finite_f64(&mut rng);
+        if !crate::support::in_shard(case) {
+            continue; // generated, then left to another shard
+        }
         for text in [format!("{x:e}"), format!("{x}")] {
             let q = parse_rational(&text).expect("valid literal");
             // x is a nearest binary64 to q: no neighbour is strictly closer.

@@ -465,10 +465,13 @@ fn b20_negative_control_round_to_nearest_and_shrunk_enclosures_miss() {
 #[test]
 fn b20_from_rational_encloses_and_is_tight() {
     let mut rng = ChaCha8Rng::seed_from_u64(61);
-    for _ in 0..cases(2000, 100_000) {
+    for case in 0..cases(2000, 100_000) {
         let num: i128 = rng.gen::<i64>().into();
         let den: i128 = i128::from(rng.gen_range(1..u32::MAX)) << rng.gen_range(0..80);
         let q = Rational::from((num, den)) * Rational::from(rng.gen_range(1u64..u64::MAX));
+        if !crate::support::in_shard(case) {
+            continue; // generated, then left to another shard
+        }
         let f = Interval::<f64>::from_rational(&q, ());
         assert!(f.contains_rational(&q));
         let m = Interval::<Mpfr>::from_rational(&q, prec(100));

@@ -685,7 +685,7 @@ fn all_readers(bytes: &[u8]) {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(crate::support::cases(256, 100_000) as u32))]
+    #![proptest_config(crate::support::proptest_config(256, 100_000))]
 
     /// Random bytes never make a reader panic.
     #[test]

@@ -38,12 +38,14 @@ mod oracle;
 mod planar_gen;
 mod predicates_planar;
 mod registry_extra;
+mod replay_lazy;
 mod scalar_dd;
 mod scalar_dd_div;
 mod scalar_dd_edges;
 mod scalar_dd_exp;
 mod scalar_dd_reduction;
 mod scalar_nearest;
+mod sharding;
 mod special;
 #[cfg(feature = "strategies")]
 mod strategies;

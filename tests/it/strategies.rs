@@ -1,7 +1,6 @@
 //! The user-facing strategies: everything they produce is valid, and shrinking reaches
 //! small surfaces.
 
-use crate::support::cases;
 use penner::io::Surface;
 use penner::strategies::{self, ArbSurface};
 use proptest::prelude::*;
@@ -15,7 +14,7 @@ fn assert_valid(s: &Surface) -> Result<(), TestCaseError> {
 }
 
 fn config() -> ProptestConfig {
-    ProptestConfig::with_cases(cases(64, 10_000) as u32)
+    crate::support::proptest_config(64, 10_000)
 }
 
 proptest! {

@@ -7,11 +7,84 @@ use std::process::{Command, Output};
 /// Number of cases for a randomized test: `default` normally, `long` when the
 /// `PENNER_LONG` environment variable is set (the deep search, see README).
 pub fn cases(default: usize, long: usize) -> usize {
-    if std::env::var_os("PENNER_LONG").is_some() {
+    if long_mode() {
         long
     } else {
         default
     }
+}
+
+/// Whether the deep search runs (`PENNER_LONG` set).
+pub fn long_mode() -> bool {
+    std::env::var_os("PENNER_LONG").is_some()
+}
+
+/// This run's shard `(i, n)` of the long mode's generated cases: `PENNER_SHARD=i/n` with
+/// `0 ≤ i < n` runs only the cases whose index is `i` modulo `n` (README, "Sharding the
+/// long search"); `(0, 1)`, every case, when unset or outside the long mode.
+///
+/// # Panics
+/// On a malformed `PENNER_SHARD` (not `i/n` with integers `0 ≤ i < n`), naming it.
+pub fn shard() -> (usize, usize) {
+    shard_from(std::env::var("PENNER_SHARD").ok().as_deref(), long_mode())
+}
+
+/// [`shard`] for the value `v` of `PENNER_SHARD` and the mode.
+///
+/// # Panics
+/// On a malformed value, naming it.
+pub fn shard_from(v: Option<&str>, long: bool) -> (usize, usize) {
+    let Some(v) = v else {
+        return (0, 1);
+    };
+    let parsed = parse_shard(v).unwrap_or_else(|| {
+        panic!("PENNER_SHARD={v:?}: expected i/n with integers 0 <= i < n, e.g. 3/16")
+    });
+    if long {
+        parsed
+    } else {
+        (0, 1)
+    }
+}
+
+/// `i/n` with `0 ≤ i < n`, or `None`.
+pub fn parse_shard(v: &str) -> Option<(usize, usize)> {
+    let (i, n) = v.trim().split_once('/')?;
+    let (i, n): (usize, usize) = (i.trim().parse().ok()?, n.trim().parse().ok()?);
+    (i < n).then_some((i, n))
+}
+
+/// Whether generated case `index` runs in this shard ([`shard`]).
+pub fn in_shard(index: usize) -> bool {
+    let (i, n) = shard();
+    index % n == i
+}
+
+/// The indices of `0..cases(default, long)` this shard runs ([`shard`]).
+pub fn case_indices(default: usize, long: usize) -> impl Iterator<Item = usize> {
+    shard_indices(cases(default, long), shard())
+}
+
+/// The indices `k < count` with `k ≡ i (mod n)`.
+pub fn shard_indices(count: usize, (i, n): (usize, usize)) -> impl Iterator<Item = usize> {
+    (0..count).skip(i).step_by(n.max(1))
+}
+
+/// [`case_indices`] as `u64` seeds.
+pub fn case_seeds(default: usize, long: usize) -> impl Iterator<Item = u64> {
+    case_indices(default, long).map(|k| k as u64)
+}
+
+/// A proptest configuration with `cases(default, long)` cases; in shard `i` of `n` it runs
+/// its share of the cases from an RNG seeded by the shard, so that shards explore
+/// different streams (proptest has no case index to partition).
+pub fn proptest_config(default: usize, long: usize) -> proptest::test_runner::Config {
+    let (i, n) = shard();
+    let mut c = proptest::test_runner::Config::with_cases(cases(default, long).div_ceil(n) as u32);
+    if n > 1 {
+        c.rng_seed = proptest::test_runner::RngSeed::Fixed(0x5045_4e4e_4552 + i as u64);
+    }
+    c
 }
 
 const BIN: &str = env!("CARGO_BIN_EXE_penner");

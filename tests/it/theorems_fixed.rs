@@ -2,7 +2,7 @@
 //! double-double, MPFR-128/256 and (where the statement is algebraic) exactly in ℚ. Every
 //! theorem has a negative control that the same check rejects.
 
-use crate::support::cases;
+use crate::support::{case_seeds, cases};
 use penner::geometry::curvature::curvature;
 use penner::geometry::laplacian::cotan_laplacian;
 use penner::geometry::scaling::conformal_scaling;
@@ -302,7 +302,7 @@ fn t01_tolerance_scales_with_precision() {
 
 #[test]
 fn t01_random_octahedra_f64() {
-    for seed in 0..cases(50, 100_000) as u64 {
+    for seed in case_seeds(50, 100_000) {
         let m = octahedron();
         let l = lengths_in::<f64>(&m, &octahedron_points(seed), ());
         assert_holds(
@@ -659,7 +659,7 @@ fn t16_scaling_preserves_cross_ratios() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(cases(64, 100_000) as u32))]
+    #![proptest_config(crate::support::proptest_config(64, 100_000))]
     #[test]
     fn t16_scaling_preserves_cross_ratios_exact(
         l in prop::collection::vec((1i64..50, 1i64..9), 12),

@@ -1,7 +1,6 @@
 //! Catalogue checks on random surfaces from the user-facing strategies (genus 0–3, with
 //! and without boundary), each case with its own negative control.
 
-use crate::support::cases;
 use penner::geometry::cross_ratio::cross_ratio_halfedges;
 use penner::geometry::curvature::curvature;
 use penner::io::surface::validate_metric;
@@ -14,7 +13,7 @@ use penner::theorems::t01_gauss_bonnet::{
 use penner::theorems::t17_cross_ratio_equivalence::check_conformal_equivalence_exact;
 use penner::theorems::{Settings, Verdict};
 use proptest::prelude::*;
-use proptest::test_runner::{Config, TestRunner};
+use proptest::test_runner::TestRunner;
 use rug::Rational;
 use std::cell::Cell;
 
@@ -52,7 +51,7 @@ fn gauss_bonnet_all_precisions(s: &Surface) -> Result<(), TestCaseError> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(cases(24, 2000) as u32))]
+    #![proptest_config(crate::support::proptest_config(24, 2000))]
 
     #[test]
     fn t01_gauss_bonnet_on_random_closed_surfaces(s in strategies::closed_surface(0..=3, 1..=30)) {
@@ -79,7 +78,7 @@ fn numerator_edge(s: &Surface) -> Option<usize> {
 
 #[test]
 fn t17_scaled_random_surfaces_are_equivalent_and_a_one_edge_change_is_not() {
-    let mut runner = TestRunner::new(Config::with_cases(cases(24, 2000) as u32));
+    let mut runner = TestRunner::new(crate::support::proptest_config(24, 2000));
     let strategy = prop_oneof![
         strategies::closed_surface(0..=3, 1..=30),
         strategies::surface_with_boundary(6),

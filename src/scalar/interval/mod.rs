@@ -25,6 +25,7 @@
 mod f64;
 mod mpfr;
 
+pub(crate) use self::f64::next_down as next_down_f64;
 pub(crate) use self::f64::next_up as next_up_f64;
 pub use self::f64::F64_LIBM_ULPS;
 
