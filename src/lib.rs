@@ -20,3 +20,4 @@ pub mod special;
 #[cfg(feature = "strategies")]
 pub mod strategies;
 pub mod theorems;
+pub mod variational;

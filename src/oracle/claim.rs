@@ -59,6 +59,22 @@ pub enum Assertion {
         /// Absolute tolerance ε ≥ 0 on log lengths.
         epsilon: Rational,
     },
+    /// `energy`: the discrete-uniformization energy (MATH.md §7, notes Eq. 16) of the
+    /// surface's triangulation at the log scale factors `u` with target angles `targets`
+    /// is within `epsilon` of `energy`, and each `∂E/∂u_i = Θ_i − θ_i(u)` is within
+    /// `epsilon` of `gradient[i]` ([`crate::variational::energy`]).
+    Energy {
+        /// One log scale factor per vertex.
+        u: Vec<Rational>,
+        /// One target cone angle per vertex, or `None` for `2π` at every vertex.
+        targets: Option<Vec<Rational>>,
+        /// The claimed `E(u)`.
+        energy: Rational,
+        /// The claimed gradient, one entry per vertex.
+        gradient: Vec<Rational>,
+        /// Absolute tolerance ε ≥ 0 on `E` and on each gradient entry.
+        epsilon: Rational,
+    },
 }
 
 impl Assertion {
@@ -70,6 +86,7 @@ impl Assertion {
             Assertion::ConeAngles { .. } => "cone_angles",
             Assertion::CotanLaplacian { .. } => "cotan_laplacian",
             Assertion::ConformalEquivalence { .. } => "conformal_equivalence",
+            Assertion::Energy { .. } => "energy",
         }
     }
 }
@@ -150,12 +167,13 @@ const COMMON_FIELDS: [&str; 5] = ["penner_claim", "id", "kind", "surface", "max_
 
 /// The claim kinds and the fields each may carry besides [`COMMON_FIELDS`]
 /// (`schema/claim-v1.schema.json`).
-const KIND_FIELDS: [(&str, &[&str]); 5] = [
+const KIND_FIELDS: [(&str, &[&str]); 6] = [
     ("intrinsic_delaunay", &[]),
     ("delaunay_flip", &["flips", "result", "epsilon"]),
     ("cone_angles", &["angles", "epsilon"]),
     ("cotan_laplacian", &["weights", "epsilon"]),
     ("conformal_equivalence", &["target", "u", "epsilon"]),
+    ("energy", &["u", "targets", "energy", "gradient", "epsilon"]),
 ];
 
 /// Refuse any field a claim of `kind` does not have: a misspelt optional field (say
@@ -236,7 +254,7 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
     let kind = v
         .get("kind")
         .and_then(Value::as_str)
-        .ok_or_else(|| err("kind: required, one of intrinsic_delaunay, delaunay_flip, cone_angles, cotan_laplacian, conformal_equivalence"))?;
+        .ok_or_else(|| err("kind: required, one of intrinsic_delaunay, delaunay_flip, cone_angles, cotan_laplacian, conformal_equivalence, energy"))?;
     let Some((_, own)) = KIND_FIELDS.iter().find(|(k, _)| *k == kind) else {
         return Err(err(format!("kind: unknown claim kind {kind:?}")));
     };
@@ -280,6 +298,25 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
                 u: numbers(&v["u"], "u", surface.mesh.n_vertices(), "vertex")?,
                 epsilon: epsilon(v)?,
                 target,
+            }
+        }
+        "energy" => {
+            let n = surface.mesh.n_vertices();
+            let targets = match v.get("targets") {
+                None => None,
+                Some(t) => Some(numbers(t, "targets", n, "vertex")?),
+            };
+            let energy = exact_number(
+                v.get("energy")
+                    .ok_or_else(|| err("energy: required, the claimed E(u)"))?,
+                "energy",
+            )?;
+            Assertion::Energy {
+                u: numbers(&v["u"], "u", n, "vertex")?,
+                targets,
+                energy,
+                gradient: numbers(&v["gradient"], "gradient", n, "vertex")?,
+                epsilon: epsilon(v)?,
             }
         }
         other => return Err(err(format!("kind: unknown claim kind {other:?}"))),

@@ -54,3 +54,4 @@ mod tidy;
 mod tie_claims;
 mod tolerance_range;
 mod tolerance_tightness;
+mod variational;

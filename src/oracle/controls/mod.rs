@@ -21,6 +21,7 @@ use crate::theorems::Verdict;
 use rug::Rational;
 
 pub mod conformal;
+pub mod energy;
 pub mod flips;
 pub mod metric;
 
@@ -61,6 +62,7 @@ pub fn controls() -> Vec<Check> {
     let mut all = metric::controls();
     all.extend(conformal::controls());
     all.extend(flips::controls());
+    all.extend(energy::controls());
     all.sort_by_key(|c| c.id);
     all
 }
