@@ -1,4 +1,5 @@
-//! Registry entries of the variational checks T31 (Schläfli), T32 (the uniformization
+//! Registry entries of the variational checks T06 (cotan weights determine the metric),
+//! T31 (Schläfli), T32 (the uniformization
 //! energy on the case's triangulation) and T33 (its hyperbolic analogue, reading the case's
 //! lengths as hyperbolic lengths), and the fixed data they use: log scale factors
 //! `u_v = 2 log s_v` from [`scale_factors`], targets `Θ_v = 2π`, and the directions of
@@ -13,7 +14,7 @@ use super::registry::Check;
 use crate::io::Surface;
 use crate::scalar::Real;
 use crate::theorems::t32_energy::{check_energy, EnergyInput};
-use crate::theorems::{t31_schlafli, t33_hyperbolic, Settings, Verdict};
+use crate::theorems::{t06_cotan_weights_metric, t31_schlafli, t33_hyperbolic, Settings, Verdict};
 
 /// `u_v = 2 log s_v` for the exact scale factors `s_v ∈ [9/10, 11/10]` of
 /// [`scale_factors`] (so `e^{u_v/2} = s_v`), in the context of `like`.
@@ -46,26 +47,71 @@ pub fn directions<T: Real>(n: usize, like: &T) -> Vec<Vec<T>> {
 }
 
 /// Faces above which T32 and T33 answer `NotApplicable` (their dual and finite-difference
-/// evaluations cost several energy evaluations per direction).
-pub const MAX_FACES: usize = 20_000;
+/// evaluations cost several energy evaluations per direction, each with three Lobachevsky
+/// series per face).
+pub const MAX_FACES: usize = 2_000;
 
-fn too_big(case: &Surface) -> Option<Verdict> {
-    (case.mesh.n_faces() > MAX_FACES).then(|| Verdict::NotApplicable {
-        reason: format!(
-            "{} faces: T32/T33 run on surfaces up to {MAX_FACES} faces",
-            case.mesh.n_faces()
-        ),
+/// Faces above which T31 answers `NotApplicable` (nine dual Lobachevsky series per face).
+pub const T31_MAX_FACES: usize = 20_000;
+
+/// Precision (bits) above which T06 and T31–T33 answer `NotApplicable`: the Lobachevsky
+/// series has `p/2 + 4` terms and T32's central difference runs at `2p` bits.
+pub const MAX_BITS: u32 = 512;
+
+/// `NotApplicable` past `max_faces` faces or [`MAX_BITS`] bits, naming the limit.
+pub fn beyond_limits(case: &Surface, prec: Prec, max_faces: usize) -> Option<Verdict> {
+    let bits = match prec {
+        Prec::Mpfr(p) => p.bits(),
+        _ => 0,
+    };
+    if case.mesh.n_faces() > max_faces {
+        return Some(Verdict::NotApplicable {
+            reason: format!(
+                "{} faces: this check runs on surfaces up to {max_faces} faces",
+                case.mesh.n_faces()
+            ),
+        });
+    }
+    (bits > MAX_BITS).then(|| Verdict::NotApplicable {
+        reason: format!("{bits} bits: this check runs up to {MAX_BITS} bits"),
     })
 }
 
+fn too_big(case: &Surface, prec: Prec) -> Option<Verdict> {
+    beyond_limits(case, prec, MAX_FACES)
+}
+
+/// Edges above which T06 answers `NotApplicable` (its Newton solve is dense).
+pub const T06_MAX_EDGES: usize = 150;
+
+fn t06(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
+    if let Some(v) = beyond_limits(case, prec, usize::MAX) {
+        return Some(v);
+    }
+    if case.mesh.n_edges() > T06_MAX_EDGES {
+        return Some(Verdict::NotApplicable {
+            reason: format!(
+                "{} edges: T06's dense Newton solve runs up to {T06_MAX_EDGES} edges",
+                case.mesh.n_edges()
+            ),
+        });
+    }
+    at_precision!(prec, case, |l: T| Some(
+        t06_cotan_weights_metric::check_weights_determine_metric(&case.mesh, &l, s)
+    ))
+}
+
 fn t31(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
+    if let Some(v) = beyond_limits(case, prec, T31_MAX_FACES) {
+        return Some(v);
+    }
     at_precision!(prec, case, |l: T| Some(t31_schlafli::check_schlafli(
         &case.mesh, &l, s
     )))
 }
 
 fn t32(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
-    if let Some(v) = too_big(case) {
+    if let Some(v) = too_big(case, prec) {
         return Some(v);
     }
     at_precision!(prec, case, |l: T| {
@@ -87,7 +133,7 @@ fn t32(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
 }
 
 fn t33(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
-    if let Some(v) = too_big(case) {
+    if let Some(v) = too_big(case, prec) {
         return Some(v);
     }
     at_precision!(prec, case, |l: T| {
@@ -107,6 +153,11 @@ fn t33(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
 /// The entries, in catalogue order.
 pub fn entries() -> Vec<Check> {
     vec![
+        Check {
+            id: "T06",
+            title: "cotan weights ⇒ metric up to scale",
+            run: t06,
+        },
         Check {
             id: "T31",
             title: "Schläfli: ∂f/∂λ = α/2",

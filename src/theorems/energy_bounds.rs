@@ -22,16 +22,29 @@ pub fn lobachevsky_slope_size(alpha: f64) -> f64 {
     (2.0 * r).ln().abs() + (2.0 * r.sin().max(f64::MIN_POSITIVE)).ln().abs() + 4.0
 }
 
+/// The largest [`slack_condition`] where the bounds of B56–B58 are used: beyond it the
+/// first-order expansion of the dual angle derivatives is not controlled (measured
+/// failures of the first-order bound at `ρ ≈ 10¹⁰`, needles of width 10⁻⁹), and the
+/// bounds are `+∞` (undecided).
+// proof: B56
+pub const MAX_SLACK_CONDITION: f64 = 65_536.0;
+
 /// The relative condition `ρ = 4(ℓ₁+ℓ₂+ℓ₃)/min slack` of the half-angle form on sides `l`
-/// (proofs/B40's `Σρᵢ/ε` for the four differences), `+∞` for a degenerate triangle.
+/// (proofs/B40's `Σρᵢ/ε` for the four differences), `+∞` for a degenerate triangle or
+/// past [`MAX_SLACK_CONDITION`].
 // proof: B56
 pub fn slack_condition(l: [f64; 3]) -> f64 {
     let s = l[0] + l[1] + l[2];
     let slack = (0..3)
         .map(|m| l[(m + 1) % 3] + l[(m + 2) % 3] - l[m])
         .fold(f64::INFINITY, f64::min);
-    if slack > 0.0 {
+    let rho = if slack > 0.0 {
         4.0 * s / slack
+    } else {
+        f64::INFINITY
+    };
+    if rho <= MAX_SLACK_CONDITION {
+        rho
     } else {
         f64::INFINITY
     }
@@ -117,8 +130,8 @@ fn coth_abs(x: f64) -> f64 {
 /// half-angle `½ sin α · Σ_{4 sinh factors}(ε coth|d|(Σℓ/2 + 1) + 3ε) + 2εα` plus law of
 /// cosines `(ΔN/|D| + |c| ΔD/|D| + ε|c|)/sin α + 2εα` with
 /// `ΔN = ε(4 cosh_j cosh_k + 2 cosh_i)(1 + max ℓ)` and
-/// `ΔD/|D| = ε(coth ℓ_j + coth ℓ_k)(1 + max ℓ) + 3ε`, times [`SAFETY`]; `+∞` when either
-/// first-order relative error exceeds 1/8.
+/// `ΔD/|D| = ε(coth ℓ_j + coth ℓ_k)(1 + max ℓ) + 3ε`, times [`SAFETY`]; `+∞` when the
+/// relative error of `t²` or the first-order bound relative to `α` exceeds 1/8.
 // proof: B58
 pub fn hyperbolic_angle_gap(l: [f64; 3], i: usize, eps: f64) -> f64 {
     let (j, k) = ((i + 1) % 3, (i + 2) % 3);
@@ -141,7 +154,11 @@ pub fn hyperbolic_angle_gap(l: [f64; 3], i: usize, eps: f64) -> f64 {
     let dc = dn / den.abs() + c.abs() * dd + eps * c.abs();
     let half = 0.5 * sin * rel_t2 + 2.0 * eps * alpha;
     let cos = dc / sin + 2.0 * eps * alpha;
-    let rel = rel_t2.max(dc / sin.max(f64::MIN_POSITIVE));
+    // Both first-order terms must be small against the angle itself (acos and atan are
+    // far from linear once the error reaches α).
+    let rel = rel_t2
+        .max((half + cos) / alpha.max(f64::MIN_POSITIVE))
+        .max(slack_condition(l) * eps);
     finish(half + cos, rel)
 }
 
@@ -182,5 +199,5 @@ pub fn hyperbolic_face_error(
     let sum_dot: f64 = lambda_dot.iter().map(|x| x.abs()).sum();
     let first = n * eps * (1.0 + rho) * (first + adot * (3.0 * lmax + 7.0 * slope))
         + 4.0 * eps * PI * sum_dot;
-    finish(first, n * eps * (1.0 + rho))
+    finish(first, n * eps * (1.0 + rho.max(slack_condition(l))))
 }

@@ -8,7 +8,7 @@
 //! The metric is recovered from the weights by the convex solve of
 //! [`crate::variational::weights`] (gauge `q_0 = 1`) and compared with `ℓ_e²/ℓ_0²`.
 
-use super::bounds::{cot_error, eps, SAFETY};
+use super::bounds::{cot_error, eps, EPS_F64, SAFETY};
 use super::report::{check_lengths, lengths_out_of_range, Tally};
 use super::verdict::{Settings, Verdict};
 use crate::geometry::cotan::cotan_weights;
@@ -79,6 +79,33 @@ pub fn verify_weights_determine_metric<T: Real>(
         }
     }
     let free: Vec<usize> = (1..mesh.n_edges()).collect();
+    // proof: B59 — H⁻¹ is formed in f64: past a condition number of 2⁵⁰ it is no bound.
+    let norm_inf = |a: &[Vec<f64>]| {
+        a.iter()
+            .map(|r| r.iter().map(|x| x.abs()).sum::<f64>())
+            .fold(0.0, f64::max)
+    };
+    let h: Vec<Vec<f64>> = sol.hessian_inverse.clone();
+    let kappa = norm_inf(&h) * norm_inf(&sol.hessian);
+    if !(kappa.is_finite() && kappa * EPS_F64 <= 0.125) {
+        tally.undecided(
+            "surface",
+            format!("the reduced Hessian is too ill-conditioned (κ ≈ {kappa:.1e})"),
+            kappa,
+        );
+        return tally.verdict();
+    }
+    // The gauge edge's equation is not imposed by the reduced solve: a result that misses
+    // it is no metric with these weights (a solver failure, or unrealizable weights).
+    let r0 = sol.residual[0].approx_f64().abs();
+    if !(r0 <= SAFETY * 64.0 * (dw[0] + 4.0 * e * weights[0].approx_f64().abs())) {
+        tally.undecided(
+            "e0",
+            "the recovered metric misses the gauge edge's weight: no metric found",
+            r0,
+        );
+        return tally.verdict();
+    }
     let l0 = lengths[0].clone();
     for (r, &edge) in free.iter().enumerate() {
         let row = &sol.hessian_inverse[r];
@@ -88,6 +115,12 @@ pub fn verify_weights_determine_metric<T: Real>(
         }
         let qstar = (lengths[edge].clone() / &l0) * &(lengths[edge].clone() / &l0);
         let tol = settings.slack * (SAFETY * tol + 4.0 * e * qstar.approx_f64().abs());
+        // First order only while the bound is small against the value.
+        let tol = if tol <= 0.125 * qstar.approx_f64().abs() {
+            tol
+        } else {
+            f64::INFINITY
+        };
         let d = sol.q[edge].clone() - &qstar;
         tally.within(format!("e{edge}"), "recovered ℓ²/ℓ₀² − given", &d, tol);
     }

@@ -75,8 +75,10 @@ pub struct WeightSolve<T> {
     pub converged: bool,
     /// `w* − w(q)` at the result (all edges).
     pub residual: Vec<T>,
-    /// The inverse of the reduced Hessian `−∂w/∂q` at the result, rows and columns over the
-    /// free edges (index `e` for `e < gauge`, `e − 1` after), in `f64`.
+    /// The reduced Hessian `−∂w/∂q` at the result, rows and columns over the free edges
+    /// (index `e` for `e < gauge`, `e − 1` after), in `f64`.
+    pub hessian: Vec<Vec<f64>>,
+    /// Its inverse (empty when singular).
     pub hessian_inverse: Vec<Vec<f64>>,
 }
 
@@ -226,6 +228,7 @@ pub fn metric_from_weights<T: Real>(
         steps,
         converged,
         residual: r,
+        hessian: h,
         hessian_inverse,
     })
 }

@@ -2,6 +2,7 @@
 
 mod adversarial_gen;
 mod claims;
+mod claims_energy;
 mod cli;
 mod cli_controls;
 mod cli_delaunay;

@@ -3,10 +3,14 @@
 
 use crate::meshgen::{icosphere, jittered_torus, random_tetrahedron};
 use crate::support::cases;
+use penner::geometry::cotan::cotan_weights;
 use penner::geometry::laplacian::cotan_laplacian;
 use penner::geometry::laplacian::SparseMatrix;
 use penner::mesh::Mesh;
 use penner::scalar::{Dd, Mpfr, Precision, Real};
+use penner::theorems::t06_cotan_weights_metric::{
+    check_weights_determine_metric, verify_weights_determine_metric,
+};
 use penner::theorems::t31_schlafli::{check_schlafli, half_angles, verify_schlafli};
 use penner::theorems::t32_energy::{
     check_convexity, check_energy, check_tie, verify_convexity, verify_gradient, verify_hessian,
@@ -21,6 +25,7 @@ use penner::variational::energy::{
 };
 use penner::variational::hyperbolic;
 use penner::variational::triangle::{angles_from_log_lengths, triangle_energy};
+use penner::variational::weights::metric_from_weights;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -401,5 +406,57 @@ fn t33_sinh_scaling_matches_its_definition() {
         let rhs = ((um[i].clone() + &um[j]) * &half).exp() * &sinh(&(lm[e.idx()].clone() * &half));
         let rel = ((lhs.clone() - &rhs) / &rhs).approx_f64().abs();
         assert!(rel < 1e-55, "{e}: {rel}");
+    }
+}
+
+/// T06 holds on small random surfaces at f64, Dd and MPFR-160; the weights of another
+/// metric are rejected, and a weight raised by 10⁻⁴ (another metric or none) never holds.
+fn weights_case<T: Real>(m: &Mesh, l: &[f64], ctx: T::Ctx) {
+    let lt: Vec<T> = to(l, ctx);
+    let s = Settings::default();
+    let bits = T::precision_bits(ctx);
+    let v = check_weights_determine_metric(m, &lt, &s);
+    assert!(v.holds(), "{bits} bits: {v:?}");
+    // Control 1: the weights of another metric (edge 1 longer by 1%) give that metric.
+    let mut other = lt.clone();
+    let bump = other[1].lit(1.01);
+    other[1] *= &bump;
+    let nc = verify_weights_determine_metric(m, &lt, &cotan_weights(m, &other), &s);
+    assert!(nc.fails(), "control at {bits} bits: {nc:?}");
+    // Control 2: a weight raised by 10⁻⁴ (generically no metric has these weights).
+    let mut w = cotan_weights(m, &lt);
+    let bump = w[1].lit(1e-4);
+    w[1] += &bump;
+    let nc = verify_weights_determine_metric(m, &lt, &w, &s);
+    assert!(!nc.holds(), "control at {bits} bits: {nc:?}");
+}
+
+#[test]
+fn t06_cotan_weights_determine_the_metric_up_to_scale() {
+    for seed in 0..cases(3, 12) as u64 {
+        let (m, l) = surface(seed);
+        weights_case::<f64>(&m, &l, ());
+        weights_case::<Dd>(&m, &l, ());
+    }
+    let (m, l) = surface(0);
+    weights_case::<Mpfr>(&m, &l, mpfr(160));
+}
+
+#[test]
+fn t06_recovered_metric_scales_with_the_gauge_edge() {
+    // Weights are scale invariant: a metric scaled by 3 recovers the same ℓ²/ℓ₀².
+    let (m, l) = surface(1);
+    let l3: Vec<f64> = l.iter().map(|x| 3.0 * x).collect();
+    let a = metric_from_weights(&m, &cotan_weights(&m, &l), 0).unwrap();
+    let b = metric_from_weights(&m, &cotan_weights(&m, &l3), 0).unwrap();
+    assert!(a.converged && b.converged);
+    for e in 0..m.n_edges() {
+        assert!((a.q[e] - b.q[e]).abs() < 1e-9 * a.q[e], "e{e}");
+        let expect = (l[e] / l[0]).powi(2);
+        assert!(
+            (a.q[e] - expect).abs() < 1e-9 * expect,
+            "e{e}: {} vs {expect}",
+            a.q[e]
+        );
     }
 }
