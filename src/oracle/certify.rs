@@ -272,5 +272,21 @@ pub fn certify(claim: &Claim) -> Result<Answer, Unsupported> {
             gradient,
             epsilon,
         )),
+        Assertion::Lobachevsky { x, y, epsilon } => {
+            // Enclosure of Л over the outward-rounded argument (proofs/B52).
+            let mut enclose = |p| {
+                vec![crate::special::lobachevsky_enclosure(
+                    &Interval::from_rational(x, p),
+                )]
+            };
+            let b = within_all(
+                &mut enclose,
+                std::slice::from_ref(y),
+                epsilon,
+                START_BITS,
+                claim.max_bits,
+            );
+            Ok(summarize(claim, &b, &|_| "x".to_string(), "value of Л(x)"))
+        }
     }
 }

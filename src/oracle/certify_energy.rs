@@ -6,11 +6,9 @@
 //! otherwise.
 //!
 //! The enclosure of `E` evaluates Lobachevsky's function through the generic
-//! [`crate::special::lobachevsky`] on `Interval<Mpfr>`: its enclosures are as rigorous as
-//! that evaluation on intervals (the reduction and every operation are directed; the
-//! series is summed to `p/2 + 4` terms, whose tail is below `2⁻ᵖ`). A face whose
-//! triangle inequality the enclosures cannot decide makes its entries invalid, hence
-//! undecided.
+//! [`crate::special::lobachevsky`] on `Interval<Mpfr>`, which returns its rigorous
+//! enclosure (proofs/B52); every other operation is directed (B20). A face whose triangle
+//! inequality the enclosures cannot decide makes its entries invalid, hence undecided.
 
 use super::certify::{interval_lengths, summarize, Answer, START_BITS};
 use super::claim::Claim;

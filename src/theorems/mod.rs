@@ -30,4 +30,5 @@ pub mod t29_euclidean_ptolemy_cocircular;
 pub mod t31_schlafli;
 pub mod t32_energy;
 pub mod t33_hyperbolic;
+pub mod t30_lobachevsky;
 pub mod t35_definition_two;

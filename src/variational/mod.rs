@@ -8,8 +8,8 @@
 //! `theorems`. Everything is generic over [`Real`](crate::scalar::Real), so
 //! [`Dual`](crate::scalar::Dual) numbers give exact-rule derivatives and
 //! `Interval<Mpfr>` gives enclosures. Lobachevsky's `Л` comes from
-//! [`crate::special::lobachevsky`]; its enclosures are as rigorous as that function's
-//! evaluation on intervals.
+//! [`crate::special::lobachevsky`], called generically: on `Interval<Mpfr>` it returns
+//! its rigorous enclosure (proofs/B52).
 
 pub mod energy;
 pub mod hyperbolic;

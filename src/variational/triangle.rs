@@ -119,8 +119,8 @@ pub fn angles_of_lengths<T: Real>(l: &[T; 3]) -> [T; 3] {
 /// [`angles_from_log_lengths`]; `∂f/∂x_m = α_m/2` (module doc). On a degenerate triangle
 /// `f = ½ π x_m` for the long side `m` (`Л(0) = Л(π) = 0`, used exactly).
 ///
-/// `Л` is [`lobachevsky`], evaluated generically: on `Interval<Mpfr>` the enclosure is as
-/// rigorous as that evaluation.
+/// `Л` is [`lobachevsky`], evaluated generically: on `Interval<Mpfr>` it is the rigorous
+/// enclosure of proofs/B52.
 pub fn triangle_energy<T: Real>(x: &[T; 3]) -> T {
     let l = shifted_lengths(x);
     let half = x[0].lit(0.5);

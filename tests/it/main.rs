@@ -3,6 +3,7 @@
 mod adversarial_gen;
 mod claims;
 mod claims_energy;
+mod claims_lobachevsky;
 mod cli;
 mod cli_controls;
 mod cli_delaunay;
@@ -43,6 +44,7 @@ mod scalar_dd_edges;
 mod scalar_dd_exp;
 mod scalar_dd_reduction;
 mod scalar_nearest;
+mod special;
 #[cfg(feature = "strategies")]
 mod strategies;
 #[allow(dead_code)] // helpers used by some areas only
