@@ -266,6 +266,26 @@ pub fn parse(text: &str, name: &str) -> Result<Claim, ClaimError> {
     parse_value(&v).map_err(|e| err(format!("{name}: {e}")))
 }
 
+/// The fields of an `energy` claim on a surface with `n` vertices.
+fn parse_energy(v: &Value, n: usize) -> Result<Assertion, ClaimError> {
+    let targets = match v.get("targets") {
+        None => None,
+        Some(t) => Some(numbers(t, "targets", n, "vertex")?),
+    };
+    let energy = exact_number(
+        v.get("energy")
+            .ok_or_else(|| err("energy: required, the claimed E(u)"))?,
+        "energy",
+    )?;
+    Ok(Assertion::Energy {
+        u: numbers(&v["u"], "u", n, "vertex")?,
+        targets,
+        energy,
+        gradient: numbers(&v["gradient"], "gradient", n, "vertex")?,
+        epsilon: epsilon(v)?,
+    })
+}
+
 /// Parse a claim document (JSON value); a field the claim's kind does not have is refused.
 pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
     let Some(obj) = v.as_object() else {
@@ -348,25 +368,7 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
                 target,
             }
         }
-        "energy" => {
-            let n = surface.mesh.n_vertices();
-            let targets = match v.get("targets") {
-                None => None,
-                Some(t) => Some(numbers(t, "targets", n, "vertex")?),
-            };
-            let energy = exact_number(
-                v.get("energy")
-                    .ok_or_else(|| err("energy: required, the claimed E(u)"))?,
-                "energy",
-            )?;
-            Assertion::Energy {
-                u: numbers(&v["u"], "u", n, "vertex")?,
-                targets,
-                energy,
-                gradient: numbers(&v["gradient"], "gradient", n, "vertex")?,
-                epsilon: epsilon(v)?,
-            }
-        }
+        "energy" => parse_energy(v, surface.mesh.n_vertices())?,
         other => return Err(err(format!("kind: unknown claim kind {other:?}"))),
     };
     Ok(Claim {

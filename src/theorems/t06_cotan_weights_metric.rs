@@ -82,7 +82,7 @@ pub fn verify_weights_determine_metric<T: Real>(
     // proof: B59 — H⁻¹ is formed in f64: past a condition number of 2⁵⁰ it is no bound.
     let norm_inf = |a: &[Vec<f64>]| {
         a.iter()
-            .map(|r| r.iter().map(|x| x.abs()).sum::<f64>())
+            .map(|r| r.iter().copied().map(f64::abs).sum::<f64>())
             .fold(0.0, f64::max)
     };
     let h: Vec<Vec<f64>> = sol.hessian_inverse.clone();
@@ -98,7 +98,10 @@ pub fn verify_weights_determine_metric<T: Real>(
     // The gauge edge's equation is not imposed by the reduced solve: a result that misses
     // it is no metric with these weights (a solver failure, or unrealizable weights).
     let r0 = sol.residual[0].approx_f64().abs();
-    if !(r0 <= SAFETY * 64.0 * (dw[0] + 4.0 * e * weights[0].approx_f64().abs())) {
+    let r0_bound = SAFETY * 64.0 * (dw[0] + 4.0 * e * weights[0].approx_f64().abs());
+    if r0.partial_cmp(&r0_bound) != Some(std::cmp::Ordering::Less)
+        && r0.partial_cmp(&r0_bound) != Some(std::cmp::Ordering::Equal)
+    {
         tally.undecided(
             "e0",
             "the recovered metric misses the gauge edge's weight: no metric found",

@@ -359,9 +359,9 @@ pub fn verify_hessian<T: Real>(
             let xd = fd.hs.map(|h| ltd[h.edge().idx()].clone());
             let a = angles_from_log_lengths(&xd);
             let rho = slack_condition(fd.l);
-            for m in 0..3 {
+            for (m, am) in a.iter().enumerate() {
                 let corner = mesh.tail(fd.hs[(m + 2) % 3]).idx();
-                tol[corner] += (rho + 10.0) * e * a[m].d.approx_f64().abs();
+                tol[corner] += (rho + 10.0) * e * am.d.approx_f64().abs();
                 let (i, j) = (mesh.tail(fd.hs[m]).idx(), mesh.tip(fd.hs[m]).idx());
                 let (p, q) = ((m + 1) % 3, (m + 2) % 3);
                 let ce = cot_error(fd.l[m], fd.l[p], fd.l[q], e);
@@ -370,7 +370,7 @@ pub fn verify_hessian<T: Real>(
                 let t = (0.5 * ce + 2.0 * e * cot.abs()) * diff;
                 tol[i] += t;
                 tol[j] += t;
-                sizes[i] += (0.5 * cot * diff).abs() + a[m].d.approx_f64().abs();
+                sizes[i] += (0.5 * cot * diff).abs() + am.d.approx_f64().abs();
                 sizes[j] += (0.5 * cot * diff).abs();
             }
         }
@@ -506,7 +506,7 @@ pub fn check_tie<T: Real>(
                     * 4.0
                     * e
                     * std::f64::consts::PI
-                    * fd.x.iter().map(|x| x.abs()).sum::<f64>();
+                    * fd.x.iter().copied().map(f64::abs).sum::<f64>();
                 continue;
             }
             e_tol += 2.0 * face_energy_error(fd.x, fd.l, fd.alpha, bits, e);

@@ -134,7 +134,7 @@ pub fn verify_hyperbolic_gradient<T: Real>(
                     * 4.0
                     * e
                     * std::f64::consts::PI
-                    * xdot.iter().map(|x| x.abs()).sum::<f64>();
+                    * xdot.iter().copied().map(f64::abs).sum::<f64>();
                 continue;
             }
             let a = angles_half_angle(&ld);

@@ -29,7 +29,7 @@
 //! let t = vec![2.0 * std::f64::consts::FRAC_PI_3; 3];
 //! let g = gradient(&m, &lambda, &u, &t);
 //! assert!(g.iter().all(|x| x.abs() < 1e-15));
-//! assert!(energy(&m, &lambda, &u, &t).is_finite());
+//! assert!(energy(&m, &lambda, &u, &t).unwrap().is_finite());
 //! ```
 
 use super::triangle::{angles_from_log_lengths, cotangents, triangle_energy};

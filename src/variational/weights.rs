@@ -118,14 +118,16 @@ fn solve<T: Real>(mut a: Vec<Vec<T>>, mut b: Vec<T>) -> Option<Vec<T>> {
         }
         a.swap(c, p);
         b.swap(c, p);
-        for r in c + 1..n {
-            let f = a[r][c].clone() / &a[c][c];
-            for k in c..n {
-                let t = f.clone() * &a[c][k];
-                a[r][k] -= &t;
+        let (top, rest) = a.split_at_mut(c + 1);
+        let pivot = &top[c];
+        for (k, row) in rest.iter_mut().enumerate() {
+            let f = row[c].clone() / &pivot[c];
+            for (x, y) in row[c..].iter_mut().zip(&pivot[c..]) {
+                let t = f.clone() * y;
+                *x -= &t;
             }
             let t = f * &b[c];
-            b[r] -= &t;
+            b[c + 1 + k] -= &t;
         }
     }
     let mut x = b.clone();
