@@ -21,3 +21,4 @@ pub mod special;
 pub mod strategies;
 pub mod theorems;
 pub mod uniformization;
+pub mod variational;

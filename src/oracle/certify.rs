@@ -92,7 +92,12 @@ fn user_edge_index(mesh: &Mesh) -> Vec<usize> {
 }
 
 /// Turn a batch of per-element decisions into an answer.
-fn summarize(claim: &Claim, b: &Batch, name: &dyn Fn(usize) -> String, what: &str) -> Answer {
+pub(crate) fn summarize(
+    claim: &Claim,
+    b: &Batch,
+    name: &dyn Fn(usize) -> String,
+    what: &str,
+) -> Answer {
     let mut refuted = Vec::new();
     let mut open = Vec::new();
     for (i, a) in b.answers.iter().enumerate() {
@@ -148,7 +153,7 @@ fn summarize(claim: &Claim, b: &Batch, name: &dyn Fn(usize) -> String, what: &st
     }
 }
 
-fn interval_lengths(case: &Surface, p: Precision) -> Vec<Interval<Mpfr>> {
+pub(crate) fn interval_lengths(case: &Surface, p: Precision) -> Vec<Interval<Mpfr>> {
     case.lengths::<Interval<Mpfr>>(p)
 }
 
@@ -253,6 +258,20 @@ pub fn certify(claim: &Claim) -> Result<Answer, Unsupported> {
             claim, *ptolemy, result, epsilon,
         )),
         Assertion::IntrinsicDelaunay => Ok(intrinsic_delaunay(claim)),
+        Assertion::Energy {
+            u,
+            targets,
+            energy,
+            gradient,
+            epsilon,
+        } => Ok(super::certify_energy::energy_claim(
+            claim,
+            u,
+            targets.as_deref(),
+            energy,
+            gradient,
+            epsilon,
+        )),
         Assertion::Lobachevsky { x, y, epsilon } => {
             // Enclosure of Л over the outward-rounded argument (proofs/B52).
             let mut enclose = |p| {

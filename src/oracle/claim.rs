@@ -59,6 +59,22 @@ pub enum Assertion {
         /// Absolute tolerance ε ≥ 0 on log lengths.
         epsilon: Rational,
     },
+    /// `energy`: the discrete-uniformization energy (MATH.md §7, notes Eq. 16) of the
+    /// surface's triangulation at the log scale factors `u` with target angles `targets`
+    /// is within `epsilon` of `energy`, and each `∂E/∂u_i = Θ_i − θ_i(u)` is within
+    /// `epsilon` of `gradient[i]` ([`crate::variational::energy`]).
+    Energy {
+        /// One log scale factor per vertex.
+        u: Vec<Rational>,
+        /// One target cone angle per vertex, or `None` for `2π` at every vertex.
+        targets: Option<Vec<Rational>>,
+        /// The claimed `E(u)`.
+        energy: Rational,
+        /// The claimed gradient, one entry per vertex.
+        gradient: Vec<Rational>,
+        /// Absolute tolerance ε ≥ 0 on `E` and on each gradient entry.
+        epsilon: Rational,
+    },
     /// `lobachevsky`: `|Л(x) − y| ≤ epsilon` for Lobachevsky's function
     /// (MATH.md §7, [`crate::special::lobachevsky`]); about no surface.
     Lobachevsky {
@@ -84,6 +100,7 @@ impl Assertion {
             Assertion::ConeAngles { .. } => "cone_angles",
             Assertion::CotanLaplacian { .. } => "cotan_laplacian",
             Assertion::ConformalEquivalence { .. } => "conformal_equivalence",
+            Assertion::Energy { .. } => "energy",
             Assertion::Lobachevsky { .. } => "lobachevsky",
             Assertion::Uniformization(_) => "uniformization",
         }
@@ -167,12 +184,13 @@ const COMMON_FIELDS: [&str; 5] = ["penner_claim", "id", "kind", "surface", "max_
 
 /// The claim kinds and the fields each may carry besides [`COMMON_FIELDS`]
 /// (`schema/claim-v1.schema.json`).
-const KIND_FIELDS: [(&str, &[&str]); 7] = [
+const KIND_FIELDS: [(&str, &[&str]); 8] = [
     ("intrinsic_delaunay", &[]),
     ("delaunay_flip", &["flips", "result", "epsilon"]),
     ("cone_angles", &["angles", "epsilon"]),
     ("cotan_laplacian", &["weights", "epsilon"]),
     ("conformal_equivalence", &["target", "u", "epsilon"]),
+    ("energy", &["u", "targets", "energy", "gradient", "epsilon"]),
     ("lobachevsky", &["x", "y", "epsilon"]),
     (
         "uniformization",
@@ -264,6 +282,26 @@ pub fn parse(text: &str, name: &str) -> Result<Claim, ClaimError> {
     parse_value(&v).map_err(|e| err(format!("{name}: {e}")))
 }
 
+/// The fields of an `energy` claim on a surface with `n` vertices.
+fn parse_energy(v: &Value, n: usize) -> Result<Assertion, ClaimError> {
+    let targets = match v.get("targets") {
+        None => None,
+        Some(t) => Some(numbers(t, "targets", n, "vertex")?),
+    };
+    let energy = exact_number(
+        v.get("energy")
+            .ok_or_else(|| err("energy: required, the claimed E(u)"))?,
+        "energy",
+    )?;
+    Ok(Assertion::Energy {
+        u: numbers(&v["u"], "u", n, "vertex")?,
+        targets,
+        energy,
+        gradient: numbers(&v["gradient"], "gradient", n, "vertex")?,
+        epsilon: epsilon(v)?,
+    })
+}
+
 /// Parse a claim document (JSON value); a field the claim's kind does not have is refused.
 pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
     let Some(obj) = v.as_object() else {
@@ -297,7 +335,7 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
     let kind = v
         .get("kind")
         .and_then(Value::as_str)
-        .ok_or_else(|| err("kind: required, one of intrinsic_delaunay, delaunay_flip, cone_angles, cotan_laplacian, conformal_equivalence, lobachevsky, uniformization"))?;
+        .ok_or_else(|| err("kind: required, one of intrinsic_delaunay, delaunay_flip, cone_angles, cotan_laplacian, conformal_equivalence, energy, lobachevsky, uniformization"))?;
     let Some((_, own)) = KIND_FIELDS.iter().find(|(k, _)| *k == kind) else {
         return Err(err(format!("kind: unknown claim kind {kind:?}")));
     };
@@ -347,6 +385,7 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
             }
         }
         "uniformization" => uniformization_claim(v, &surface)?,
+        "energy" => parse_energy(v, surface.mesh.n_vertices())?,
         other => return Err(err(format!("kind: unknown claim kind {other:?}"))),
     };
     Ok(Claim {

@@ -6,6 +6,7 @@
 
 pub mod case;
 pub mod certify;
+pub mod certify_energy;
 pub mod claim;
 pub mod corpus;
 pub mod failure;
@@ -15,6 +16,7 @@ pub mod precision;
 pub mod registry;
 // After `registry`, whose `at_precision!` macro it uses.
 pub mod checks;
+pub mod checks_energy;
 pub mod checks_extra;
 pub mod checks_lobachevsky;
 pub mod controls;

@@ -54,6 +54,8 @@ macro_rules! at_precision {
 pub fn catalogue() -> Vec<Check> {
     let mut all = super::checks::entries();
     all.extend(super::checks_lobachevsky::entries());
+    all.extend(super::checks_energy::entries());
+    all.sort_by_key(|c| c.id);
     all
 }
 

@@ -2,6 +2,7 @@
 //! a failing check lists *all* failing elements.
 
 pub mod bounds;
+pub mod energy_bounds;
 pub mod inputs;
 pub mod report;
 pub mod verdict;
@@ -12,6 +13,7 @@ pub mod t03_angle_rigidity;
 pub mod t04_angle_integrability;
 pub mod t05_cotan_laplacian;
 pub mod t05_semidefinite;
+pub mod t06_cotan_weights_metric;
 pub mod t07_conformal_energy;
 pub mod t15_lemma1;
 pub mod t16_scaling_cross_ratios;
@@ -29,4 +31,7 @@ pub mod t27_shear_log_cross_ratio;
 pub mod t28_ptolemy_flip;
 pub mod t29_euclidean_ptolemy_cocircular;
 pub mod t30_lobachevsky;
+pub mod t31_schlafli;
+pub mod t32_energy;
+pub mod t33_hyperbolic;
 pub mod t35_definition_two;

@@ -2,6 +2,7 @@
 
 mod adversarial_gen;
 mod claims;
+mod claims_energy;
 mod claims_lobachevsky;
 mod cli;
 mod cli_controls;
@@ -60,3 +61,4 @@ mod tie_claims;
 mod tolerance_range;
 mod tolerance_tightness;
 mod uniformization;
+mod variational;

@@ -21,6 +21,7 @@ use crate::theorems::Verdict;
 use rug::Rational;
 
 pub mod conformal;
+pub mod energy;
 pub mod flips;
 pub mod lobachevsky;
 pub mod metric;
@@ -62,6 +63,7 @@ pub fn controls() -> Vec<Check> {
     let mut all = metric::controls();
     all.extend(conformal::controls());
     all.extend(flips::controls());
+    all.extend(energy::controls());
     all.extend(lobachevsky::controls());
     all.sort_by_key(|c| c.id);
     all

@@ -1,0 +1,80 @@
+//! Criterion benchmarks: the discrete-uniformization energy `E`, its gradient `Θ − θ` and
+//! the sparse Hessian assembly (`penner::variational::energy`) on a closed mesh with 10⁵
+//! faces (a 250 × 200 jittered torus grid), in f64, double-double and MPFR-256, and the
+//! cone-angle kernel alone (`geometry::cone_angles`, f64) on the same mesh for the ratio
+//! (E + ∇E + H at f64) / (cone angles at f64).
+//!
+//! Run: `cargo bench --bench energy -- --measurement-time 5 --warm-up-time 1`.
+//! `PENNER_BENCH_FACES_GRID=NU,NV` picks another grid (2·NU·NV faces).
+
+// criterion's macros generate undocumented public functions.
+#![allow(missing_docs)]
+
+#[path = "../tests/it/meshgen.rs"]
+mod meshgen;
+
+use criterion::{criterion_main, BenchmarkId, Criterion};
+use meshgen::jittered_torus;
+use penner::geometry::cone_angles::cone_angles;
+use penner::mesh::Mesh;
+use penner::scalar::{Dd, Mpfr, Precision, Real};
+use penner::variational::energy::{energy_at, gradient_at, hessian_at, log_lengths};
+use std::hint::black_box;
+
+/// `E`, `∇E` and the Hessian from the lengths (log lengths, `u = 0`, targets 2π).
+fn energy_all<T: Real>(mesh: &Mesh, l: &[T], u: &[T], t: &[T]) -> usize {
+    let lt = log_lengths(l);
+    let e = energy_at(mesh, &lt, u, t);
+    let g = gradient_at(mesh, &lt, t);
+    let h = hessian_at(mesh, &lt);
+    black_box((e, g));
+    h.dim()
+}
+
+fn run<T: Real>(
+    g: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+    name: &str,
+    mesh: &Mesh,
+    len: &[f64],
+    ctx: T::Ctx,
+) {
+    let l: Vec<T> = len.iter().map(|&x| T::from_f64(x, ctx)).collect();
+    let n = mesh.n_vertices();
+    let u = vec![T::from_f64(0.0, ctx); n];
+    let t = vec![T::pi(ctx) * &T::from_f64(2.0, ctx); n];
+    g.bench_function(BenchmarkId::new("energy_gradient_hessian", name), |b| {
+        b.iter(|| black_box(energy_all(mesh, black_box(&l), &u, &t)));
+    });
+}
+
+fn grid() -> (u32, u32) {
+    std::env::var("PENNER_BENCH_FACES_GRID")
+        .ok()
+        .and_then(|s| {
+            let (a, b) = s.split_once(',')?;
+            Some((a.trim().parse().ok()?, b.trim().parse().ok()?))
+        })
+        .unwrap_or((250, 200))
+}
+
+fn bench_energy(c: &mut Criterion) {
+    let (nu, nv) = grid();
+    let (mesh, len) = jittered_torus(nu, nv, 2026);
+    let mut g = c.benchmark_group(format!("energy_{}_faces", mesh.n_faces()));
+    g.sample_size(10);
+    g.bench_function(BenchmarkId::new("cone_angles", "f64"), |b| {
+        b.iter(|| black_box(cone_angles(&mesh, black_box(&len))));
+    });
+    run::<f64>(&mut g, "f64", &mesh, &len, ());
+    run::<Dd>(&mut g, "dd", &mesh, &len, ());
+    let p = Precision::new(256).expect("valid precision");
+    run::<Mpfr>(&mut g, "mpfr-256", &mesh, &len, p);
+    g.finish();
+}
+
+fn benches() {
+    let mut c = Criterion::default().configure_from_args();
+    bench_energy(&mut c);
+}
+
+criterion_main!(benches);

@@ -1,0 +1,177 @@
+//! Registry entries of the variational checks T06 (cotan weights determine the metric),
+//! T31 (Schläfli), T32 (the uniformization
+//! energy on the case's triangulation) and T33 (its hyperbolic analogue, reading the case's
+//! lengths as hyperbolic lengths), and the fixed data they use: log scale factors
+//! `u_v = 2 log s_v` from [`scale_factors`], targets `Θ_v = 2π`, and the directions of
+//! [`directions`].
+
+// The `at_precision!` bodies are generic code that is also instantiated at `f64`.
+#![allow(clippy::clone_on_copy, clippy::op_ref, clippy::let_unit_value)]
+
+use super::checks::scale_factors;
+use super::precision::Prec;
+use super::registry::Check;
+use crate::io::Surface;
+use crate::scalar::Real;
+use crate::theorems::t32_energy::{check_energy, EnergyInput};
+use crate::theorems::{t06_cotan_weights_metric, t31_schlafli, t33_hyperbolic, Settings, Verdict};
+
+/// `u_v = 2 log s_v` for the exact scale factors `s_v ∈ [9/10, 11/10]` of
+/// [`scale_factors`] (so `e^{u_v/2} = s_v`), in the context of `like`.
+pub fn log_scale_factors<T: Real>(n: usize, like: &T) -> Vec<T> {
+    scale_factors(n)
+        .iter()
+        .map(|s| T::from_rational(s, like.ctx()).ln() * &like.lit(2.0))
+        .collect()
+}
+
+/// Targets `Θ_v = 2π` (any targets do: the identities of T32 and T33 hold for all).
+pub fn flat_targets<T: Real>(n: usize, like: &T) -> Vec<T> {
+    vec![T::pi(like.ctx()) * &like.lit(2.0); n]
+}
+
+/// Three fixed directions in `ℝⁿ`: `e_0` (so a perturbed `∂E/∂u_0` is seen) and two
+/// irregular patterns `((7v + 5k) mod 11 − 5)/5`, `k = 1, 2`.
+pub fn directions<T: Real>(n: usize, like: &T) -> Vec<Vec<T>> {
+    let mut out = vec![(0..n)
+        .map(|v| like.lit(if v == 0 { 1.0 } else { 0.0 }))
+        .collect::<Vec<T>>()];
+    for k in 1..=2 {
+        out.push(
+            (0..n)
+                .map(|v| like.lit((((7 * v + 5 * k) % 11) as f64 - 5.0) / 5.0))
+                .collect(),
+        );
+    }
+    out
+}
+
+/// Faces above which T32 and T33 answer `NotApplicable` (their dual and finite-difference
+/// evaluations cost several energy evaluations per direction, each with three Lobachevsky
+/// series per face).
+pub const MAX_FACES: usize = 2_000;
+
+/// Faces above which T31 answers `NotApplicable` (nine dual Lobachevsky series per face).
+pub const T31_MAX_FACES: usize = 20_000;
+
+/// Precision (bits) above which T06 and T31–T33 answer `NotApplicable`: the Lobachevsky
+/// series has `p/2 + 4` terms and T32's central difference runs at `2p` bits.
+pub const MAX_BITS: u32 = 512;
+
+/// `NotApplicable` past `max_faces` faces or [`MAX_BITS`] bits, naming the limit.
+pub fn beyond_limits(case: &Surface, prec: Prec, max_faces: usize) -> Option<Verdict> {
+    let bits = match prec {
+        Prec::Mpfr(p) => p.bits(),
+        _ => 0,
+    };
+    if case.mesh.n_faces() > max_faces {
+        return Some(Verdict::NotApplicable {
+            reason: format!(
+                "{} faces: this check runs on surfaces up to {max_faces} faces",
+                case.mesh.n_faces()
+            ),
+        });
+    }
+    (bits > MAX_BITS).then(|| Verdict::NotApplicable {
+        reason: format!("{bits} bits: this check runs up to {MAX_BITS} bits"),
+    })
+}
+
+fn too_big(case: &Surface, prec: Prec) -> Option<Verdict> {
+    beyond_limits(case, prec, MAX_FACES)
+}
+
+/// Edges above which T06 answers `NotApplicable` (its Newton solve is dense).
+pub const T06_MAX_EDGES: usize = 150;
+
+fn t06(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
+    if let Some(v) = beyond_limits(case, prec, usize::MAX) {
+        return Some(v);
+    }
+    if case.mesh.n_edges() > T06_MAX_EDGES {
+        return Some(Verdict::NotApplicable {
+            reason: format!(
+                "{} edges: T06's dense Newton solve runs up to {T06_MAX_EDGES} edges",
+                case.mesh.n_edges()
+            ),
+        });
+    }
+    at_precision!(prec, case, |l: T| Some(
+        t06_cotan_weights_metric::check_weights_determine_metric(&case.mesh, &l, s)
+    ))
+}
+
+fn t31(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
+    if let Some(v) = beyond_limits(case, prec, T31_MAX_FACES) {
+        return Some(v);
+    }
+    at_precision!(prec, case, |l: T| Some(t31_schlafli::check_schlafli(
+        &case.mesh, &l, s
+    )))
+}
+
+fn t32(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
+    if let Some(v) = too_big(case, prec) {
+        return Some(v);
+    }
+    at_precision!(prec, case, |l: T| {
+        let n = case.mesh.n_vertices();
+        let z = l.first()?;
+        let (u, t, d) = (
+            log_scale_factors(n, z),
+            flat_targets(n, z),
+            directions(n, z),
+        );
+        let input = EnergyInput {
+            mesh: &case.mesh,
+            lengths: &l,
+            u: &u,
+            targets: &t,
+        };
+        Some(check_energy(&input, &d, s))
+    })
+}
+
+fn t33(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
+    if let Some(v) = too_big(case, prec) {
+        return Some(v);
+    }
+    at_precision!(prec, case, |l: T| {
+        let n = case.mesh.n_vertices();
+        let z = l.first()?;
+        let (u, t, d) = (
+            log_scale_factors(n, z),
+            flat_targets(n, z),
+            directions(n, z),
+        );
+        Some(t33_hyperbolic::check_hyperbolic(
+            &case.mesh, &l, &u, &t, &d, s,
+        ))
+    })
+}
+
+/// The entries, in catalogue order.
+pub fn entries() -> Vec<Check> {
+    vec![
+        Check {
+            id: "T06",
+            title: "cotan weights ⇒ metric up to scale",
+            run: t06,
+        },
+        Check {
+            id: "T31",
+            title: "Schläfli: ∂f/∂λ = α/2",
+            run: t31,
+        },
+        Check {
+            id: "T32",
+            title: "energy: ∇E = Θ−θ, H = cotan L",
+            run: t32,
+        },
+        Check {
+            id: "T33",
+            title: "hyperbolic energy gradient",
+            run: t33,
+        },
+    ]
+}

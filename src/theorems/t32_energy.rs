@@ -1,0 +1,562 @@
+//! T32 — the discrete-uniformization energy (notes §1.6.4, Eq. 16; MATH.md §7; SSP08,
+//! Springborn 2020): `∇E = Θ − θ(u)`, Hessian = the cotan Laplacian, `E` convex, and on
+//! the variable triangulation C² across Penner cells (at a cocircular tie, `E`, `∇E` and
+//! the Hessian agree on both triangulations).
+//!
+//! API:
+//! - `pub fn check_energy<T: Real>(input: &EnergyInput<'_, T>, directions: &[Vec<T>], settings: &Settings) -> Verdict`
+//! - `pub fn verify_gradient<T: Real>(input: &EnergyInput<'_, T>, gradient: &[T], directions: &[Vec<T>], settings: &Settings) -> Verdict`
+//! - `pub fn verify_hessian<T: Real>(input: &EnergyInput<'_, T>, hessian: &SparseMatrix<T>, directions: &[Vec<T>], settings: &Settings) -> Verdict`
+//! - `pub fn check_convexity<T: Real>(input: &EnergyInput<'_, T>, directions: &[Vec<T>], settings: &Settings) -> Verdict`
+//! - `pub fn verify_convexity<T: Real>(input: &EnergyInput<'_, T>, directions: &[Vec<T>], hessian: &dyn Fn(&Mesh, &[T]) -> SparseMatrix<T>, settings: &Settings) -> Verdict`
+//! - `pub fn check_tie<T: Real>(a: &EnergyInput<'_, T>, b: &EnergyInput<'_, T>, settings: &Settings) -> Verdict`
+
+use super::bounds::{cot_error, eps, eps_shift, sum_error, SAFETY};
+use super::energy_bounds::{face_angle_error, face_energy_error, schlafli_error, slack_condition};
+use super::report::{check_lengths, lengths_out_of_range, Tally};
+use super::verdict::{Settings, Verdict, Witness};
+use crate::geometry::laplacian::SparseMatrix;
+use crate::mesh::{Face, HalfEdge, Mesh};
+use crate::predicates::tolerance::sign_beyond;
+use crate::scalar::{Dual, Mpfr, Precision, Real, Sign};
+use crate::variational::energy::{
+    energy, gradient, hessian, hessian_at, log_lengths, scaled_log_lengths,
+};
+use crate::variational::triangle::{angles_from_log_lengths, shape, shifted_lengths, Shape};
+
+/// The data of `E` on a fixed triangulation: the mesh, its lengths `ℓ` (`λ = 2 log ℓ`),
+/// the log scale factors `u` and the target angles `Θ`.
+#[derive(Clone, Copy, Debug)]
+pub struct EnergyInput<'a, T> {
+    /// The triangulation.
+    pub mesh: &'a Mesh,
+    /// One length per edge.
+    pub lengths: &'a [T],
+    /// One log scale factor per vertex.
+    pub u: &'a [T],
+    /// One target cone angle per vertex.
+    pub targets: &'a [T],
+}
+
+impl<T: Real> EnergyInput<'_, T> {
+    /// `NotApplicable` on malformed input, `Undecided` on lengths outside B40's range.
+    fn validate(&self) -> Option<Verdict> {
+        let n = self.mesh.n_vertices();
+        check_lengths(self.mesh, self.lengths)
+            .or_else(|| lengths_out_of_range(self.lengths))
+            .or_else(|| {
+                (self.u.len() != n || self.targets.len() != n).then(|| Verdict::NotApplicable {
+                    reason: format!(
+                        "{} scale factors and {} targets for {n} vertices",
+                        self.u.len(),
+                        self.targets.len()
+                    ),
+                })
+            })
+    }
+
+    fn lambda(&self) -> Vec<T> {
+        log_lengths(self.lengths)
+    }
+}
+
+/// Per face: half-edges, scaled log lengths, shifted sides and angles (f64 approximations).
+struct FaceData {
+    hs: [HalfEdge; 3],
+    x: [f64; 3],
+    l: [f64; 3],
+    alpha: [f64; 3],
+    /// Whether the face is a proper triangle (else degenerate or undecided: its angles
+    /// are the constants `(π, 0, 0)` of the extension, or invalid enclosures).
+    proper: bool,
+}
+
+fn face_data<T: Real>(mesh: &Mesh, f: Face, lt: &[T]) -> FaceData {
+    let hs = mesh.face_halfedges(f);
+    let x = hs.map(|h| lt[h.edge().idx()].clone());
+    let a = angles_from_log_lengths(&x);
+    let sl = shifted_lengths(&x);
+    FaceData {
+        hs,
+        x: x.clone().map(|v| v.approx_f64()),
+        proper: shape(&sl) == Shape::Proper,
+        l: sl.map(|v| v.approx_f64()),
+        alpha: a.map(|v| v.approx_f64()),
+    }
+}
+
+fn dual_u<T: Real>(u: &[T], d: &[T]) -> Vec<Dual<T>> {
+    u.iter()
+        .zip(d)
+        .map(|(a, b)| Dual::new(a.clone(), b.clone()))
+        .collect()
+}
+
+fn constants<T: Real>(v: &[T]) -> Vec<Dual<T>> {
+    v.iter().cloned().map(Dual::constant).collect()
+}
+
+/// The verdict of several parts: any failure fails (listing every witness), else any
+/// undecided part is undecided, else any not-applicable part, else holds.
+fn combine(parts: Vec<Verdict>) -> Verdict {
+    let mut fails: Vec<Witness> = Vec::new();
+    let mut open: Vec<Witness> = Vec::new();
+    let (mut certified, mut max_error, mut bits) = (true, 0.0_f64, 0);
+    let mut na: Option<String> = None;
+    for v in parts {
+        match v {
+            Verdict::Holds {
+                certified: c,
+                max_error: m,
+            } => {
+                certified &= c;
+                max_error = max_error.max(m);
+            }
+            Verdict::Fails {
+                certified: c,
+                witnesses,
+            } => {
+                certified &= c;
+                fails.extend(witnesses);
+            }
+            Verdict::Undecided {
+                bits_tried,
+                witnesses,
+            } => {
+                bits = bits.max(bits_tried);
+                open.extend(witnesses);
+            }
+            Verdict::NotApplicable { reason } => na = Some(reason),
+        }
+    }
+    if !fails.is_empty() {
+        fails.extend(open);
+        Verdict::Fails {
+            certified,
+            witnesses: fails,
+        }
+    } else if !open.is_empty() {
+        Verdict::Undecided {
+            bits_tried: bits,
+            witnesses: open,
+        }
+    } else if let Some(reason) = na {
+        Verdict::NotApplicable { reason }
+    } else {
+        Verdict::Holds {
+            certified,
+            max_error,
+        }
+    }
+}
+
+/// T32 on one input: [`verify_gradient`] against `Θ − θ`, [`verify_hessian`] against the
+/// assembled cotan Laplacian, and [`check_convexity`] along every direction.
+pub fn check_energy<T: Real>(
+    input: &EnergyInput<'_, T>,
+    directions: &[Vec<T>],
+    settings: &Settings,
+) -> Verdict {
+    if let Some(v) = input.validate() {
+        return v;
+    }
+    let lambda = input.lambda();
+    let g = gradient(input.mesh, &lambda, input.u, input.targets);
+    let h = hessian(input.mesh, &lambda, input.u);
+    combine(vec![
+        verify_gradient(input, &g, directions, settings),
+        verify_hessian(input, &h, directions, settings),
+        check_convexity(input, directions, settings),
+    ])
+}
+
+/// `∇E = g` against claimed `g` (one per vertex), along each direction `d`:
+/// (1) the dual-number derivative `D_d E` equals `g·d` within proofs/B57 (B56 per face plus
+/// the angle errors of `Θ − θ`, B40, and the sums, B41); (2) an independent central finite
+/// difference `(E(u+hd) − E(u−hd))/2h` at twice the working precision (MPFR, `2p` bits,
+/// `h = 2^{−⌈p/2⌉}`) equals `g·d` within the angle part of that bound plus the difference's
+/// own error `SAFETY·ε(|D³_d E|/48 + 2^{1−p/2} S_E)` (B57; `D³_d E` by dual numbers of the
+/// Hessian, `S_E` the sum of the magnitudes of `E`'s terms). Witnesses `d{k}`, `fd{k}`.
+pub fn verify_gradient<T: Real>(
+    input: &EnergyInput<'_, T>,
+    claimed: &[T],
+    directions: &[Vec<T>],
+    settings: &Settings,
+) -> Verdict {
+    if let Some(v) = input.validate() {
+        return v;
+    }
+    let mesh = input.mesh;
+    let n = mesh.n_vertices();
+    if claimed.len() != n || directions.iter().any(|d| d.len() != n) {
+        return Verdict::NotApplicable {
+            reason: format!("gradient and directions need {n} entries (one per vertex)"),
+        };
+    }
+    let ctx = input.lengths[0].ctx();
+    let (e, bits) = (eps::<T>(ctx), T::precision_bits(ctx));
+    let lambda = input.lambda();
+    let lt = scaled_log_lengths(mesh, &lambda, input.u);
+    let faces: Vec<FaceData> = mesh.faces().map(|f| face_data(mesh, f, &lt)).collect();
+    let mut tally = Tally::new(false, bits);
+    for (k, d) in directions.iter().enumerate() {
+        let df: Vec<f64> = d.iter().map(Real::approx_f64).collect();
+        let ud = dual_u(input.u, d);
+        let lam_d = constants(&lambda);
+        let t_d = constants(input.targets);
+        let ltd = scaled_log_lengths(mesh, &lam_d, &ud);
+        let Some(ed) = energy(mesh, &lam_d, &ud, &t_d) else {
+            continue;
+        };
+        let gd = claimed
+            .iter()
+            .zip(d)
+            .fold(d[0].zero_like(), |s, (g, x)| s + &(g.clone() * x));
+        // Angle part of the bound: Σ_f Σ_m Δα_m Σ_{v∈f} |d_v|, plus π's rounding.
+        let mut angle_part = 0.0;
+        let mut schlafli_part = 0.0;
+        let mut terms: Vec<f64> = Vec::new();
+        for fd in &faces {
+            let vs = fd.hs.map(|h| mesh.tail(h).idx());
+            let dsum: f64 = vs.iter().map(|&v| df[v].abs()).sum();
+            let xd = fd.hs.map(|h| ltd[h.edge().idx()].clone());
+            if !fd.proper {
+                // Degenerate: f = ½πx_m exactly, angles the constants (π, 0, 0).
+                angle_part += 3.0 * e * std::f64::consts::PI * dsum;
+                schlafli_part += SAFETY * 2.0 * e * std::f64::consts::PI * 2.0 * dsum;
+                continue;
+            }
+            let da = face_angle_error(fd.l, e);
+            angle_part += (da.iter().sum::<f64>() + 3.0 * e * std::f64::consts::PI) * dsum;
+            let a = angles_from_log_lengths(&xd);
+            let ad = [0, 1, 2].map(|m| a[m].d.approx_f64());
+            let xdot = [0, 1, 2].map(|m| xd[m].d.approx_f64());
+            schlafli_part += 2.0 * schlafli_error(fd.x, xdot, fd.l, fd.alpha, ad, bits, e);
+            terms.extend((0..3).map(|m| fd.alpha[m] * xdot[m]));
+        }
+        terms.extend(claimed.iter().zip(&df).map(|(g, x)| g.approx_f64() * x));
+        let sums = sum_error(terms.iter().copied(), e);
+        let tol = settings.slack * (angle_part + schlafli_part + 2.0 * sums);
+        tally.within(format!("d{k}"), "D_d E − (Θ−θ)·d", &(ed.d - &gd), tol);
+        // (2) Central finite difference at twice the precision.
+        match finite_difference(input, &lambda, d, bits) {
+            Some((fd_err, third, size)) => {
+                let gd_hi = gd.to_rational();
+                let own = SAFETY
+                    * e
+                    * (third.abs() / 48.0 + 2.0 * (-(f64::from(bits)) / 2.0).exp2() * size);
+                let tol = settings.slack * (angle_part + sums + own);
+                match gd_hi {
+                    Some(q) => {
+                        let p2 = fd_err.ctx();
+                        let err = fd_err - &Mpfr::from_rational(&q, p2);
+                        tally.within(format!("fd{k}"), "finite difference − (Θ−θ)·d", &err, tol);
+                    }
+                    None => tally.undecided(format!("fd{k}"), "g·d not finite", f64::NAN),
+                }
+            }
+            None => tally.undecided(format!("fd{k}"), "finite difference not formed", f64::NAN),
+        }
+    }
+    tally.verdict()
+}
+
+/// `(fd, D³_d E, S_E)`: the central difference of `E` along `d` at `2p` bits, the third
+/// directional derivative at the working precision (dual numbers of `dᵀ H d`), and the
+/// size `Σ|2f| + (π/2)Σ|λ̃| + Σ|Θ_i u_i|` of `E`'s terms.
+fn finite_difference<T: Real>(
+    input: &EnergyInput<'_, T>,
+    lambda: &[T],
+    d: &[T],
+    bits: u32,
+) -> Option<(Mpfr, f64, f64)> {
+    let mesh = input.mesh;
+    let p2 = Precision::new(u64::from(2 * bits)).ok()?;
+    let hi = |v: &[T]| -> Option<Vec<Mpfr>> {
+        v.iter()
+            .map(|x| Some(Mpfr::from_rational(&x.to_rational()?, p2)))
+            .collect()
+    };
+    let (l2, u2, t2, d2) = (hi(lambda)?, hi(input.u)?, hi(input.targets)?, hi(d)?);
+    let h = Mpfr::from_f64((-f64::from(bits.div_ceil(2))).exp2(), p2);
+    let shift = |s: f64| -> Vec<Mpfr> {
+        u2.iter()
+            .zip(&d2)
+            .map(|(a, b)| a.clone() + &(b.clone() * &h * &h.lit(s)))
+            .collect()
+    };
+    let ep = energy(mesh, &l2, &shift(1.0), &t2)?;
+    let em = energy(mesh, &l2, &shift(-1.0), &t2)?;
+    let fd = (ep - &em) / &(h.clone() * &h.lit(2.0));
+    // D³_d E = d/dt (dᵀ H(u + t d) d).
+    let lt = scaled_log_lengths(mesh, &constants(lambda), &dual_u(input.u, d));
+    let hd = hessian_at(mesh, &lt);
+    let dd = constants(d);
+    let hdd = hd.mul_vec(&dd)?;
+    let q = hdd
+        .iter()
+        .zip(&dd)
+        .fold(dd[0].zero_like(), |s, (a, b)| s + &(a.clone() * b));
+    let ltf = scaled_log_lengths(mesh, lambda, input.u);
+    let mut size: f64 = 0.0;
+    for f in mesh.faces() {
+        let fd = face_data(mesh, f, &ltf);
+        size += (0..3)
+            .map(|m| (fd.alpha[m] * fd.x[m]).abs() + 1.0 + std::f64::consts::PI * fd.x[m].abs())
+            .sum::<f64>();
+    }
+    size += input
+        .targets
+        .iter()
+        .zip(input.u)
+        .map(|(t, u)| (t.approx_f64() * u.approx_f64()).abs())
+        .sum::<f64>();
+    Some((fd, q.d.approx_f64(), size))
+}
+
+/// The Hessian of `E` is `hessian` (the cotan Laplacian): along each direction `d`, the
+/// dual-number derivative of `∇E = Θ − θ` equals `H d` per vertex, within the error of
+/// the dual angle derivatives (relative `(ρ + 10)ε` each, B27 and B40's `ρ`) plus B44's
+/// cotangent errors times `|d_i − d_j|` and B41 for the sums (proofs/B57). Witnesses
+/// `d{k}:v{i}`.
+pub fn verify_hessian<T: Real>(
+    input: &EnergyInput<'_, T>,
+    claimed: &SparseMatrix<T>,
+    directions: &[Vec<T>],
+    settings: &Settings,
+) -> Verdict {
+    if let Some(v) = input.validate() {
+        return v;
+    }
+    let mesh = input.mesh;
+    let n = mesh.n_vertices();
+    if claimed.dim() != n || directions.iter().any(|d| d.len() != n) {
+        return Verdict::NotApplicable {
+            reason: format!("Hessian and directions need dimension {n}"),
+        };
+    }
+    let ctx = input.lengths[0].ctx();
+    let (e, bits) = (eps::<T>(ctx), T::precision_bits(ctx));
+    let lambda = input.lambda();
+    let lt = scaled_log_lengths(mesh, &lambda, input.u);
+    let mut tally = Tally::new(false, bits);
+    for (k, d) in directions.iter().enumerate() {
+        let df: Vec<f64> = d.iter().map(Real::approx_f64).collect();
+        let ud = dual_u(input.u, d);
+        let gd = gradient(mesh, &constants(&lambda), &ud, &constants(input.targets));
+        let Some(hd) = claimed.mul_vec(d) else {
+            continue;
+        };
+        let ltd = scaled_log_lengths(mesh, &constants(&lambda), &ud);
+        let mut tol = vec![0.0; n];
+        let mut sizes = vec![0.0; n];
+        for f in mesh.faces() {
+            let fd = face_data(mesh, f, &lt);
+            if !fd.proper {
+                // Constant angles, no Hessian contribution.
+                continue;
+            }
+            let xd = fd.hs.map(|h| ltd[h.edge().idx()].clone());
+            let a = angles_from_log_lengths(&xd);
+            let rho = slack_condition(fd.l);
+            for (m, am) in a.iter().enumerate() {
+                let corner = mesh.tail(fd.hs[(m + 2) % 3]).idx();
+                tol[corner] += (rho + 10.0) * e * am.d.approx_f64().abs();
+                let (i, j) = (mesh.tail(fd.hs[m]).idx(), mesh.tip(fd.hs[m]).idx());
+                let (p, q) = ((m + 1) % 3, (m + 2) % 3);
+                let ce = cot_error(fd.l[m], fd.l[p], fd.l[q], e);
+                let cot = (fd.alpha[m]).tan().recip();
+                let diff = (df[i] - df[j]).abs();
+                let t = (0.5 * ce + 2.0 * e * cot.abs()) * diff;
+                tol[i] += t;
+                tol[j] += t;
+                sizes[i] += (0.5 * cot * diff).abs() + am.d.approx_f64().abs();
+                sizes[j] += (0.5 * cot * diff).abs();
+            }
+        }
+        for i in 0..n {
+            let sum = sum_error([sizes[i], sizes[i]], e) * (mesh.n_halfedges() as f64).sqrt();
+            let t = settings.slack * (SAFETY * tol[i] + sum);
+            let err = gd[i].d.clone() - &hd[i];
+            tally.within(format!("d{k}:v{i}"), "D_d(Θ−θ) − H d", &err, t);
+        }
+    }
+    tally.verdict()
+}
+
+/// Convexity along lines: [`verify_convexity`] with the assembled Hessian
+/// ([`hessian_at`]).
+pub fn check_convexity<T: Real>(
+    input: &EnergyInput<'_, T>,
+    directions: &[Vec<T>],
+    settings: &Settings,
+) -> Verdict {
+    verify_convexity(input, directions, &|m, lt| hessian_at(m, lt), settings)
+}
+
+/// The points `t` of the lines `u + t d` where convexity is checked.
+pub const LINE_POINTS: [f64; 5] = [-0.25, -0.125, 0.0, 0.125, 0.25];
+
+/// Convexity along lines: for each direction `d` and `t ∈` [`LINE_POINTS`], the second
+/// directional derivative `dᵀ H(u + t d) d` is `≥ −tol`, `H` given by `hessian(mesh, λ̃)`
+/// (the energy's Hessian is `Σ_faces Σ_sides ½ cot α (d_i − d_j)²`); tol from B44 per
+/// term and B41 for the sums (proofs/B57). A value below `−tol` is a failure, witness
+/// `d{k}@t`.
+pub fn verify_convexity<T: Real>(
+    input: &EnergyInput<'_, T>,
+    directions: &[Vec<T>],
+    hessian: &dyn Fn(&Mesh, &[T]) -> SparseMatrix<T>,
+    settings: &Settings,
+) -> Verdict {
+    if let Some(v) = input.validate() {
+        return v;
+    }
+    let mesh = input.mesh;
+    let ctx = input.lengths[0].ctx();
+    let (e, bits) = (eps::<T>(ctx), T::precision_bits(ctx));
+    let lambda = input.lambda();
+    let mut tally = Tally::new(false, bits);
+    for (k, d) in directions.iter().enumerate() {
+        if d.len() != mesh.n_vertices() {
+            return Verdict::NotApplicable {
+                reason: "a direction of the wrong length".into(),
+            };
+        }
+        for t in LINE_POINTS {
+            let ut: Vec<T> = input
+                .u
+                .iter()
+                .zip(d)
+                .map(|(a, b)| a.clone() + &(b.clone() * &b.lit(t)))
+                .collect();
+            let lt = scaled_log_lengths(mesh, &lambda, &ut);
+            let h = hessian(mesh, &lt);
+            let Some(hd) = h.mul_vec(d) else {
+                continue;
+            };
+            let q = hd
+                .iter()
+                .zip(d)
+                .fold(d[0].zero_like(), |s, (a, b)| s + &(a.clone() * b));
+            let mut tol = 0.0;
+            let mut terms = Vec::new();
+            for f in mesh.faces() {
+                let fd = face_data(mesh, f, &lt);
+                if !fd.proper {
+                    // A degenerate face adds nothing to H (its angles are constant).
+                    continue;
+                }
+                for m in 0..3 {
+                    let (i, j) = (mesh.tail(fd.hs[m]).idx(), mesh.tip(fd.hs[m]).idx());
+                    let (p, r) = ((m + 1) % 3, (m + 2) % 3);
+                    let sq = (d[i].approx_f64() - d[j].approx_f64()).powi(2);
+                    let term = 0.5 * fd.alpha[m].tan().recip() * sq;
+                    tol +=
+                        0.5 * cot_error(fd.l[m], fd.l[p], fd.l[r], e) * sq + 4.0 * e * term.abs();
+                    terms.push(term);
+                }
+            }
+            let n = mesh.n_vertices() as f64;
+            let tol = settings.slack * (tol + (n + 4.0) * sum_error(terms, e));
+            let elem = format!("d{k}@{t}");
+            match sign_beyond(&q, tol, eps_shift(bits)) {
+                Some(Sign::Negative) => {
+                    tally.fail(elem, "dᵀHd < 0 beyond its error bound", q.approx_f64());
+                }
+                Some(_) => {}
+                None => tally.undecided(elem, "dᵀHd: no error bound or not finite", q.approx_f64()),
+            }
+        }
+    }
+    tally.verdict()
+}
+
+/// C² across Penner cells: `a` and `b` are the same metric on two triangulations of one
+/// surface that differ by flips at cocircular ties (same vertices, same `u` and `Θ`); `E`,
+/// every `∂E/∂u_i` and every Hessian entry must agree within the sum of both sides' bounds
+/// (proofs/B57: B56/B40 per face for `E`, B40 per corner for `θ`, B44 per cotangent).
+pub fn check_tie<T: Real>(
+    a: &EnergyInput<'_, T>,
+    b: &EnergyInput<'_, T>,
+    settings: &Settings,
+) -> Verdict {
+    if let Some(v) = a.validate().or_else(|| b.validate()) {
+        return v;
+    }
+    let n = a.mesh.n_vertices();
+    if b.mesh.n_vertices() != n {
+        return Verdict::NotApplicable {
+            reason: "the two triangulations have different vertex counts".into(),
+        };
+    }
+    let ctx = a.lengths[0].ctx();
+    let (e, bits) = (eps::<T>(ctx), T::precision_bits(ctx));
+    let mut tally = Tally::new(false, bits);
+    let sides = [a, b].map(|s| {
+        let lambda = s.lambda();
+        let lt = scaled_log_lengths(s.mesh, &lambda, s.u);
+        let mut e_tol = 0.0;
+        let mut th_tol = vec![0.0; n];
+        let mut h_tol = vec![vec![0.0; n]; n];
+        for f in s.mesh.faces() {
+            let fd = face_data(s.mesh, f, &lt);
+            if !fd.proper {
+                // f = ½πx_m: one product and π's rounding.
+                e_tol += SAFETY
+                    * 4.0
+                    * e
+                    * std::f64::consts::PI
+                    * fd.x.iter().copied().map(f64::abs).sum::<f64>();
+                continue;
+            }
+            e_tol += 2.0 * face_energy_error(fd.x, fd.l, fd.alpha, bits, e);
+            let da = face_angle_error(fd.l, e);
+            for m in 0..3 {
+                th_tol[s.mesh.tail(fd.hs[(m + 2) % 3]).idx()] += da[m] + e * 4.0;
+                let (i, j) = (s.mesh.tail(fd.hs[m]).idx(), s.mesh.tip(fd.hs[m]).idx());
+                let (p, r) = ((m + 1) % 3, (m + 2) % 3);
+                let ce = 0.5 * cot_error(fd.l[m], fd.l[p], fd.l[r], e) + e;
+                for (x, y) in [(i, i), (j, j), (i, j), (j, i)] {
+                    h_tol[x][y] += ce;
+                }
+            }
+        }
+        let en = crate::variational::energy::energy_at(s.mesh, &lt, s.u, s.targets);
+        let g = crate::variational::energy::gradient_at(s.mesh, &lt, s.targets);
+        let h = hessian_at(s.mesh, &lt);
+        (en, g, h, e_tol, th_tol, h_tol)
+    });
+    let [(ea, ga, ha, eta, tta, hta), (eb, gb, hb, etb, ttb, htb)] = sides;
+    if let (Some(x), Some(y)) = (ea, eb) {
+        tally.within(
+            "E",
+            "E on the two triangulations",
+            &(x - &y),
+            settings.slack * (eta + etb),
+        );
+    }
+    for i in 0..n {
+        let t = settings.slack * (tta[i] + ttb[i]);
+        tally.within(
+            format!("v{i}"),
+            "∂E/∂u on the two triangulations",
+            &(ga[i].clone() - &gb[i]),
+            t,
+        );
+    }
+    let zero = a.lengths[0].zero_like();
+    for i in 0..n {
+        for j in 0..n {
+            let x = ha.get(i, j).unwrap_or(&zero).clone();
+            let y = hb.get(i, j).unwrap_or(&zero).clone();
+            let t = settings.slack * SAFETY * (hta[i][j] + htb[i][j] + e);
+            tally.within(
+                format!("H[{i},{j}]"),
+                "Hessian entry on the two triangulations",
+                &(x - &y),
+                t,
+            );
+        }
+    }
+    tally.verdict()
+}

@@ -1,0 +1,147 @@
+//! One Euclidean triangle in logarithmic lengths: its angles with the degenerate extension,
+//! and Eq. 17's function `f` (MATH.md §7; SSP08; BPS15 §4).
+//!
+//! **Convention.** The variables are Penner's logarithmic lengths `x_m = λ_m = 2 log ℓ_m`
+//! (not `log ℓ_m`): with this choice `∂f/∂x_m = α_m/2` exactly. Proof: with
+//! `f = ½ Σ α_m x_m + Σ Л(α_m)` and `Л′(α) = −log(2 sin α)`,
+//! `df = ½ Σ α_m dx_m + Σ (x_m/2 − log(2 sin α_m)) dα_m`, and by the law of sines
+//! `x_m/2 − log(2 sin α_m) = log(ℓ_m / (2 sin α_m)) = log R` is the same for the three
+//! sides, while `Σ dα_m = 0`. With `x_m = log ℓ_m` the bracket would not be constant.
+//!
+//! **Degenerate triangles.** When the triangle inequality fails or is tight,
+//! `ℓ_m ≥ ℓ_{m+1} + ℓ_{m+2}`, the angles are extended by `α_m = π`, the others `0` (BPS15
+//! §4): the extension is continuous (the half-angle formula tends to these values), so `f`
+//! is C¹ on all of ℝ³ (its gradient `α/2` is continuous), and convex. Inside the degenerate
+//! region the angles are constant: their derivatives, and the second derivatives of `f`,
+//! are zero there.
+//!
+//! ```
+//! use penner::variational::triangle::{angles_from_log_lengths, triangle_energy};
+//! // An equilateral triangle: angles π/3 whatever the scale.
+//! let a = angles_from_log_lengths(&[5.0_f64, 5.0, 5.0]);
+//! assert!((a[0] - std::f64::consts::FRAC_PI_3).abs() < 1e-15);
+//! // Degenerate (1, 1, 3): the angle opposite 3 is π, f = ½·π·x.
+//! let x = [0.0_f64, 0.0, 2.0 * 3.0_f64.ln()];
+//! let d = angles_from_log_lengths(&x);
+//! assert_eq!(d[2], std::f64::consts::PI);
+//! assert!((triangle_energy(&x) - 0.5 * std::f64::consts::PI * x[2]).abs() < 1e-15);
+//! ```
+
+use crate::geometry::triangle::{corner_angle, cot_opposite};
+use crate::predicates::tolerance::sign_exact;
+use crate::scalar::{Real, Sign};
+use crate::special::lobachevsky;
+
+/// The shape of a triangle given by three lengths, as decided on the computed slacks
+/// `ℓ_{m+1} + ℓ_{m+2} − ℓ_m`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shape {
+    /// Every slack is positive: a non-degenerate triangle.
+    Proper,
+    /// Slack `m` is `≤ 0`: side `m` is at least the sum of the others (angle `π` opposite).
+    Degenerate(usize),
+    /// An enclosure straddles 0: neither could be decided.
+    Undecided,
+}
+
+/// The sign of a computed value: exactly on the stored number for point backends
+/// ([`sign_exact`]); for enclosures ([`Real::is_point`] false) from the validity of the
+/// enclosure's square roots, which is decided on its bounds (`√x` is a valid enclosure iff
+/// its lower bound is `≥ 0`): positive when `√x` is valid and `√(−x)` is not, negative in
+/// the mirror case, `None` otherwise.
+fn sign_of<T: Real>(x: &T) -> Option<Sign> {
+    if T::is_point() {
+        return sign_exact(x);
+    }
+    let up = x.sqrt().approx_f64().is_nan();
+    let down = (-x.clone()).sqrt().approx_f64().is_nan();
+    match (up, down) {
+        (false, true) => Some(Sign::Positive),
+        (true, false) => Some(Sign::Negative),
+        _ => None,
+    }
+}
+
+/// The lengths `e^{(x_m − x_s)/2}` of the triangle rescaled so that its longest side (by the
+/// `f64` approximations; any choice gives the same angles) is 1: finite for any magnitude of
+/// the `x_m`.
+pub fn shifted_lengths<T: Real>(x: &[T; 3]) -> [T; 3] {
+    let s = (0..3)
+        .max_by(|&a, &b| x[a].approx_f64().total_cmp(&x[b].approx_f64()))
+        .unwrap_or(0);
+    let half = x[0].lit(0.5);
+    [0, 1, 2].map(|m| ((x[m].clone() - &x[s]) * &half).exp())
+}
+
+/// The [`Shape`] of the triangle with sides `l`.
+pub fn shape<T: Real>(l: &[T; 3]) -> Shape {
+    let mut undecided = false;
+    for m in 0..3 {
+        let slack = l[(m + 1) % 3].clone() + &l[(m + 2) % 3] - &l[m];
+        match sign_of(&slack) {
+            Some(Sign::Positive) => {}
+            Some(_) => return Shape::Degenerate(m),
+            None => undecided = true,
+        }
+    }
+    if undecided {
+        Shape::Undecided
+    } else {
+        Shape::Proper
+    }
+}
+
+/// The angles `α_m` opposite the sides of logarithmic lengths `x_m = 2 log ℓ_m`, by the
+/// half-angle form ([`corner_angle`], proofs/B40) on [`shifted_lengths`]; for a degenerate
+/// triangle `(π, 0, 0)` with `π` opposite the side that is too long (module doc). An
+/// undecided enclosure gives the half-angle form, whose square root is then an invalid
+/// enclosure (the caller's verdict is undecided).
+pub fn angles_from_log_lengths<T: Real>(x: &[T; 3]) -> [T; 3] {
+    let l = shifted_lengths(x);
+    angles_of_lengths(&l)
+}
+
+/// The angles opposite the sides `l` with the degenerate extension (see
+/// [`angles_from_log_lengths`]).
+pub fn angles_of_lengths<T: Real>(l: &[T; 3]) -> [T; 3] {
+    match shape(l) {
+        Shape::Degenerate(m) => {
+            let zero = l[0].zero_like();
+            let mut a = [zero.clone(), zero.clone(), zero];
+            a[m] = T::pi(l[0].ctx());
+            a
+        }
+        _ => [0, 1, 2].map(|m| corner_angle(&l[m], &l[(m + 1) % 3], &l[(m + 2) % 3])),
+    }
+}
+
+/// Eq. 17: `f(x) = ½ Σ α_m x_m + Σ Л(α_m)` with `x_m = 2 log ℓ_m` and `α_m` from
+/// [`angles_from_log_lengths`]; `∂f/∂x_m = α_m/2` (module doc). On a degenerate triangle
+/// `f = ½ π x_m` for the long side `m` (`Л(0) = Л(π) = 0`, used exactly).
+///
+/// `Л` is [`lobachevsky`], evaluated generically: on `Interval<Mpfr>` it is the rigorous
+/// enclosure of proofs/B52.
+pub fn triangle_energy<T: Real>(x: &[T; 3]) -> T {
+    let l = shifted_lengths(x);
+    let half = x[0].lit(0.5);
+    if let Shape::Degenerate(m) = shape(&l) {
+        return T::pi(x[0].ctx()) * &x[m] * &half;
+    }
+    let a = angles_of_lengths(&l);
+    let mut f = x[0].zero_like();
+    for m in 0..3 {
+        f += &(a[m].clone() * &x[m] * &half);
+        f += &lobachevsky(&a[m]);
+    }
+    f
+}
+
+/// `cot α_m` for the three angles of the triangle with logarithmic lengths `x`
+/// ([`cot_opposite`] on [`shifted_lengths`], proofs/B44); `None` for a degenerate or
+/// undecided triangle, where the second derivatives of `f` are 0 inside the degenerate
+/// region and do not exist on its boundary.
+pub fn cotangents<T: Real>(x: &[T; 3]) -> Option<[T; 3]> {
+    let l = shifted_lengths(x);
+    (shape(&l) == Shape::Proper)
+        .then(|| [0, 1, 2].map(|m| cot_opposite(&l[m], &l[(m + 1) % 3], &l[(m + 2) % 3])))
+}
