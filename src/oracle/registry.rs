@@ -52,7 +52,10 @@ macro_rules! at_precision {
 
 /// Every check this build can run, in catalogue order.
 pub fn catalogue() -> Vec<Check> {
-    super::checks::entries()
+    let mut all = super::checks::entries();
+    all.extend(super::checks_circles::entries());
+    all.sort_by_key(|c| c.id);
+    all
 }
 
 /// The checks named in `ids`, or all of them for an empty list. A name selects the check

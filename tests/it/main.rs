@@ -1,6 +1,8 @@
 //! The integration test crate: one module per area.
 
 mod adversarial_gen;
+mod circles;
+mod circles_flow;
 mod claims;
 mod cli;
 mod cli_controls;

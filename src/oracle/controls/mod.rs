@@ -20,6 +20,7 @@ use crate::predicates::delaunay::QuadEdges;
 use crate::theorems::Verdict;
 use rug::Rational;
 
+pub mod circles;
 pub mod conformal;
 pub mod flips;
 pub mod metric;
@@ -61,6 +62,7 @@ pub fn controls() -> Vec<Check> {
     let mut all = metric::controls();
     all.extend(conformal::controls());
     all.extend(flips::controls());
+    all.extend(circles::controls());
     all.sort_by_key(|c| c.id);
     all
 }
