@@ -12,12 +12,15 @@
 //! - [`certify`]: a ball around a computed solution on which the grounded Hessian is proved
 //!   positive definite and which provably contains a solution (T09).
 //! - [`thurston`]: Thurston's 3- and 4-cycle conditions (T10).
+//! - [`rivin`]: Rivin weights of ideal polyhedra and Farkas certificates of their
+//!   infeasibility (T34).
 
 pub mod certify;
 pub mod jacobian;
 pub mod linalg;
 pub mod metric;
 pub mod pattern;
+pub mod rivin;
 pub mod solve;
 
 pub mod thurston;

@@ -357,3 +357,51 @@ fn t09_rigidity_random_surfaces() {
         assert!(all[0].iterations > 0 && all[1].iterations > 0);
     }
 }
+
+#[test]
+fn t34_stellated_solids_admit_no_rivin_weights() {
+    use penner::circles::rivin::{
+        are_rivin_weights, certificate_strings, steiner_certificate, verify_certificate_num,
+        verify_certificate_rug,
+    };
+    use penner::mesh::builders::{triakis_octahedron, triakis_tetrahedron};
+    use penner::theorems::t34_steiner_rivin::check_no_rivin_weights;
+    for mesh in [triakis_tetrahedron().mesh, triakis_octahedron().mesh] {
+        let v = check_no_rivin_weights(&mesh);
+        assert!(
+            matches!(
+                v,
+                penner::theorems::Verdict::Holds {
+                    certified: true,
+                    ..
+                }
+            ),
+            "{v:?}"
+        );
+        let y = steiner_certificate(&mesh).unwrap();
+        assert!(verify_certificate_rug(&mesh, &y));
+        assert!(verify_certificate_num(&mesh, &certificate_strings(&y)));
+        // Negative control: the certificate with one entry raised by 1 is refused by both
+        // verifications (an edge coefficient becomes positive).
+        let mut bad = y.clone();
+        bad[0] += 1;
+        assert!(!verify_certificate_rug(&mesh, &bad));
+        assert!(!verify_certificate_num(&mesh, &certificate_strings(&bad)));
+    }
+    // The regular solids are inscribed: uniform weights 1/degree are Rivin weights (checked
+    // exactly), no certificate exists (the verdict stays undecided, never a false proof),
+    // and the stellated certificate does not transfer.
+    for (mesh, deg) in [(octahedron().mesh, 4), (icosahedron().mesh, 5)] {
+        let w = vec![rat(1, deg); mesh.n_edges()];
+        assert!(are_rivin_weights(&mesh, &w));
+        assert!(steiner_certificate(&mesh).is_none());
+        let v = penner::theorems::t34_steiner_rivin::check_no_rivin_weights(&mesh);
+        assert!(!v.holds(), "{v:?}");
+        let y = vec![rat(1, 2); mesh.n_vertices()];
+        assert!(!verify_certificate_rug(&mesh, &y));
+        assert!(!verify_certificate_num(&mesh, &certificate_strings(&y)));
+    }
+    // Control of the weight checker: weights 1/4 on the icosahedron sum to 5/4.
+    let ico = icosahedron().mesh;
+    assert!(!are_rivin_weights(&ico, &vec![rat(1, 4); ico.n_edges()]));
+}
