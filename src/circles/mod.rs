@@ -12,16 +12,21 @@
 //! - [`certify`]: a ball around a computed solution on which the grounded Hessian is proved
 //!   positive definite and which provably contains a solution (T09).
 //! - [`thurston`]: Thurston's 3- and 4-cycle conditions (T10).
+//! - [`layout`], [`svg`], [`pack`]: planar layouts, pictures, and the packing of a surface
+//!   that `penner pack` draws.
 //! - [`rivin`]: Rivin weights of ideal polyhedra and Farkas certificates of their
 //!   infeasibility (T34).
 
 pub mod certify;
 pub mod jacobian;
+pub mod layout;
 pub mod linalg;
 pub mod metric;
+pub mod pack;
 pub mod pattern;
 pub mod rivin;
 pub mod solve;
+pub mod svg;
 
 pub mod thurston;
 pub use pattern::{CirclePattern, PatternError};
