@@ -14,10 +14,12 @@
 //! - [`thurston`]: Thurston's 3- and 4-cycle conditions (T10).
 //! - [`layout`], [`svg`], [`pack`]: planar layouts, pictures, and the packing of a surface
 //!   that `penner pack` draws.
+//! - [`harmonic`]: harmonic maps of disks to convex polygons (T36).
 //! - [`rivin`]: Rivin weights of ideal polyhedra and Farkas certificates of their
 //!   infeasibility (T34).
 
 pub mod certify;
+pub mod harmonic;
 pub mod jacobian;
 pub mod layout;
 pub mod linalg;

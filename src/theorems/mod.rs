@@ -31,3 +31,4 @@ pub mod t28_ptolemy_flip;
 pub mod t29_euclidean_ptolemy_cocircular;
 pub mod t34_steiner_rivin;
 pub mod t35_definition_two;
+pub mod t36_harmonic_embedding;

@@ -3,6 +3,7 @@
 mod adversarial_gen;
 mod circles;
 mod circles_flow;
+mod circles_harmonic;
 mod circles_pack;
 mod claims;
 mod cli;
