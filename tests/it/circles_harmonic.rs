@@ -71,6 +71,10 @@ fn t36_negative_cotan_weights_fold_fixed_instance() {
     let map = harmonic_map(&mesh, &w, &polygon).unwrap();
     let (p, n, z) = orientation_counts(&face_orientations(&mesh, &map, &ladder));
     assert!(p > 0 && n > 0 && z == 0, "{p} {n} {z}: {map:?}");
+    // Control: positive (uniform) weights onto the same kite embed the wheel.
+    let uniform = harmonic_map(&mesh, &[1.0; 8], &polygon).unwrap();
+    let (p, n, z) = orientation_counts(&face_orientations(&mesh, &uniform, &ladder));
+    assert!(z == 0 && (p == 0 || n == 0), "{p} {n} {z}");
     // The check refuses negative weights instead of judging them.
     assert!(matches!(
         check_harmonic_embedding(&mesh, &w, &ladder),
