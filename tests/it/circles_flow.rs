@@ -184,3 +184,30 @@ fn t13_chow_luo_flow_reaches_the_certified_solution() {
         let _ = other.u.iter().map(Real::approx_f64).sum::<f64>();
     }
 }
+
+#[test]
+fn t10_essential_cycles_are_not_violations() {
+    // On the 3×4 flat torus the three edges of a row close up around the torus: essential
+    // (non-separating) 3-cycles. With Φ = π/2 everywhere they sum to 3π/2 ≥ π but are not
+    // null-homotopic, so Thurston's conditions hold; faces are the only other 3-cycles.
+    let mesh = flat_torus(3, 4).unwrap().mesh;
+    let cycles = count_three_cycles(&mesh);
+    assert!(
+        cycles > mesh.n_faces(),
+        "{cycles} 3-cycles, {} faces",
+        mesh.n_faces()
+    );
+    let n = mesh.n_vertices();
+    let p = CirclePattern::new(
+        mesh.clone(),
+        vec![rat(1, 2); mesh.n_edges()],
+        vec![Some(rat(2, 1)); n],
+    )
+    .unwrap();
+    let report = check_thurston(&p.mesh, &p.phi).unwrap();
+    assert_eq!(report.three_cycles, cycles);
+    assert!(report.holds(), "{:?}", report.violations);
+    // Control: the split torus (a separating 3-cycle) at the same angles is a violation.
+    let (q, _) = torus_problem(&rat(1, 2));
+    assert!(!check_thurston(&q.mesh, &q.phi).unwrap().holds());
+}
