@@ -112,6 +112,10 @@ int main(int argc, char** argv) {
         {"square, other diagonal (a tie flip)", flip_claim(other_diagonal("2")), "holds", 0},
         {"square, other diagonal of squared length 3", flip_claim(other_diagonal("3")), "refuted", 1},
         {"malformed claim", R"({"penner_claim": 1, "kind": "cone_angles"})", "bad_input", 3},
+        {"Lobachevsky: L(1/2) = Cl2(1)/2",
+         R"({"penner_claim": 1, "kind": "lobachevsky", "x": "0.5",)"
+         R"( "y": "0.506979566180384252147287169443", "epsilon": "1e-25"})",
+         "holds", 0},
     };
     int failures = 0;
     for (const auto& c : cases) {

@@ -253,5 +253,21 @@ pub fn certify(claim: &Claim) -> Result<Answer, Unsupported> {
             claim, *ptolemy, result, epsilon,
         )),
         Assertion::IntrinsicDelaunay => Ok(intrinsic_delaunay(claim)),
+        Assertion::Lobachevsky { x, y, epsilon } => {
+            // Enclosure of Л over the outward-rounded argument (proofs/B52).
+            let mut enclose = |p| {
+                vec![crate::special::lobachevsky_enclosure(
+                    &Interval::from_rational(x, p),
+                )]
+            };
+            let b = within_all(
+                &mut enclose,
+                std::slice::from_ref(y),
+                epsilon,
+                START_BITS,
+                claim.max_bits,
+            );
+            Ok(summarize(claim, &b, &|_| "x".to_string(), "value of Л(x)"))
+        }
     }
 }

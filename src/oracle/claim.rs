@@ -59,6 +59,16 @@ pub enum Assertion {
         /// Absolute tolerance ε ≥ 0 on log lengths.
         epsilon: Rational,
     },
+    /// `lobachevsky`: `|Л(x) − y| ≤ epsilon` for Lobachevsky's function
+    /// (MATH.md §7, [`crate::special::lobachevsky`]); about no surface.
+    Lobachevsky {
+        /// The argument.
+        x: Rational,
+        /// The claimed value.
+        y: Rational,
+        /// Absolute tolerance ε ≥ 0.
+        epsilon: Rational,
+    },
 }
 
 impl Assertion {
@@ -70,6 +80,7 @@ impl Assertion {
             Assertion::ConeAngles { .. } => "cone_angles",
             Assertion::CotanLaplacian { .. } => "cotan_laplacian",
             Assertion::ConformalEquivalence { .. } => "conformal_equivalence",
+            Assertion::Lobachevsky { .. } => "lobachevsky",
         }
     }
 }
@@ -79,7 +90,8 @@ impl Assertion {
 pub struct Claim {
     /// Optional identifier, echoed in the answer.
     pub id: Option<String>,
-    /// The surface the claim is about.
+    /// The surface the claim is about; for `lobachevsky` claims, which concern no surface,
+    /// the regular tetrahedron as a placeholder that no evaluation reads.
     pub surface: Surface,
     /// What is claimed.
     pub assertion: Assertion,
@@ -150,13 +162,46 @@ const COMMON_FIELDS: [&str; 5] = ["penner_claim", "id", "kind", "surface", "max_
 
 /// The claim kinds and the fields each may carry besides [`COMMON_FIELDS`]
 /// (`schema/claim-v1.schema.json`).
-const KIND_FIELDS: [(&str, &[&str]); 5] = [
+const KIND_FIELDS: [(&str, &[&str]); 6] = [
     ("intrinsic_delaunay", &[]),
     ("delaunay_flip", &["flips", "result", "epsilon"]),
     ("cone_angles", &["angles", "epsilon"]),
     ("cotan_laplacian", &["weights", "epsilon"]),
     ("conformal_equivalence", &["target", "u", "epsilon"]),
+    ("lobachevsky", &["x", "y", "epsilon"]),
 ];
+
+/// The placeholder surface of claims about no surface (see [`Claim::surface`]).
+fn no_surface() -> Result<Surface, ClaimError> {
+    Surface::from_embedded("no surface", crate::mesh::builders::tetrahedron())
+        .map_err(|e| err(format!("internal placeholder surface: {e}")))
+}
+
+/// A `lobachevsky` claim (fields already checked): `x`, `y`, `epsilon`, no surface.
+fn lobachevsky_claim(v: &Value, id: Option<String>, max_bits: u32) -> Result<Claim, ClaimError> {
+    if v.get("surface").is_some() {
+        return Err(err(
+            "surface: not a field of lobachevsky claims (they concern no surface)",
+        ));
+    }
+    Ok(Claim {
+        id,
+        surface: no_surface()?,
+        assertion: Assertion::Lobachevsky {
+            x: number_at(v, "x")?,
+            y: number_at(v, "y")?,
+            epsilon: epsilon(v)?,
+        },
+        max_bits,
+    })
+}
+
+fn number_at(v: &Value, key: &str) -> Result<Rational, ClaimError> {
+    let x = v
+        .get(key)
+        .ok_or_else(|| err(format!("{key}: required for this claim kind")))?;
+    Ok(exact_number(x, key)?)
+}
 
 /// Refuse any field a claim of `kind` does not have: a misspelt optional field (say
 /// `epsilom`) would otherwise be ignored and its default answer a different question.
@@ -236,11 +281,14 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
     let kind = v
         .get("kind")
         .and_then(Value::as_str)
-        .ok_or_else(|| err("kind: required, one of intrinsic_delaunay, delaunay_flip, cone_angles, cotan_laplacian, conformal_equivalence"))?;
+        .ok_or_else(|| err("kind: required, one of intrinsic_delaunay, delaunay_flip, cone_angles, cotan_laplacian, conformal_equivalence, lobachevsky"))?;
     let Some((_, own)) = KIND_FIELDS.iter().find(|(k, _)| *k == kind) else {
         return Err(err(format!("kind: unknown claim kind {kind:?}")));
     };
     check_fields(obj, kind, own)?;
+    if kind == "lobachevsky" {
+        return lobachevsky_claim(v, id, max_bits);
+    }
     let surface = surface_at(v, "surface", "the surface the claim is about")?;
     let assertion = match kind {
         "intrinsic_delaunay" => Assertion::IntrinsicDelaunay,

@@ -17,6 +17,7 @@ pub mod registry;
 pub mod checks;
 pub mod checks_circles;
 pub mod checks_extra;
+pub mod checks_lobachevsky;
 pub mod controls;
 /// Vertex-fixing comparison of triangulations, kept here under its former path.
 pub use crate::mesh::relabel;

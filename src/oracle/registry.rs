@@ -54,6 +54,7 @@ macro_rules! at_precision {
 pub fn catalogue() -> Vec<Check> {
     let mut all = super::checks::entries();
     all.extend(super::checks_circles::entries());
+    all.extend(super::checks_lobachevsky::entries());
     all.sort_by_key(|c| c.id);
     all
 }

@@ -1,7 +1,16 @@
 //! Special functions generic over [`Real`](crate::scalar::Real): Lobachevsky's function `Л`
 //! and Clausen's `Cl₂` (MATH.md §7, notes §1.6.3), the base of the hyperbolic volumes and
-//! of the discrete-uniformization energy.
+//! of the discrete-uniformization energy. Accuracy and enclosure bounds: proofs/B52, B53.
 
+mod coefficients;
+mod enclosure;
+mod eval;
+mod fast_f64;
 pub mod lobachevsky;
+mod reduce;
+pub mod reference;
+mod series;
 
+pub use enclosure::lobachevsky_enclosure;
 pub use lobachevsky::{clausen2, ideal_tetrahedron_volume, lobachevsky};
+pub use reference::lobachevsky_tangent_series;

@@ -29,6 +29,7 @@ pub mod t23_euclidean_flip_cone_metric;
 pub mod t27_shear_log_cross_ratio;
 pub mod t28_ptolemy_flip;
 pub mod t29_euclidean_ptolemy_cocircular;
+pub mod t30_lobachevsky;
 pub mod t34_steiner_rivin;
 pub mod t35_definition_two;
 pub mod t36_harmonic_embedding;

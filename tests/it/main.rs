@@ -6,6 +6,7 @@ mod circles_flow;
 mod circles_harmonic;
 mod circles_pack;
 mod claims;
+mod claims_lobachevsky;
 mod cli;
 mod cli_controls;
 mod cli_delaunay;
@@ -46,6 +47,7 @@ mod scalar_dd_edges;
 mod scalar_dd_exp;
 mod scalar_dd_reduction;
 mod scalar_nearest;
+mod special;
 #[cfg(feature = "strategies")]
 mod strategies;
 #[allow(dead_code)] // helpers used by some areas only

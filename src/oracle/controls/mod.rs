@@ -23,6 +23,7 @@ use rug::Rational;
 pub mod circles;
 pub mod conformal;
 pub mod flips;
+pub mod lobachevsky;
 pub mod metric;
 
 /// The relative perturbation of a length (or squared length) used by the metric controls:
@@ -63,6 +64,7 @@ pub fn controls() -> Vec<Check> {
     all.extend(conformal::controls());
     all.extend(flips::controls());
     all.extend(circles::controls());
+    all.extend(lobachevsky::controls());
     all.sort_by_key(|c| c.id);
     all
 }
