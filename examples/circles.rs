@@ -55,21 +55,20 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let p = CirclePattern::new(mesh, phi, vec![Some(Rational::from(2)); n])?;
         let thurston = check_thurston(&p.mesh, &p.phi)?;
         let flow = ricci_flow::<f64>(&p, &vec![0.0; n], 1e-12, 2000, false);
-        let outcome = match flow {
-            Ok(s) => format!(
+        let outcome = if let Ok(s) = flow {
+            format!(
                 "flow converges in {} steps (rate {:.3})",
                 s.iterations,
                 convergence_rate(&s.history, &s.times).unwrap_or(f64::NAN)
-            ),
-            Err(_) => {
-                let s = ricci_flow::<f64>(&p, &vec![0.0; n], 0.0, 2000, true)?;
-                let mean = s.u.iter().sum::<f64>() / n as f64;
-                format!(
-                    "flow does not converge: log(r_v/r̄) = {:.1} at t = {:.1}",
-                    s.u[v] - mean,
-                    s.times.last().copied().unwrap_or(0.0)
-                )
-            }
+            )
+        } else {
+            let s = ricci_flow::<f64>(&p, &vec![0.0; n], 0.0, 2000, true)?;
+            let mean = s.u.iter().sum::<f64>() / n as f64;
+            format!(
+                "flow does not converge: log(r_v/r̄) = {:.1} at t = {:.1}",
+                s.u[v] - mean,
+                s.times.last().copied().unwrap_or(0.0)
+            )
         };
         println!(
             "torus, {what:<20} Thurston violations: {}; {outcome}",

@@ -6,6 +6,7 @@ use super::files::{create_new, emit};
 use super::input::load_case;
 use penner::circles::pack::pack;
 use penner::circles::svg::render_svg;
+use std::fmt::Write as _;
 use std::io::Write;
 use std::path::Path;
 
@@ -24,11 +25,16 @@ pub fn run(path: &Path, svg: Option<&Path>) -> Result<u8, CliError> {
         p.residual
     );
     match &p.certificate {
-        Ok(c) => text.push_str(&format!(
-            "certified (B94): the exact packing is within {:.1e} in log-radius (λ ≥ {:.2e})\n",
-            c.radius, c.lambda
-        )),
-        Err(why) => text.push_str(&format!("not certified: {why}\n")),
+        Ok(c) => {
+            let _ = writeln!(
+                text,
+                "certified (B94): the exact packing is within {:.1e} in log-radius (λ ≥ {:.2e})",
+                c.radius, c.lambda
+            );
+        }
+        Err(why) => {
+            let _ = writeln!(text, "not certified: {why}");
+        }
     }
     if let Some(out) = svg {
         let doc = render_svg(&p.pattern.mesh, &p.lengths(), &p.radii());
@@ -39,7 +45,7 @@ pub fn run(path: &Path, svg: Option<&Path>) -> Result<u8, CliError> {
                 path: out.to_path_buf(),
                 reason: e.to_string(),
             })?;
-        text.push_str(&format!("wrote {}\n", out.display()));
+        let _ = writeln!(text, "wrote {}", out.display());
     }
     emit(&text)?;
     Ok(if p.certificate.is_ok() {

@@ -34,7 +34,7 @@ fn torus_problem(q: &Rational) -> (CirclePattern, usize) {
     let (mesh, v, link) = split_torus();
     let mut phi = vec![rat(0, 1); mesh.n_edges()];
     for e in link {
-        phi[e] = q.clone();
+        phi[e].clone_from(q);
     }
     let n = mesh.n_vertices();
     (

@@ -79,10 +79,11 @@ fn disk_packings_close_up_touch_and_do_not_overlap() {
 
 /// A 3×3 grid disk with one diagonal flipped per row, as OBJ.
 fn grid_obj() -> String {
+    use std::fmt::Write as _;
     let mut s = String::new();
     for j in 0..4 {
         for i in 0..4 {
-            s.push_str(&format!("v {i} {j} 0\n"));
+            let _ = writeln!(s, "v {i} {j} 0");
         }
     }
     for j in 0..3 {
@@ -90,9 +91,9 @@ fn grid_obj() -> String {
             let a = i + 4 * j + 1;
             let (b, c, d) = (a + 1, a + 5, a + 4);
             if (i + j) % 2 == 0 {
-                s.push_str(&format!("f {a} {b} {c}\nf {a} {c} {d}\n"));
+                let _ = writeln!(s, "f {a} {b} {c}\nf {a} {c} {d}");
             } else {
-                s.push_str(&format!("f {a} {b} {d}\nf {b} {c} {d}\n"));
+                let _ = writeln!(s, "f {a} {b} {d}\nf {b} {c} {d}");
             }
         }
     }
