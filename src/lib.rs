@@ -10,6 +10,7 @@
 //! [`predicates`] → `algorithms` → `theorems` → `oracle` → the `penner` binary.
 
 pub mod algorithms;
+pub mod circles;
 pub mod geometry;
 pub mod io;
 pub mod mesh;

@@ -106,6 +106,15 @@ pub enum Command {
         #[arg(short, long)]
         output: Option<PathBuf>,
     },
+    /// The tangency circle packing of a surface's combinatorics (disk: boundary radii 1;
+    /// sphere: punctured at v0), certified, optionally drawn as SVG.
+    Pack {
+        /// The surface file.
+        surface: PathBuf,
+        /// Write an SVG picture of the laid-out packing to this new file.
+        #[arg(long, value_name = "FILE")]
+        svg: Option<PathBuf>,
+    },
     /// The verification report on the built-in corpus (what `penner` alone runs).
     Report {
         /// Comma list of precisions.

@@ -8,6 +8,7 @@ mod error;
 mod files;
 mod input;
 mod output;
+mod pack;
 mod replay;
 mod report;
 mod uniformize;
@@ -53,6 +54,7 @@ pub fn main() -> ExitCode {
             lengths: lengths.as_deref(),
         }),
         Some(Command::Replay { file, json }) => replay::run(&file, json),
+        Some(Command::Pack { surface, svg }) => pack::run(&surface, svg.as_deref()),
         Some(Command::Certify { claim }) => certify::run(&claim),
         Some(Command::Uniformize {
             surface,

@@ -16,6 +16,7 @@ pub mod precision;
 pub mod registry;
 // After `registry`, whose `at_precision!` macro it uses.
 pub mod checks;
+pub mod checks_circles;
 pub mod checks_energy;
 pub mod checks_extra;
 pub mod checks_lobachevsky;

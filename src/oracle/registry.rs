@@ -53,6 +53,7 @@ macro_rules! at_precision {
 /// Every check this build can run, in catalogue order.
 pub fn catalogue() -> Vec<Check> {
     let mut all = super::checks::entries();
+    all.extend(super::checks_circles::entries());
     all.extend(super::checks_lobachevsky::entries());
     all.extend(super::checks_energy::entries());
     all.sort_by_key(|c| c.id);

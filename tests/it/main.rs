@@ -1,6 +1,10 @@
 //! The integration test crate: one module per area.
 
 mod adversarial_gen;
+mod circles;
+mod circles_flow;
+mod circles_harmonic;
+mod circles_pack;
 mod claims;
 mod claims_energy;
 mod claims_lobachevsky;

@@ -20,6 +20,7 @@ use crate::predicates::delaunay::QuadEdges;
 use crate::theorems::Verdict;
 use rug::Rational;
 
+pub mod circles;
 pub mod conformal;
 pub mod energy;
 pub mod flips;
@@ -64,6 +65,7 @@ pub fn controls() -> Vec<Check> {
     all.extend(conformal::controls());
     all.extend(flips::controls());
     all.extend(energy::controls());
+    all.extend(circles::controls());
     all.extend(lobachevsky::controls());
     all.sort_by_key(|c| c.id);
     all

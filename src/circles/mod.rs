@@ -1,0 +1,34 @@
+//! Circle patterns and circle packings (notes Part II §1.4, Eq. 9; MATH.md §8): a circle of
+//! radius `r_i = e^{u_i}` at every vertex, an intersection angle `Φ_e ∈ [0, π/2]` on every
+//! edge (0 tangent, π/2 orthogonal), and the Euclidean metric they induce.
+//!
+//! - [`metric`]: lengths from radii and angles (Euclidean, inversive distance,
+//!   hyperbolic), corner and cone angles, generic over [`Real`](crate::scalar::Real) —
+//!   evaluated on [`Interval`](crate::scalar::Interval)s they are certified enclosures.
+//! - [`jacobian`]: `∂θ/∂u` from the power centres of the faces (symmetric, zero row sums).
+//! - [`pattern`]: a problem (mesh, angles `Φ`, target cone angles `Θ`) with typed errors.
+//! - [`linalg`]: dense Cholesky generic over `Real`, and its interval form.
+//! - [`solve`]: Newton on the convex energy and the combinatorial Ricci flow (Chow–Luo).
+//! - [`certify`]: a ball around a computed solution on which the grounded Hessian is proved
+//!   positive definite and which provably contains a solution (T09).
+//! - [`thurston`]: Thurston's 3- and 4-cycle conditions (T10).
+//! - [`layout`], [`svg`], [`pack`]: planar layouts, pictures, and the packing of a surface
+//!   that `penner pack` draws.
+//! - [`harmonic`]: harmonic maps of disks to convex polygons (T36).
+//! - [`rivin`]: Rivin weights of ideal polyhedra and Farkas certificates of their
+//!   infeasibility (T34).
+
+pub mod certify;
+pub mod harmonic;
+pub mod jacobian;
+pub mod layout;
+pub mod linalg;
+pub mod metric;
+pub mod pack;
+pub mod pattern;
+pub mod rivin;
+pub mod solve;
+pub mod svg;
+
+pub mod thurston;
+pub use pattern::{CirclePattern, PatternError};
