@@ -4,7 +4,7 @@
 
 use super::error::{code, CliError};
 use super::files::{create_new, read_text};
-use super::input::load_flip_case;
+use super::input::{load_flip_case, FlipCase};
 use penner::io::json::exact_number;
 use penner::uniformization::certificate::{prove, CertificateOutcome};
 use penner::uniformization::claim_form::to_claim;
@@ -68,14 +68,37 @@ fn read_targets(path: &Path, n: usize) -> Result<Targets, CliError> {
     Ok(Targets::from_multiples_of_pi(q))
 }
 
+/// The triangulation and its binary64 lengths, after dividing the surface by an exact power
+/// of two `2^shift` when its lengths are far from 1 (`io::Surface::normalized_scale`, as the
+/// check registry does): a surface scaled by 2^±1000 has normal binary64 lengths but squared
+/// lengths outside binary64's range. Uniformization is scale invariant (θ depends on
+/// ratios of lengths), so `u` is the same for both.
+fn scaled_input(case: FlipCase) -> (penner::mesh::Mesh, Vec<f64>, i64) {
+    let in_range = |l: &[f64]| {
+        l.iter()
+            .all(|&x| x.is_finite() && (f64::powi(2.0, -100)..=f64::powi(2.0, 100)).contains(&x))
+    };
+    let lengths: Vec<f64> = case.lengths::<f64>(());
+    if in_range(&lengths) {
+        return (case.mesh().clone(), lengths, 0);
+    }
+    let surface = match case {
+        FlipCase::Exact(s) => s,
+        FlipCase::Decimal(d) => d.into_surface(),
+    };
+    match surface.normalized_scale() {
+        Some((scaled, k)) => (scaled.mesh.clone(), scaled.lengths::<f64>(()), k),
+        None => (surface.mesh.clone(), lengths, 0),
+    }
+}
+
 /// Run `penner uniformize`.
 #[allow(clippy::too_many_lines)] // solve, refine, certify and write, in order
 pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     let (bits, tolerance) = bits_and_tolerance(o.precision)?;
     let shown = o.path.display().to_string();
     let case = load_flip_case(o.path)?;
-    let mesh = case.mesh().clone();
-    let lengths: Vec<f64> = case.lengths::<f64>(());
+    let (mesh, lengths, shift) = scaled_input(case);
     let targets =
         match (o.targets, o.flat) {
             (Some(_), true) => {
@@ -113,6 +136,12 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     )
     .map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
     let mut out = String::new();
+    if shift != 0 {
+        let _ = writeln!(
+            out,
+            "{shown}: lengths divided by 2^{shift} (exactly) before solving: the cone angles and u do not change with the scale, and the certificate is about the rescaled surface"
+        );
+    }
     let _ = writeln!(
         out,
         "{shown}: {} Euclidean flips to intrinsic Delaunay; {} Newton steps, {} Ptolemy flips (per step: {:?})",

@@ -8,6 +8,7 @@ use penner::io::{json, Metric, Surface};
 use penner::mesh::Mesh;
 use rug::Rational;
 use serde_json::Value;
+use std::fmt::Write as _;
 
 fn surface_file(dir: &std::path::Path, name: &str, m: Mesh, l: &[f64]) -> String {
     let metric = Metric::Lengths(l.iter().map(|&x| Rational::from_f64(x).unwrap()).collect());
@@ -137,4 +138,77 @@ fn t24_cli_uniformize_bad_input_is_typed() {
         text(&out.stdout),
         text(&out.stderr)
     );
+}
+
+/// A regular octahedron written as OFF with every coordinate multiplied by `scale`.
+fn octahedron_off(dir: &std::path::Path, name: &str, scale: f64) -> String {
+    let pts = [
+        [1.0, 0.0, 0.0],
+        [-1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, -1.0, 0.0],
+        [0.0, 0.0, 1.0],
+        [0.0, 0.0, -1.0],
+    ];
+    let faces = [
+        [0, 2, 4],
+        [2, 1, 4],
+        [1, 3, 4],
+        [3, 0, 4],
+        [2, 0, 5],
+        [1, 2, 5],
+        [3, 1, 5],
+        [0, 3, 5],
+    ];
+    let mut t = String::from("OFF\n6 8 0\n");
+    for p in pts {
+        let _ = writeln!(
+            t,
+            "{:e} {:e} {:e}",
+            p[0] * scale,
+            p[1] * scale,
+            p[2] * scale
+        );
+    }
+    for f in faces {
+        let _ = writeln!(t, "3 {} {} {}", f[0], f[1], f[2]);
+    }
+    let p = dir.join(format!("{name}.off"));
+    std::fs::write(&p, t).unwrap();
+    p.display().to_string()
+}
+
+#[test]
+fn t24_cli_uniformize_accepts_surfaces_scaled_by_two_to_the_plus_minus_1000() {
+    let d = scratch("uniformize-scaled");
+    // Θ_i = 4π/3 at each of the six vertices: Σ(2π − Θ_i) = 4π = 2πχ of the sphere.
+    let targets = d.join("targets.json");
+    std::fs::write(
+        &targets,
+        "[\"4/3\",\"4/3\",\"4/3\",\"4/3\",\"4/3\",\"4/3\"]",
+    )
+    .unwrap();
+    let targets = targets.display().to_string();
+    for (name, scale) in [
+        ("unit", 1.0),
+        ("tiny", 2f64.powi(-1000)),
+        ("huge", 2f64.powi(1000)),
+    ] {
+        let surf = octahedron_off(&d, name, scale);
+        let out = penner(&["uniformize", &surf, "--targets", &targets]);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{name}: {}{}",
+            text(&out.stdout),
+            text(&out.stderr)
+        );
+        assert_eq!(text(&out.stdout).contains("divided by 2^"), scale != 1.0);
+    }
+    // Negative control: targets off Gauss–Bonnet are still refused at the extreme scale.
+    let bad = d.join("bad.json");
+    std::fs::write(&bad, "[\"1\",\"4/3\",\"4/3\",\"4/3\",\"4/3\",\"4/3\"]").unwrap();
+    let surf = octahedron_off(&d, "tiny-bad", 2f64.powi(-1000));
+    let out = penner(&["uniformize", &surf, "--targets", &bad.display().to_string()]);
+    assert_eq!(out.status.code(), Some(3), "{}", text(&out.stderr));
 }
