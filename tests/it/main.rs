@@ -4,6 +4,7 @@ mod adversarial_gen;
 mod circles;
 mod circles_flow;
 mod circles_harmonic;
+mod circles_maximal;
 mod circles_pack;
 mod claims;
 mod claims_energy;
