@@ -86,7 +86,13 @@ fn t11_f64_packing_is_certified_at_its_own_tolerance() {
     let p = maximal_disk::<f64>(&mesh, (), &Options::default()).unwrap();
     let circles = exact_circles(&p.circles).unwrap();
     let m = marks(&p.interior);
-    let v = check_packing(&mesh, &circles, &Rational::from((1, 1_000_000_000)), 128, Some(&m));
+    let v = check_packing(
+        &mesh,
+        &circles,
+        &Rational::from((1, 1_000_000_000)),
+        128,
+        Some(&m),
+    );
     assert!(matches!(v, PackingVerdict::Holds { .. }), "{v:?}");
     let v = check_packing(&mesh, &circles, &eps30(), 128, Some(&m));
     assert!(matches!(v, PackingVerdict::Fails(_)), "{v:?}");
@@ -109,7 +115,9 @@ fn b97_corner_angle_matches_the_hyperbolic_law_of_cosines() {
     let p = prec(256);
     let mut rng = ChaCha8Rng::seed_from_u64(97);
     for _ in 0..200 {
-        let r: Vec<f64> = (0..3).map(|_| 10f64.powf(rng.gen_range(-3.0..1.0))).collect();
+        let r: Vec<f64> = (0..3)
+            .map(|_| 10f64.powf(rng.gen_range(-3.0..1.0)))
+            .collect();
         let rm: Vec<Mpfr> = r.iter().map(|&x| Mpfr::from_f64(x, p)).collect();
         let t: Vec<Mpfr> = rm
             .iter()
@@ -180,8 +188,15 @@ fn b97_jacobian_is_symmetric_and_matches_central_differences() {
         for v in (0..n).filter(|&v| interior[v]) {
             let fd = ((plus[v].clone() - &minus[v]) / &(h.clone() * &h.lit(2.0))).approx_f64();
             let tol = 2f64.powi(-30) * (1.0 + j[v][w].abs());
-            assert!((fd - j[v][w]).abs() <= tol, "∂θ_{v}/∂u_{w}: {} vs {fd}", j[v][w]);
-            assert!((j[v][w] - j[w][v]).abs() <= tol, "not symmetric at ({v}, {w})");
+            assert!(
+                (fd - j[v][w]).abs() <= tol,
+                "∂θ_{v}/∂u_{w}: {} vs {fd}",
+                j[v][w]
+            );
+            assert!(
+                (j[v][w] - j[w][v]).abs() <= tol,
+                "not symmetric at ({v}, {w})"
+            );
             // Negative control: an entry off by 10⁻⁶ relative (or absolute) is caught.
             let wrong = j[v][w] + 1e-6 * (1.0 + j[v][w].abs());
             assert!((fd - wrong).abs() > tol);
@@ -316,7 +331,7 @@ fn t11_sphere_packings_by_caps_are_certified() {
     }
     let one = ia[0][0].one_like();
     assert!(gap(by_distance[1].as_ref().unwrap(), &one) < 1e-25); // tangent
-    // Negative control: one cap changed changes its inversive distances.
+                                                                  // Negative control: one cap changed changes its inversive distances.
     let mut caps = a.caps.clone();
     caps[5].height = caps[5].height.clone() * &caps[5].height.lit(1.001);
     let ic = inversive_matrix(&caps);
@@ -523,7 +538,13 @@ fn t11_cli_pack_disk_and_sphere() {
         &["--epsilon"],
     );
     assert_refused(
-        &penner(&["pack", a.to_str().unwrap(), "--disk", "-o", js.to_str().unwrap()]),
+        &penner(&[
+            "pack",
+            a.to_str().unwrap(),
+            "--disk",
+            "-o",
+            js.to_str().unwrap(),
+        ]),
         4,
         &["exists"],
     );
