@@ -447,6 +447,26 @@ fn hex_obj(k: i32, scale: f64, shear: f64) -> String {
     s
 }
 
+/// The icosahedron as OBJ.
+fn ico_obj() -> String {
+    use std::fmt::Write as _;
+    let ico = penner::mesh::builders::icosahedron();
+    let mut obj = String::new();
+    for p in &ico.positions {
+        let _ = writeln!(
+            obj,
+            "v {} {} {}",
+            p[0].to_f64(),
+            p[1].to_f64(),
+            p[2].to_f64()
+        );
+    }
+    for f in ico.mesh.face_list() {
+        let _ = writeln!(obj, "f {} {} {}", f[0] + 1, f[1] + 1, f[2] + 1);
+    }
+    obj
+}
+
 #[test]
 fn t11_cli_pack_disk_and_sphere() {
     use crate::support::{assert_refused, penner, scratch, text, write};
@@ -491,15 +511,7 @@ fn t11_cli_pack_disk_and_sphere() {
     let dc = run(&c, "c");
     assert_ne!(dc["radii"], da["radii"]);
     // A sphere: the icosahedron, punctured at v3.
-    let ico = penner::mesh::builders::icosahedron();
-    let mut obj = String::new();
-    for p in &ico.positions {
-        obj += &format!("v {} {} {}\n", p[0].to_f64(), p[1].to_f64(), p[2].to_f64());
-    }
-    for f in ico.mesh.face_list() {
-        obj += &format!("f {} {} {}\n", f[0] + 1, f[1] + 1, f[2] + 1);
-    }
-    let s = write(&dir, "ico.obj", obj.as_bytes());
+    let s = write(&dir, "ico.obj", ico_obj().as_bytes());
     let js = dir.join("ico.json");
     let out = penner(&[
         "pack",

@@ -17,7 +17,7 @@
 //! 1991): `H = −∂θ/∂u` on the interior vertices is positive definite, the Hessian of a
 //! strictly convex energy whose critical point is the packing.
 
-use crate::mesh::Mesh;
+use crate::mesh::{Mesh, Vertex};
 use crate::scalar::Real;
 
 /// `sin²(α/2)` of the angle at the circle `t0` of three mutually tangent hyperbolic circles
@@ -58,7 +58,7 @@ pub fn angle_sums<T: Real>(mesh: &Mesh, t: &[T]) -> Vec<T> {
     };
     let mut theta = vec![zero; mesh.n_vertices()];
     for f in mesh.faces() {
-        let [a, b, c] = mesh.face_vertices(f).map(|v| v.idx());
+        let [a, b, c] = mesh.face_vertices(f).map(Vertex::idx);
         for (x, y, z) in [(a, b, c), (b, c, a), (c, a, b)] {
             theta[x] += &corner_angle(&t[x], &t[y], &t[z]);
         }
@@ -75,7 +75,7 @@ pub fn angle_jacobian_triplets(
 ) -> Vec<(usize, usize, f64)> {
     let mut out = Vec::with_capacity(9 * mesh.n_faces());
     for f in mesh.faces() {
-        let [a, b, c] = mesh.face_vertices(f).map(|v| v.idx());
+        let [a, b, c] = mesh.face_vertices(f).map(Vertex::idx);
         for (x, y, z) in [(a, b, c), (b, c, a), (c, a, b)] {
             if !interior[x] {
                 continue;

@@ -133,7 +133,7 @@ pub fn check_sphere_packing(
         }
     }
     for f in mesh.faces() {
-        let [a, b, c] = mesh.face_vertices(f).map(|v| v.idx());
+        let [a, b, c] = mesh.face_vertices(f).map(Vertex::idx);
         if det(&caps[a].normal, &caps[b].normal, &caps[c].normal) <= 0 {
             fails.push(format!(
                 "face f{} (v{a}, v{b}, v{c}): centres not positively oriented",

@@ -150,15 +150,27 @@ pub fn check_packing(
                 match gap.sign() {
                     Some(Sign::Positive) => {}
                     Some(Sign::Negative) => {
-                        fails.push(format!("v{v}: the circle leaves the unit disk"))
+                        fails.push(format!("v{v}: the circle leaves the unit disk"));
                     }
                     _ => undecided.push(format!("v{v}: inside the unit disk not proved")),
                 }
             }
         }
     }
+    orientation_and_winding(mesh, circles, &mut fails);
+    if !fails.is_empty() {
+        PackingVerdict::Fails(fails)
+    } else if !undecided.is_empty() {
+        PackingVerdict::Undecided(undecided)
+    } else {
+        PackingVerdict::Holds { max_defect }
+    }
+}
+
+/// Conditions 2 and 3 of the module docs, exactly; violations are pushed to `fails`.
+fn orientation_and_winding(mesh: &Mesh, circles: &[ExactCircle], fails: &mut Vec<String>) {
     for f in mesh.faces() {
-        let [a, b, c] = mesh.face_vertices(f).map(|v| v.idx());
+        let [a, b, c] = mesh.face_vertices(f).map(Vertex::idx);
         let s = cross(&circles[a].centre, &circles[b].centre, &circles[c].centre);
         if s <= 0 {
             fails.push(format!(
@@ -181,13 +193,6 @@ pub fn check_packing(
                 ));
             }
         }
-    }
-    if !fails.is_empty() {
-        PackingVerdict::Fails(fails)
-    } else if !undecided.is_empty() {
-        PackingVerdict::Undecided(undecided)
-    } else {
-        PackingVerdict::Holds { max_defect }
     }
 }
 
