@@ -1,5 +1,5 @@
 //! Progress of long checks over their elements: the hook carried by `Settings` is called by
-//! T22, T23 and T29 with monotone counts ending at each stage's total, under the label of
+//! T08, T22, T23 and T29 with monotone counts ending at each stage's total, under the label of
 //! the (check, precision) pair; the binary draws nothing when standard error is a pipe.
 
 use crate::meshgen::icosphere;
@@ -72,12 +72,12 @@ fn progress_hook_counts_are_monotone_and_end_at_the_total() {
         progress: Progress::to(rec.clone()),
         ..Settings::default()
     };
-    let checks = select(&["T22".into(), "T23".into(), "T29".into()]).unwrap();
+    let checks = select(&["T08".into(), "T22".into(), "T23".into(), "T29".into()]).unwrap();
     let rows = run_case(&case, &checks, &[Prec::F64], &settings);
-    assert_eq!(rows.len(), 3);
+    assert_eq!(rows.len(), 4);
     let calls = rec.0.lock().unwrap().clone();
     let by = stages(&calls);
-    for task in ["T22 f64", "T23 f64", "T29 f64"] {
+    for task in ["T08 f64", "T22 f64", "T23 f64", "T29 f64"] {
         assert!(by.keys().any(|(t, _)| t == task), "{task}: {by:?}");
     }
     for (key, counts) in &by {
