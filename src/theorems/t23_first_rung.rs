@@ -150,7 +150,7 @@ pub fn proved<T: Real>(
             touched[replayed.tail(h).idx()] = true;
             touched[replayed.tail(replayed.prev(h)).idx()] = true;
         }
-        let es = q.edges.to_array().map(|x| x.idx());
+        let es = q.edges.to_array().map(Edge::idx);
         let srcs = es.map(|x| source[x]);
         lazy.flips.push(srcs);
         let lq = q.lengths(&fast);

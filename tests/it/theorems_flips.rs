@@ -645,7 +645,7 @@ fn t23_comparisons_refuse_bad_input_without_panicking() {
 
 /// The lengths of a planar quadrilateral with rational corners `p` (`planar_quad`'s mesh),
 /// as square roots of the exact squared lengths in MPFR at 256 bits.
-fn planar_quad_mpfr(p: [[Rational; 2]; 4]) -> (Mesh, Vec<Mpfr>, Edge) {
+fn planar_quad_mpfr(p: &[[Rational; 2]; 4]) -> (Mesh, Vec<Mpfr>, Edge) {
     use penner::scalar::Real;
     let prec = Precision::new(256).unwrap();
     let m = Mesh::from_faces(4, &[[0, 1, 2], [1, 0, 3]]).unwrap();
@@ -719,7 +719,7 @@ fn b84_first_rung_verdicts_equal_the_mpfr_comparison() {
     // inequality is open on f64 enclosures of the 256-bit lengths and certified on the
     // lazily built MPFR ones.
     let r = |n: i64| Rational::from(n);
-    let tiny = Rational::from(Rational::from(1) >> 30u32);
+    let tiny = Rational::from(1) >> 30u32;
     let corners = |dy: &Rational| {
         [
             [r(0), r(0)],
@@ -728,7 +728,7 @@ fn b84_first_rung_verdicts_equal_the_mpfr_comparison() {
             [r(2), r(-1)],
         ]
     };
-    let (m, l, e) = planar_quad_mpfr(corners(&tiny));
+    let (m, l, e) = planar_quad_mpfr(&corners(&tiny));
     let q = QuadEdges::of(&m, e).unwrap();
     let as_f64: Vec<Interval<f64>> = l
         .iter()
@@ -744,7 +744,7 @@ fn b84_first_rung_verdicts_equal_the_mpfr_comparison() {
     // Negative controls: the same quadrilateral with k on the diagonal (a degenerate
     // triangle), and a reflex kite: the rung proves nothing, and the verdict is the MPFR
     // comparison's.
-    let (m, l, e) = planar_quad_mpfr(corners(&r(0)));
+    let (m, l, e) = planar_quad_mpfr(&corners(&r(0)));
     assert!(!proved(&m, &l, &[e], Precision::new(128).unwrap(), &quiet));
     let slow = verify_flip_sequence_on_mpfr(&m, &l, &[e], FlipKind::Euclidean, 128, &quiet);
     assert!(!certified_holds(&slow), "{slow:?}");
@@ -754,12 +754,12 @@ fn b84_first_rung_verdicts_equal_the_mpfr_comparison() {
     );
     // Convex at i by about 2⁻⁶¹ (k at (−1, 1), l at (1 + 2⁻⁶⁰, −1)): the hypotheses hold,
     // but i lies almost on the new edge kl, whose flat triangle's corners are not enclosed.
-    let tiny = Rational::from(Rational::from(1) >> 60u32);
-    let (m, l, e) = planar_quad_mpfr([
+    let tiny = Rational::from(1) >> 60u32;
+    let (m, l, e) = planar_quad_mpfr(&[
         [r(0), r(0)],
         [r(4), r(0)],
         [r(-1), r(1)],
-        [Rational::from(r(1) + &tiny), r(-1)],
+        [r(1) + &tiny, r(-1)],
     ]);
     assert!(!proved(&m, &l, &[e], Precision::new(128).unwrap(), &quiet));
     assert_eq!(
