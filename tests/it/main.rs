@@ -43,6 +43,7 @@ mod never_fails;
 mod oracle;
 mod planar_gen;
 mod predicates_planar;
+mod progress;
 mod registry_extra;
 mod replay_lazy;
 mod scalar_dd;
