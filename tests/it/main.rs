@@ -43,6 +43,7 @@ mod oracle;
 mod planar_gen;
 mod predicates_planar;
 mod registry_extra;
+mod registry_uniformization;
 mod replay_lazy;
 mod scalar_dd;
 mod scalar_dd_div;
