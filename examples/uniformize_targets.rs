@@ -65,12 +65,9 @@ fn torus(faces: u64) -> (meshgen::Embedded, Targets) {
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let kind = args.first().map_or("sphere", String::as_str);
-    let faces: u64 = match args.get(1).map_or(Ok(10_000), |s| s.parse()) {
-        Ok(f) => f,
-        Err(_) => {
-            eprintln!("uniformize_targets: FACES must be a number");
-            return ExitCode::from(3);
-        }
+    let Ok(faces) = args.get(1).map_or(Ok(10_000u64), |s| s.parse()) else {
+        eprintln!("uniformize_targets: FACES must be a number");
+        return ExitCode::from(3);
     };
     let (s, targets) = match kind {
         "sphere" => sphere(faces),

@@ -105,11 +105,11 @@ fn prove_dd(
     tolerance: f64,
 ) -> Result<Proof, CertificateError> {
     let r = refine::<Dd>(sol, (), tolerance, 30)?;
-    let u =
+    let u: Vec<rug::Rational> =
         r.u.iter()
             .map(|x| x.to_rational().unwrap_or_default())
             .collect();
-    certify_near(sol, None, u, r.residual_max(), bits)
+    certify_near(sol, None, &u, r.residual_max(), bits)
 }
 
 /// Run `penner uniformize`.

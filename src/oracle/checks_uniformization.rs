@@ -223,8 +223,7 @@ pub fn t25_pair(case: &Surface, prec: Prec) -> Option<Result<(Verdict, Certified
 
 fn t25(case: &Surface, prec: Prec, _: &Settings) -> Option<Verdict> {
     Some(match t25_pair(case, prec)? {
-        Ok((v, _)) => v,
-        Err(v) => v,
+        Ok((v, _)) | Err(v) => v,
     })
 }
 

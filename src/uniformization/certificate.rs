@@ -119,6 +119,7 @@ pub(crate) struct Prepared {
 /// `Ok(Err(reason))` when a step is not certified. `base0`, when given, encloses the
 /// lengths of `T₀` (e.g. an irrational input metric, flipped to `T₀` in intervals) and
 /// replaces the binary64 `data.l0` (which is still validated) in every enclosure.
+#[allow(clippy::too_many_lines)] // validation, then the three steps of B71, read top to bottom
 pub(crate) fn prepare(
     data: &CertificateData,
     base0: Option<&[I]>,
@@ -427,7 +428,7 @@ pub fn prove_on(
         r.u.iter()
             .map(|x| x.to_rational().unwrap_or_default())
             .collect();
-    certify_near(sol, metric, u, r.residual_max(), bits)
+    certify_near(sol, metric, &u, r.residual_max(), bits)
 }
 
 /// The certificate half of [`prove_on`] for a `u` refined elsewhere (e.g. in double-double,
@@ -438,7 +439,7 @@ pub fn prove_on(
 pub fn certify_near(
     sol: &super::newton::Uniformization,
     metric: Option<&T0Metric>,
-    u: Vec<Rational>,
+    u: &[Rational],
     residual_max: f64,
     bits: u32,
 ) -> Result<Proof, CertificateError> {
@@ -455,7 +456,7 @@ pub fn certify_near(
             l0: sol.initial_lengths.clone(),
             targets: sol.targets.clone(),
             flip_sequence: sol.flip_sequence.clone(),
-            u: u.clone(),
+            u: u.to_vec(),
             radius,
         };
         let outcome = check_certificate_on(&data, metric.map(|m| &m.enclosures[..]), bits)?;
