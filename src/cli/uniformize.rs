@@ -6,8 +6,12 @@ use super::error::{code, CliError};
 use super::files::{create_new, read_text};
 use super::input::{load_flip_case, FlipCase};
 use penner::io::json::exact_number;
-use penner::uniformization::certificate::{prove, CertificateOutcome};
+use penner::scalar::{Dd, Real};
+use penner::uniformization::certificate::{
+    certify_near, prove, CertificateError, CertificateOutcome, Proof,
+};
 use penner::uniformization::claim_form::to_claim;
+use penner::uniformization::refine::refine;
 use penner::uniformization::{uniformize_with_progress, Targets, UniformizeOptions};
 use std::fmt::Write as _;
 use std::io::{IsTerminal, Write};
@@ -28,7 +32,7 @@ pub struct Options<'a> {
 }
 
 /// Interval bits and refinement tolerance of a precision word: `f64` → 1e-10 and `dd` →
-/// 1e-28, certified at 128 bits; `N` → `2^{−(N−56)}` at N bits (MPFR-256: ≈ 6·10⁻⁶¹).
+/// 1e-28 (refined in double-double, [`prove_dd`]), certified at 128 bits; `N` → `2^{−(N−56)}` at N bits (MPFR-256: ≈ 6·10⁻⁶¹).
 fn bits_and_tolerance(p: &str) -> Result<(u32, f64), CliError> {
     match p {
         "f64" => Ok((128, 1e-10)),
@@ -90,6 +94,22 @@ fn scaled_input(case: FlipCase) -> (penner::mesh::Mesh, Vec<f64>, i64) {
         Some((scaled, k)) => (scaled.mesh.clone(), scaled.lengths::<f64>(()), k),
         None => (surface.mesh.clone(), lengths, 0),
     }
+}
+
+/// `--precision dd`: refine in double-double (residuals in `Dd`, the `f64` factor), then
+/// certify the double-double `u` (taken exactly) at `bits` of MPFR interval arithmetic:
+/// double-double has no directed rounding, so it cannot carry the proof itself.
+fn prove_dd(
+    sol: &penner::uniformization::Uniformization,
+    bits: u32,
+    tolerance: f64,
+) -> Result<Proof, CertificateError> {
+    let r = refine::<Dd>(sol, (), tolerance, 30)?;
+    let u: Vec<rug::Rational> =
+        r.u.iter()
+            .map(|x| x.to_rational().unwrap_or_default())
+            .collect();
+    certify_near(sol, None, &u, r.residual_max(), bits)
 }
 
 /// Run `penner uniformize`.
@@ -165,16 +185,28 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     if let Some(b) = &bar {
         b.set_message(format!("refining and certifying at {bits} bits"));
     }
-    let proof =
-        prove(&sol, bits, tolerance).map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
+    let proof = if o.precision == "dd" {
+        prove_dd(&sol, bits, tolerance)
+    } else {
+        prove(&sol, bits, tolerance)
+    }
+    .map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
     if let Some(b) = &bar {
         b.finish_and_clear();
     }
-    let _ = writeln!(
-        out,
-        "converged: max |Θ − θ| = {:e} (f64), {:e} after refinement at {bits} bits",
-        sol.residual_max, proof.residual_max
-    );
+    if o.precision == "dd" {
+        let _ = writeln!(
+            out,
+            "converged: max |Θ − θ| = {:e} (f64), {:e} after refinement in double-double; the certificate runs in {bits}-bit MPFR interval arithmetic (double-double has no directed rounding)",
+            sol.residual_max, proof.residual_max
+        );
+    } else {
+        let _ = writeln!(
+            out,
+            "converged: max |Θ − θ| = {:e} (f64), {:e} after refinement at {bits} bits",
+            sol.residual_max, proof.residual_max
+        );
+    }
     let (status, residual) = match &proof.outcome {
         CertificateOutcome::Holds {
             distance,

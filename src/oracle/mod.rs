@@ -20,6 +20,7 @@ pub mod checks_circles;
 pub mod checks_energy;
 pub mod checks_extra;
 pub mod checks_lobachevsky;
+pub mod checks_uniformization;
 pub mod controls;
 /// Vertex-fixing comparison of triangulations, kept here under its former path.
 pub use crate::mesh::relabel;

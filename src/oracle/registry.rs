@@ -56,6 +56,7 @@ pub fn catalogue() -> Vec<Check> {
     all.extend(super::checks_circles::entries());
     all.extend(super::checks_lobachevsky::entries());
     all.extend(super::checks_energy::entries());
+    all.extend(super::checks_uniformization::entries());
     all.sort_by_key(|c| c.id);
     all
 }

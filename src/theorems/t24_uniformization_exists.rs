@@ -4,8 +4,10 @@
 
 use super::verdict::{Verdict, Witness};
 use crate::mesh::Mesh;
-use crate::uniformization::certificate::{prove, CertificateOutcome, Proof};
-use crate::uniformization::{uniformize, Targets, UniformizeError, UniformizeOptions};
+use crate::uniformization::certificate::{prove_on, CertificateOutcome, Proof, T0Metric};
+use crate::uniformization::{
+    uniformize, Targets, Uniformization, UniformizeError, UniformizeOptions,
+};
 
 /// The outcome of [`check_existence`]: the verdict and, when the solve converged, the
 /// proof attempt.
@@ -27,6 +29,24 @@ pub fn check_existence(
     bits: u32,
     tolerance: f64,
 ) -> Result<Existence, UniformizeError> {
+    check_existence_on(mesh, lengths, targets, bits, tolerance, None)
+}
+
+/// The input metric on `T₀` at the certificate's precision, from the `f64` solution (see
+/// [`crate::uniformization::input_metric::input_on_t0`]); `Err(reason)` when unavailable.
+pub type InputOnT0<'a> = &'a dyn Fn(&Uniformization) -> Result<T0Metric, String>;
+
+/// [`check_existence`] about an input metric that `lengths` only round: the solve runs on
+/// `lengths`, the refinement and the certificate on `input`'s lengths of `T₀` (B71, B73),
+/// so `Holds` (certified) is a proof for the input itself.
+pub fn check_existence_on(
+    mesh: &Mesh,
+    lengths: &[f64],
+    targets: &Targets,
+    bits: u32,
+    tolerance: f64,
+    input: Option<InputOnT0<'_>>,
+) -> Result<Existence, UniformizeError> {
     let sol = uniformize(mesh, lengths, targets, &UniformizeOptions::default())?;
     let undecided = |detail: String| Verdict::Undecided {
         bits_tried: bits,
@@ -42,7 +62,16 @@ pub fn check_existence(
             proof: None,
         });
     }
-    let proof = match prove(&sol, bits, tolerance) {
+    let metric = match input.map(|f| f(&sol)).transpose() {
+        Ok(m) => m,
+        Err(reason) => {
+            return Ok(Existence {
+                verdict: undecided(reason),
+                proof: None,
+            })
+        }
+    };
+    let proof = match prove_on(&sol, metric.as_ref(), bits, tolerance) {
         Ok(p) => p,
         Err(e) => {
             return Ok(Existence {

@@ -3,9 +3,10 @@
 //! different starts, each certified (B71), agree after subtracting `u` at the grounded
 //! vertex of each component, within the sum of their certified distances.
 
+use super::t24_uniformization_exists::InputOnT0;
 use super::verdict::{Verdict, Witness};
 use crate::mesh::Mesh;
-use crate::uniformization::certificate::{prove, CertificateOutcome, Proof};
+use crate::uniformization::certificate::{prove_on, CertificateOutcome, Proof};
 use crate::uniformization::components::Components;
 use crate::uniformization::{uniformize, Targets, UniformizeError, UniformizeOptions};
 use rug::Rational;
@@ -18,6 +19,7 @@ fn certified(
     start: Option<Vec<f64>>,
     bits: u32,
     tolerance: f64,
+    input: Option<InputOnT0<'_>>,
 ) -> Result<Result<(Proof, f64), String>, UniformizeError> {
     let opts = UniformizeOptions {
         start,
@@ -27,7 +29,11 @@ fn certified(
     if !sol.converged() {
         return Ok(Err(format!("the f64 solve stopped: {:?}", sol.stop)));
     }
-    let proof = match prove(&sol, bits, tolerance) {
+    let metric = match input.map(|f| f(&sol)).transpose() {
+        Ok(m) => m,
+        Err(reason) => return Ok(Err(reason)),
+    };
+    let proof = match prove_on(&sol, metric.as_ref(), bits, tolerance) {
         Ok(p) => p,
         Err(e) => return Ok(Err(e.to_string())),
     };
@@ -91,19 +97,42 @@ pub fn check_uniqueness(
     bits: u32,
     tolerance: f64,
 ) -> Result<Verdict, UniformizeError> {
-    let a = certified(mesh, lengths, targets, None, bits, tolerance)?;
-    let b = certified(mesh, lengths, targets, Some(start), bits, tolerance)?;
+    let (verdict, _) = check_uniqueness_on(mesh, lengths, targets, start, bits, tolerance, None)?;
+    Ok(verdict)
+}
+
+/// Two certified solutions of one surface, with their certified distances.
+pub type Certified2 = Option<((Proof, f64), (Proof, f64))>;
+
+/// [`check_uniqueness`] about an input metric that `lengths` only round (see
+/// [`super::t24_uniformization_exists::check_existence_on`]); also returns the two
+/// certified solutions when both were certified.
+pub fn check_uniqueness_on(
+    mesh: &Mesh,
+    lengths: &[f64],
+    targets: &Targets,
+    start: Vec<f64>,
+    bits: u32,
+    tolerance: f64,
+    input: Option<InputOnT0<'_>>,
+) -> Result<(Verdict, Certified2), UniformizeError> {
+    let a = certified(mesh, lengths, targets, None, bits, tolerance, input)?;
+    let b = certified(mesh, lengths, targets, Some(start), bits, tolerance, input)?;
     match (a, b) {
         (Ok((p1, d1)), Ok((p2, d2))) => {
-            Ok(compare_normalized(mesh, &p1.data.u, d1, &p2.data.u, d2))
+            let v = compare_normalized(mesh, &p1.data.u, d1, &p2.data.u, d2);
+            Ok((v, Some(((p1, d1), (p2, d2)))))
         }
-        (Err(r), _) | (_, Err(r)) => Ok(Verdict::Undecided {
-            bits_tried: bits,
-            witnesses: vec![Witness {
-                element: "surface".into(),
-                detail: r,
-                value: f64::NAN,
-            }],
-        }),
+        (Err(r), _) | (_, Err(r)) => Ok((
+            Verdict::Undecided {
+                bits_tried: bits,
+                witnesses: vec![Witness {
+                    element: "surface".into(),
+                    detail: r,
+                    value: f64::NAN,
+                }],
+            },
+            None,
+        )),
     }
 }

@@ -19,7 +19,7 @@ use super::components::Components;
 use super::error::UniformizeError;
 use super::hessian::{grounded_hessian, newton_direction, CholeskyCache};
 use super::newton::validate_input;
-use super::refine::{carry_lengths, scaled, RefineError};
+use super::refine::{carry_lengths, carry_lengths_from, scaled, RefineError};
 use super::targets::Targets;
 use super::verified_cholesky::{lambda_min_lower_bound, up, SymmetricLower};
 use crate::geometry::cone_angles::cone_angles;
@@ -116,9 +116,13 @@ pub(crate) struct Prepared {
 }
 
 /// Validate `data`, carry the lengths, and check the Penner cell on the box (B71 step 1);
-/// `Ok(Err(reason))` when a step is not certified.
+/// `Ok(Err(reason))` when a step is not certified. `base0`, when given, encloses the
+/// lengths of `T₀` (e.g. an irrational input metric, flipped to `T₀` in intervals) and
+/// replaces the binary64 `data.l0` (which is still validated) in every enclosure.
+#[allow(clippy::too_many_lines)] // validation, then the three steps of B71, read top to bottom
 pub(crate) fn prepare(
     data: &CertificateData,
+    base0: Option<&[I]>,
     bits: u32,
 ) -> Result<Result<Prepared, String>, CertificateError> {
     validate_input(&data.t0, &data.l0, &data.targets)?;
@@ -135,7 +139,18 @@ pub(crate) fn prepare(
     let prec =
         Precision::new(u64::from(bits)).map_err(|_| CertificateError::Bits(u64::from(bits)))?;
     // Base lengths of T, enclosed (T28: Ptolemy flips commute with scaling).
-    let (mesh, base) = carry_lengths::<I>(&data.t0, &data.l0, &data.flip_sequence, prec)?;
+    let (mesh, base) = match base0 {
+        None => carry_lengths::<I>(&data.t0, &data.l0, &data.flip_sequence, prec)?,
+        Some(b) => {
+            if b.len() != data.t0.n_edges() {
+                return Err(CertificateError::Input(UniformizeError::LengthCount {
+                    expected: data.t0.n_edges(),
+                    got: b.len(),
+                }));
+            }
+            carry_lengths_from(&data.t0, b.to_vec(), &data.flip_sequence)?
+        }
+    };
     if let Some(e) = base.iter().position(|x| x.sign() != Some(Sign::Positive)) {
         return Ok(Err(format!(
             "carried length of e{e} not enclosed as positive"
@@ -221,11 +236,32 @@ pub fn check_certificate(
     data: &CertificateData,
     bits: u32,
 ) -> Result<CertificateOutcome, CertificateError> {
-    let p = match prepare(data, bits)? {
+    check_certificate_on(data, None, bits)
+}
+
+/// [`check_certificate`] for the metric enclosed by `base0` on `T₀` (see [`prepare`]'s
+/// `base0`): a `Holds` is then a proof for every metric in the enclosure, in particular
+/// for an exact input metric that binary64 does not represent. proof: B71
+pub fn check_certificate_on(
+    data: &CertificateData,
+    base0: Option<&[I]>,
+    bits: u32,
+) -> Result<CertificateOutcome, CertificateError> {
+    let p = match prepare(data, base0, bits)? {
         Ok(p) => p,
         Err(reason) => return Ok(CertificateOutcome::Undecided { reason }),
     };
     let undecided = |reason: String| Ok(CertificateOutcome::Undecided { reason });
+    if p.free.is_empty() {
+        // Every vertex is grounded (one-vertex components): the box is the point `u`, and
+        // Gauss–Bonnet makes the residual at a grounded vertex zero (B71, "The grounded
+        // vertex"), so `u` itself is an exact solution.
+        return Ok(CertificateOutcome::Holds {
+            distance: 0.0,
+            mu: f64::INFINITY,
+            residual: 0.0,
+        });
+    }
     let prec = p.prec;
     // 2. The Hessian over the box: midpoint and radius matrices of −L.
     let mut entries = Vec::new();
@@ -352,45 +388,87 @@ pub struct Proof {
     pub residual_max: f64,
 }
 
+/// The lengths of `T₀` of a metric the `f64` solve saw rounded: at one MPFR precision,
+/// as MPFR numbers (for the refinement) and as enclosures (for the certificate).
+#[derive(Clone, Debug)]
+pub struct T0Metric {
+    /// The lengths of `T₀`, rounded to the precision.
+    pub values: Vec<Mpfr>,
+    /// Enclosures of the exact lengths of `T₀`.
+    pub enclosures: Vec<Interval<Mpfr>>,
+}
+
 /// Refine `sol` at `bits` of MPFR precision (to `tolerance`), then try to certify boxes of
-/// radius `10⁶` and `10¹⁰` times the residual's 2-norm estimate around the refined `u`
+/// radius `10⁶`, `10³` and `10¹⁰` times the residual's 2-norm estimate around the refined `u`
 /// (exact rationals of the MPFR values); the first that holds, or the last outcome.
 pub fn prove(
     sol: &super::newton::Uniformization,
     bits: u32,
     tolerance: f64,
 ) -> Result<Proof, CertificateError> {
+    prove_on(sol, None, bits, tolerance)
+}
+
+/// [`prove`] for the metric `metric` on `T₀` instead of the binary64 lengths of the
+/// solve: the refinement runs on `metric.values` and the certificate on
+/// `metric.enclosures` ([`check_certificate_on`]), so a `Holds` is about that metric.
+pub fn prove_on(
+    sol: &super::newton::Uniformization,
+    metric: Option<&T0Metric>,
+    bits: u32,
+    tolerance: f64,
+) -> Result<Proof, CertificateError> {
     let prec =
         Precision::new(u64::from(bits)).map_err(|_| CertificateError::Bits(u64::from(bits)))?;
-    let r = super::refine::refine::<Mpfr>(sol, prec, tolerance, 30)?;
+    let r = match metric {
+        None => super::refine::refine::<Mpfr>(sol, prec, tolerance, 30)?,
+        Some(m) => super::refine::refine_on::<Mpfr>(sol, m.values.clone(), prec, tolerance, 30)?,
+    };
     let u: Vec<Rational> =
         r.u.iter()
             .map(|x| x.to_rational().unwrap_or_default())
             .collect();
+    certify_near(sol, metric, &u, r.residual_max(), bits)
+}
+
+/// The certificate half of [`prove_on`] for a `u` refined elsewhere (e.g. in double-double,
+/// which has no directed rounding: the proof is in `Interval<Mpfr>` at `bits`), whose
+/// `max |Θ − θ|` was estimated as `residual_max`: boxes of radius `10⁶`, `10³` and `10¹⁰`
+/// times `residual_max·√n` (at least `2^(10 − bits)`·those factors) around `u`; the first
+/// that holds, or the last outcome.
+pub fn certify_near(
+    sol: &super::newton::Uniformization,
+    metric: Option<&T0Metric>,
+    u: &[Rational],
+    residual_max: f64,
+    bits: u32,
+) -> Result<Proof, CertificateError> {
     let n = sol.u.len().max(1) as f64;
-    let floor = 2f64.powi(-(bits.min(1000) as i32) + 20);
-    let estimate = (r.residual_max() * n.sqrt()).max(floor);
+    let floor = 2f64.powi(-(bits.min(1000) as i32) + 10);
+    let estimate = (residual_max * n.sqrt()).max(floor);
     let mut last = None;
-    for factor in [1e6, 1e10] {
+    // 10⁶ first; then a smaller box (when the first left the Penner cell, e.g. near a
+    // Delaunay tie) and a larger one (when the residual over μ exceeded the radius).
+    for factor in [1e6, 1e3, 1e10] {
         let radius = Rational::from_f64(estimate * factor).unwrap_or_else(|| Rational::from(1));
         let data = CertificateData {
             t0: sol.initial_mesh.clone(),
             l0: sol.initial_lengths.clone(),
             targets: sol.targets.clone(),
             flip_sequence: sol.flip_sequence.clone(),
-            u: u.clone(),
+            u: u.to_vec(),
             radius,
         };
-        let outcome = check_certificate(&data, bits)?;
+        let outcome = check_certificate_on(&data, metric.map(|m| &m.enclosures[..]), bits)?;
         let done = matches!(outcome, CertificateOutcome::Holds { .. });
         last = Some(Proof {
             data,
             outcome,
-            residual_max: r.residual_max(),
+            residual_max,
         });
         if done {
             break;
         }
     }
-    Ok(last.expect("two attempts"))
+    Ok(last.expect("three attempts"))
 }

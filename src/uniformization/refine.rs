@@ -67,8 +67,21 @@ pub fn carry_lengths<T: Real>(
     sequence: &[Edge],
     ctx: T::Ctx,
 ) -> Result<(Mesh, Vec<T>), RefineError> {
+    carry_lengths_from(
+        t0,
+        l0.iter().map(|&x| T::from_f64(x, ctx)).collect(),
+        sequence,
+    )
+}
+
+/// Lengths `l` of `T₀` (in `T`: e.g. the exact input metric enclosed) carried through
+/// `sequence` by Ptolemy flips; the flipped mesh too.
+pub fn carry_lengths_from<T: Real>(
+    t0: &Mesh,
+    mut l: Vec<T>,
+    sequence: &[Edge],
+) -> Result<(Mesh, Vec<T>), RefineError> {
     let mut m = t0.clone();
-    let mut l: Vec<T> = l0.iter().map(|&x| T::from_f64(x, ctx)).collect();
     for (index, &e) in sequence.iter().enumerate() {
         if e.idx() >= m.n_edges() || flip_ptolemy(&mut m, &mut l, e).is_err() {
             return Err(RefineError::Replay { index, edge: e.0 });
@@ -107,12 +120,26 @@ pub fn refine<T: Real>(
     tolerance: f64,
     max_iterations: usize,
 ) -> Result<Refinement<T>, RefineError> {
-    let (mesh, base) = carry_lengths::<T>(
-        &sol.initial_mesh,
-        &sol.initial_lengths,
-        &sol.flip_sequence,
-        ctx,
-    )?;
+    let l0 = sol
+        .initial_lengths
+        .iter()
+        .map(|&x| T::from_f64(x, ctx))
+        .collect();
+    refine_on(sol, l0, ctx, tolerance, max_iterations)
+}
+
+/// [`refine`] for another metric on `T₀`: `l0` are the lengths of `sol.initial_mesh` in
+/// `T` (e.g. the exact input lengths, flipped to `T₀` in `T`, where the `f64` solve used
+/// their rounding). The `f64` solution is the starting point and its flip sequence the
+/// triangulation.
+pub fn refine_on<T: Real>(
+    sol: &Uniformization,
+    l0: Vec<T>,
+    ctx: T::Ctx,
+    tolerance: f64,
+    max_iterations: usize,
+) -> Result<Refinement<T>, RefineError> {
+    let (mesh, base) = carry_lengths_from(&sol.initial_mesh, l0, &sol.flip_sequence)?;
     let theta_target = targets_in::<T>(sol, ctx);
     let mut u: Vec<T> = sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect();
     let comps = Components::of(&mesh);

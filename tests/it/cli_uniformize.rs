@@ -212,3 +212,51 @@ fn t24_cli_uniformize_accepts_surfaces_scaled_by_two_to_the_plus_minus_1000() {
     let out = penner(&["uniformize", &surf, "--targets", &bad.display().to_string()]);
     assert_eq!(out.status.code(), Some(3), "{}", text(&out.stderr));
 }
+
+#[test]
+fn t24_cli_uniformize_dd_refines_in_double_double_and_says_where_it_certifies() {
+    let d = scratch("uniformize-dd");
+    let (m, l) = jittered_torus(5, 6, 4);
+    let surf = surface_file(&d, "torus", m, &l);
+    let cert = d.join("cert.json").display().to_string();
+    let out = penner(&[
+        "uniformize",
+        &surf,
+        "--flat",
+        "--precision",
+        "dd",
+        "-o",
+        &cert,
+    ]);
+    let stdout = text(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{stdout}{}", text(&out.stderr));
+    assert!(
+        stdout.contains("after refinement in double-double")
+            && stdout.contains("128-bit MPFR interval arithmetic"),
+        "{stdout}"
+    );
+    // The refined residual meets the dd tolerance of the CLI (1e-28).
+    let line = stdout
+        .lines()
+        .find(|l| l.contains("after refinement in double-double"))
+        .unwrap();
+    let refined: f64 = line
+        .split(", ")
+        .nth(1)
+        .and_then(|x| x.split_whitespace().next())
+        .and_then(|x| x.parse().ok())
+        .unwrap();
+    assert!(refined <= 1e-28, "{line}");
+    let out = penner(&["certify", &cert]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stdout));
+    // Negative control: u moved by 1e-20 at one vertex — far below f64's accuracy, far
+    // above the double-double solution's — is not certified.
+    let mut claim: Value = serde_json::from_str(&std::fs::read_to_string(&cert).unwrap()).unwrap();
+    let u1 = penner::io::json::exact_number(&claim["u"][1], "u").unwrap();
+    let moved = u1 + Rational::from((1, rug::Integer::from(rug::Integer::u_pow_u(10, 20))));
+    claim["u"][1] = Value::String(moved.to_string());
+    let bad = d.join("bad.json");
+    std::fs::write(&bad, claim.to_string()).unwrap();
+    let out = penner(&["certify", &bad.display().to_string()]);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out.stdout));
+}

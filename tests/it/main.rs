@@ -45,6 +45,7 @@ mod planar_gen;
 mod predicates_planar;
 mod progress;
 mod registry_extra;
+mod registry_uniformization;
 mod replay_lazy;
 mod scalar_dd;
 mod scalar_dd_div;

@@ -26,6 +26,7 @@ pub mod energy;
 pub mod flips;
 pub mod lobachevsky;
 pub mod metric;
+pub mod uniformization;
 
 /// The relative perturbation of a length (or squared length) used by the metric controls:
 /// 1/100, far above every tolerance of the catalogue at every precision (the largest, at
@@ -67,6 +68,7 @@ pub fn controls() -> Vec<Check> {
     all.extend(energy::controls());
     all.extend(circles::controls());
     all.extend(lobachevsky::controls());
+    all.extend(uniformization::controls());
     all.sort_by_key(|c| c.id);
     all
 }

@@ -1,0 +1,147 @@
+//! The benchmark meshes of discrete uniformization (T24) and the figures of the README:
+//! wall time of the `f64` Newton solve, of the refinement to max |Θ − θ| ≤ 10⁻³⁰ (MPFR-128
+//! residuals, the `f64` factor), and of the refinement to 10⁻⁶⁰ at MPFR-256 with its
+//! certificate (B70, B71), their ratios to the `f64` solve, and the peak resident memory.
+//!
+//! ```sh
+//! cargo run --release --example uniformize_targets -- sphere 100000   # noisy icosphere
+//! cargo run --release --example uniformize_targets -- torus 100000    # sheared torus
+//! ```
+//!
+//! `sphere FACES`: the frequency-ν icosphere (20ν² faces closest to FACES), every vertex
+//! moved by up to 0.2 × the mean edge length, four cones of angle π at the vertices nearest
+//! (1,1,1), (1,−1,−1), (−1,1,−1), (−1,−1,1), 2π elsewhere. `torus FACES`: a torus of radii 1
+//! and 0.3 from an n × n/2 grid sheared by 5 columns per row (long thin triangles), all
+//! targets 2π.
+
+#[path = "../tests/it/meshgen.rs"]
+mod meshgen;
+
+use penner::scalar::{Mpfr, Precision};
+use penner::uniformization::certificate::{prove, CertificateOutcome};
+use penner::uniformization::refine::refine;
+use penner::uniformization::{uniformize, Targets, UniformizeOptions};
+use rug::Rational;
+use std::process::ExitCode;
+use std::time::Instant;
+
+/// Peak resident set size in MiB (`VmHWM` of /proc/self/status), if readable.
+fn peak_mib() -> Option<f64> {
+    let s = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = s.lines().find(|l| l.starts_with("VmHWM:"))?;
+    let kb: f64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kb / 1024.0)
+}
+
+fn sphere(faces: u64) -> (meshgen::Embedded, Targets) {
+    let nu = ((faces as f64 / 20.0).sqrt().round().max(1.0)) as u32;
+    let mut s = meshgen::icosphere(nu);
+    let amount = 0.2 * s.mean_edge();
+    s.jitter(amount, u64::from(nu));
+    let mut q = vec![Rational::from(2); s.pos.len()];
+    for c in [
+        [1.0, 1.0, 1.0],
+        [1.0, -1.0, -1.0],
+        [-1.0, 1.0, -1.0],
+        [-1.0, -1.0, 1.0],
+    ] {
+        let d = |p: &[f64; 3]| (0..3).map(|i| (p[i] - c[i]).powi(2)).sum::<f64>();
+        let v = (0..s.pos.len())
+            .min_by(|&a, &b| d(&s.pos[a]).total_cmp(&d(&s.pos[b])))
+            .unwrap_or(0);
+        q[v] = Rational::from(1);
+    }
+    (s, Targets::from_multiples_of_pi(q))
+}
+
+fn torus(faces: u64) -> (meshgen::Embedded, Targets) {
+    // 2·n·(n/2) = n² faces.
+    let n = ((faces as f64).sqrt().round().max(4.0)) as u32;
+    let s = meshgen::sheared_torus(n, n / 2, 5);
+    let t = Targets::flat(s.pos.len());
+    (s, t)
+}
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let kind = args.first().map_or("sphere", String::as_str);
+    let Ok(faces) = args.get(1).map_or(Ok(10_000u64), |s| s.parse()) else {
+        eprintln!("uniformize_targets: FACES must be a number");
+        return ExitCode::from(3);
+    };
+    let (s, targets) = match kind {
+        "sphere" => sphere(faces),
+        "torus" => torus(faces),
+        other => {
+            eprintln!("uniformize_targets: expected `sphere` or `torus`, got `{other}`");
+            return ExitCode::from(3);
+        }
+    };
+    let mesh = s.mesh();
+    let lengths = s.lengths(&mesh);
+    let t = Instant::now();
+    let sol = match uniformize(&mesh, &lengths, &targets, &UniformizeOptions::default()) {
+        Ok(sol) => sol,
+        Err(e) => {
+            eprintln!("uniformize_targets: {e}");
+            return ExitCode::from(3);
+        }
+    };
+    let t_f64 = t.elapsed().as_secs_f64();
+    println!(
+        "{kind} {} faces, {} vertices: f64 solve {t_f64:.3} s ({} Newton steps, {} Euclidean + {} Ptolemy flips, {} symbolic / {} numeric factorizations), max |Θ − θ| = {:.2e}, stop {:?}",
+        mesh.n_faces(),
+        mesh.n_vertices(),
+        sol.steps.len(),
+        sol.euclidean_flips,
+        sol.flip_sequence.len(),
+        sol.factorizations.0,
+        sol.factorizations.1,
+        sol.residual_max,
+        sol.stop
+    );
+    if !sol.converged() {
+        return ExitCode::from(2);
+    }
+    let t = Instant::now();
+    let p128 = Precision::new(128).expect("128 bits");
+    let r30 = match refine::<Mpfr>(&sol, p128, 1e-30, 30) {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("uniformize_targets: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let t_30 = t.elapsed().as_secs_f64();
+    println!(
+        "refine to 1e-30 (MPFR-128): {t_30:.3} s = {:.2}× the f64 solve, {} iterations, max |Θ − θ| = {:.2e}, reached {}",
+        t_30 / t_f64,
+        r30.history.len() - 1,
+        r30.residual_max(),
+        r30.reached
+    );
+    let t = Instant::now();
+    let proof = match prove(&sol, 256, 1e-60) {
+        Ok(p) => p,
+        Err(e) => {
+            eprintln!("uniformize_targets: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let t_60 = t.elapsed().as_secs_f64();
+    let verdict = match &proof.outcome {
+        CertificateOutcome::Holds { distance, .. } => {
+            format!("certified, distance ≤ {distance:.2e}")
+        }
+        CertificateOutcome::Undecided { reason } => format!("not certified: {reason}"),
+    };
+    println!(
+        "refine to 1e-60 at MPFR-256 + certificate: {t_60:.3} s = {:.2}× the f64 solve, max |Θ − θ| = {:.2e}, {verdict}",
+        t_60 / t_f64,
+        proof.residual_max
+    );
+    if let Some(m) = peak_mib() {
+        println!("peak resident memory: {m:.0} MiB");
+    }
+    ExitCode::SUCCESS
+}

@@ -1,0 +1,58 @@
+//! The refutation side of the certificate: a proof that *no* exact solution of
+//! `θ(u') = Θ` lies in the box `B = {u' : |u'_i − u_i| ≤ r}` (grounded vertices fixed) of a
+//! [`CertificateData`]. proof: B73
+//!
+//! After step 1 of B71 (the final triangulation `T` is Delaunay and every face a strict
+//! triangle for every `u' ∈ B`, so the angle sums at `u'` are those of `T`), the angle sum
+//! `θ_v` of every vertex is enclosed over the whole box by interval arithmetic on the box
+//! lengths. A vertex whose target `Θ_v` (enclosed) is disjoint from that enclosure has
+//! `θ_v(u') ≠ Θ_v` for every `u' ∈ B`: the box holds no solution.
+
+use super::certificate::{prepare, CertificateData, CertificateError, I};
+use crate::geometry::cone_angles::cone_angles;
+use crate::scalar::{Interval, Mpfr, Real};
+
+/// A vertex whose target lies outside the enclosure of its angle sum over the box.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExcludedVertex {
+    /// The vertex.
+    pub vertex: usize,
+    /// `Θ_v` (midpoint, for display).
+    pub target: f64,
+    /// `[θ_v(B)]`: lower and upper end of the enclosure (rounded outwards for display).
+    pub angle_sum: (f64, f64),
+}
+
+/// Every vertex whose target `Θ_v` is certified outside `θ_v(B)` (B73); an empty list when
+/// none is (no conclusion). `Ok(Err(reason))` when the box is not certified inside one
+/// Penner cell (then nothing is concluded). `base0` as in
+/// [`super::certificate::check_certificate_on`].
+pub fn excluded_vertices(
+    data: &CertificateData,
+    base0: Option<&[Interval<Mpfr>]>,
+    bits: u32,
+) -> Result<Result<Vec<ExcludedVertex>, String>, CertificateError> {
+    let p = match prepare(data, base0, bits)? {
+        Ok(p) => p,
+        Err(reason) => return Ok(Err(reason)),
+    };
+    let theta = cone_angles(&p.mesh, &p.box_lengths);
+    let pi = I::pi(p.prec);
+    let mut out = Vec::new();
+    for (v, th) in theta.iter().enumerate() {
+        if !th.is_valid() {
+            continue;
+        }
+        let target = I::from_rational(&data.targets.over_pi()[v], p.prec) * &pi;
+        let below = target.hi().as_float() < th.lo().as_float();
+        let above = target.lo().as_float() > th.hi().as_float();
+        if below || above {
+            out.push(ExcludedVertex {
+                vertex: v,
+                target: target.approx_f64(),
+                angle_sum: (th.lo().approx_f64(), th.hi().approx_f64()),
+            });
+        }
+    }
+    Ok(Ok(out))
+}

@@ -1,0 +1,80 @@
+//! The exact input metric on `T₀`: the `f64` solve flips the binary64 rounding of the input
+//! lengths to the intrinsic Delaunay triangulation `T₀`; a certificate about the *input*
+//! (rational lengths, or square roots of rational squared lengths) needs the input's own
+//! lengths on `T₀`. They are obtained by replaying the same Euclidean flips in MPFR (for
+//! the refinement) and in `Interval<Mpfr>` (for the certificate). proof: B73
+//!
+//! A Euclidean flip keeps the cone metric (T23) when the flipped edge's quadrilateral is
+//! strictly convex; each replayed flip is therefore admitted only when, on the enclosed
+//! input metric, the two corner angles at each end of the edge are certified to sum to
+//! less than `π` ([`strictly_convex`]).
+
+use super::certificate::T0Metric;
+use super::newton::Uniformization;
+use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
+use crate::algorithms::flips::flip_euclidean;
+use crate::geometry::triangle::corner_angle;
+use crate::mesh::Mesh;
+use crate::predicates::delaunay::{Quad, QuadEdges};
+use crate::scalar::{Interval, Mpfr, Real, Sign};
+
+/// The input metric on `sol`'s `T₀`: `mesh` and `lengths` are what [`super::uniformize`]
+/// was given (binary64), `values` the input lengths in MPFR and `enclosures` enclosures of
+/// the exact input lengths, all on `mesh`. `Err(reason)` when the Euclidean flips to `T₀`
+/// cannot be replayed on the enclosed input metric with certified convex quadrilaterals.
+pub fn input_on_t0(
+    sol: &Uniformization,
+    mesh: &Mesh,
+    lengths: &[f64],
+    mut values: Vec<Mpfr>,
+    mut enclosures: Vec<Interval<Mpfr>>,
+) -> Result<T0Metric, String> {
+    if values.len() != mesh.n_edges() || enclosures.len() != mesh.n_edges() {
+        return Err("one input length per edge is required".into());
+    }
+    // The Euclidean flips of the solve, recorded: the same deterministic run.
+    let mut m = mesh.clone();
+    let mut l = lengths.to_vec();
+    let opts = FlipOptions {
+        record: true,
+        ..FlipOptions::default()
+    };
+    let rep =
+        flip_to_delaunay(&mut m, &mut l, FlipKind::Euclidean, &opts).map_err(|e| e.to_string())?;
+    if m.face_list() != sol.initial_mesh.face_list() {
+        return Err("the Euclidean flips do not reproduce the solve's T₀".into());
+    }
+    let mut mi = mesh.clone();
+    let mut mv = mesh.clone();
+    for (k, &e) in rep.sequence.iter().enumerate() {
+        let Some(q) = QuadEdges::of(&mi, e) else {
+            return Err(format!(
+                "Euclidean flip {k} (e{}) has no quadrilateral",
+                e.0
+            ));
+        };
+        if !strictly_convex(&q.lengths(&enclosures).map(Clone::clone)) {
+            return Err(format!(
+                "Euclidean flip {k} (e{}): its quadrilateral is not certified strictly convex for the exact input lengths",
+                e.0
+            ));
+        }
+        flip_euclidean(&mut mi, &mut enclosures, e).map_err(|err| err.to_string())?;
+        flip_euclidean(&mut mv, &mut values, e).map_err(|err| err.to_string())?;
+    }
+    Ok(T0Metric { values, enclosures })
+}
+
+/// Whether the quadrilateral `[ij, jk, ki, il, lj]` (faces `ijk`, `jil`) is certified
+/// strictly convex at both ends of its diagonal: `∠kij + ∠jil < π` and `∠ijk + ∠lji < π`,
+/// the corner angles enclosed by the half-angle form (an enclosure that is not a valid
+/// triangle's angle fails the test). proof: B73
+pub fn strictly_convex(q: &Quad<Interval<Mpfr>>) -> bool {
+    let at_i = corner_angle(&q.jk, &q.ki, &q.ij) + &corner_angle(&q.lj, &q.il, &q.ij);
+    let at_j = corner_angle(&q.ki, &q.jk, &q.ij) + &corner_angle(&q.il, &q.lj, &q.ij);
+    let pi = Interval::<Mpfr>::pi(q.ij.ctx());
+    [at_i, at_j].into_iter().all(|a| {
+        let slack = pi.clone() - &a;
+        slack.is_valid() && slack.sign() == Some(Sign::Positive)
+    })
+}
