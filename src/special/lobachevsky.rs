@@ -48,6 +48,7 @@ fn exact_float(q: &Rational) -> Float {
 }
 
 /// `Л(x)` for an `f64`: the binary64 path, or MPFR rounded once when it declines.
+#[inline]
 fn lobachevsky_f64_any(x: f64) -> f64 {
     if let Some(y) = lobachevsky_f64(x) {
         return y;

@@ -66,3 +66,4 @@ mod tolerance_range;
 mod tolerance_tightness;
 mod uniformization;
 mod variational;
+mod variational_fused;
