@@ -52,6 +52,7 @@ mod scalar_dd_reduction;
 mod scalar_nearest;
 mod sharding;
 mod special;
+mod special_dd;
 #[cfg(feature = "strategies")]
 mod strategies;
 #[allow(dead_code)] // helpers used by some areas only
