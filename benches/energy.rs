@@ -21,11 +21,10 @@ use meshgen::jittered_torus;
 use penner::geometry::cone_angles::cone_angles;
 use penner::mesh::Mesh;
 use penner::scalar::{Dd, Mpfr, Precision, Real};
-use penner::variational::energy::{
-    energy_gradient_hessian_at, energy_gradient_hessian_with, gradient_at, hessian_at,
-    log_lengths,
-};
 use penner::special::lobachevsky;
+use penner::variational::energy::{
+    energy_gradient_hessian_at, energy_gradient_hessian_with, gradient_at, hessian_at, log_lengths,
+};
 use penner::variational::pattern::HessianPattern;
 use penner::variational::triangle::angles_from_log_lengths;
 use std::hint::black_box;

@@ -1,4 +1,4 @@
-//! `Л` for double-double arguments in double-double arithmetic (proofs/B100), without MPFR
+//! `Л` for double-double arguments in double-double arithmetic (proofs/B55), without MPFR
 //! on the common path `|x| ≤ 3.9` (the angles of triangles and of ideal tetrahedra):
 //! reduction `x = k·π/2 + t`, `|k| ≤ 2`, by `π/2 = P₁ + P₂ + P₃` (three binary64 numbers)
 //! with an exact leading subtraction, then the two series of B52,
@@ -25,7 +25,7 @@ const DD_TERMS: usize = 38;
 const DD_LIMIT: f64 = 3.9;
 
 /// Smallest reduced `|t|` accepted: the reduction's absolute error, below `2⁻¹⁵⁶`, is then
-/// below `2⁻¹²⁶` of `t` (B100).
+/// below `2⁻¹²⁶` of `t` (B55).
 const MIN_REDUCED: f64 = 9.313225746154785e-10; // 2⁻³⁰
 
 struct Consts {
@@ -168,6 +168,9 @@ pub(crate) fn lobachevsky_dd(x: Dd) -> Option<Dd> {
     }
     // Л(π/2 + t) = Л(t ∓ π/2) with the sign of t (no cancellation: |t| > 1/2 > π/2 − 1.0708).
     let sg = t.hi.signum();
-    let r = add_f64(add(t, Dd::from_parts(-sg * c.p[0], -sg * c.p[1])), -sg * c.p[2]);
+    let r = add_f64(
+        add(t, Dd::from_parts(-sg * c.p[0], -sg * c.p[1])),
+        -sg * c.p[2],
+    );
     Some(at_zero(r, c))
 }

@@ -10,7 +10,7 @@
 //! at least 8.5× per term. The coefficients are enclosed in MPFR once per precision.
 //!
 //! Per backend: `f64` has a dedicated binary64 path (B53); `Dd` a double-double path for
-//! `|x| ≤ 3.9` (B100); `Mpfr` (and `Dd` elsewhere) evaluate in MPFR at `p + 32..p + 95`
+//! `|x| ≤ 3.9` (B55); `Mpfr` (and `Dd` elsewhere) evaluate in MPFR at `p + 32..p + 95`
 //! bits and round once; `Dual<T>` adds the derivative
 //! `Л′(x) = −log|2 sin x|`; `Interval<Mpfr>` and `Interval<f64>` return the rigorous
 //! enclosure of [`lobachevsky_enclosure`](super::lobachevsky_enclosure).
@@ -84,7 +84,7 @@ fn interval_f64(x: &Interval<f64>) -> Interval<f64> {
 /// `Л′(x) = −log|2 sin x|`, `Л(x) ≈ x(1 − log|2x|)` near 0; the maximum is
 /// `Л(π/6) = 0.50747080…`.
 ///
-/// Accuracy (proofs/B52, B53, B100): `f64` within a few ulps (measured), `Dd` within 4
+/// Accuracy (proofs/B52, B53, B55): `f64` within a few ulps (measured), `Dd` within 4
 /// units of `2⁻¹⁰⁶` for `|x| ≤ 3.9` (measured) and `Dd` elsewhere and `Mpfr`-p within
 /// one ulp plus `2⁻³⁰` ulp, for every finite argument whose reduction needs at most 2²⁰
 /// bits of π (otherwise NaN). On `Interval<Mpfr>` / `Interval<f64>` the result is a

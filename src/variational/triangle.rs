@@ -30,8 +30,8 @@
 use crate::geometry::triangle::{corner_angle, cot_opposite, kahan_area};
 use crate::predicates::tolerance::sign_exact;
 use crate::scalar::{Dd, Real, Sign};
-use std::any::Any;
 use crate::special::lobachevsky;
+use std::any::Any;
 
 /// The shape of a triangle given by three lengths, as decided on the computed slacks
 /// `ℓ_{m+1} + ℓ_{m+2} − ℓ_m`.

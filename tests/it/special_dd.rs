@@ -1,4 +1,4 @@
-//! Lobachevsky's function at double-double (B100): the native double-double series
+//! Lobachevsky's function at double-double (B55): the native double-double series
 //! against the independent Bernoulli/tangent-number evaluation at more than twice the
 //! precision, on double-double arguments with a genuine trailing word.
 
@@ -10,8 +10,8 @@ use rand_chacha::ChaCha8Rng;
 use rug::float::Constant;
 use rug::Float;
 
-/// B100: the double-double evaluation is within this many units of `2^(e−106)` of `Л(x)`.
-const DD_ULPS: f64 = 4.0; // proof: B100
+/// B55: the double-double evaluation is within this many units of `2^(e−106)` of `Л(x)`.
+const DD_ULPS: f64 = 4.0; // proof: B55
 
 /// `|y − r|` in units of `2^(e−106)`, `r = m·2ᵉ`, `m ∈ [1/2, 1)`; below `2⁻⁹⁶⁸` the unit
 /// is `2⁻¹⁰⁷⁵` (a double-double's absolute floor, B09).
@@ -52,7 +52,8 @@ fn arguments(rng: &mut ChaCha8Rng, count: usize) -> Vec<Dd> {
         Dd::from_f64(4.5),
     ];
     while out.len() < count {
-        let lo_word = |rng: &mut ChaCha8Rng, hi: f64| hi * 2f64.powi(-54) * rng.gen_range(-1.0..1.0);
+        let lo_word =
+            |rng: &mut ChaCha8Rng, hi: f64| hi * 2f64.powi(-54) * rng.gen_range(-1.0..1.0);
         let x = match out.len() % 5 {
             0 => {
                 let hi: f64 = rng.gen_range(1e-3..std::f64::consts::PI);
@@ -84,7 +85,7 @@ fn arguments(rng: &mut ChaCha8Rng, count: usize) -> Vec<Dd> {
 }
 
 #[test]
-fn b100_dd_within_few_ulps_of_the_tangent_series() {
+fn b55_dd_within_few_ulps_of_the_tangent_series() {
     let mut rng = ChaCha8Rng::seed_from_u64(100);
     let mut worst = (0.0, 0.0);
     for x in arguments(&mut rng, cases(3000, 100_000)) {

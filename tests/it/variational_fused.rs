@@ -156,3 +156,62 @@ fn t32_hessian_pattern_of_loops_and_multiple_edges() {
         assert!((s + h.get(i, i).unwrap()).abs() > 1e-3);
     }
 }
+
+/// B57: the difference enclosure of `E′(u)·d` (53-bit data, 106-bit intervals) contains
+/// `(Θ − θ(u))·d` evaluated independently from the angles at 320 bits, is narrow, and
+/// excludes the same value moved by 10⁻⁹.
+#[test]
+fn b57_difference_enclosure_contains_the_gradient_and_excludes_a_moved_one() {
+    use penner::theorems::t32_difference::derivative_enclosure;
+    use penner::variational::energy::{gradient, log_lengths};
+    use rug::{Float, Rational};
+    let p = Precision::new(320).unwrap();
+    for seed in 0..cases(3, 12) as u64 {
+        let (m, l) = match seed % 3 {
+            0 => {
+                let e = random_tetrahedron(seed);
+                let m = e.mesh();
+                let l = e.lengths(&m);
+                (m, l)
+            }
+            1 => {
+                let e = icosphere(1);
+                let m = e.mesh();
+                let l = e.lengths(&m);
+                (m, l)
+            }
+            // A finer torus: the 4 × 5 one has faces next to degenerate, where E‴ and so
+            // the enclosure's truncation part are large (still an enclosure, not narrow).
+            _ => jittered_torus(10, 12, seed),
+        };
+        let n = m.n_vertices();
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let u: Vec<f64> = (0..n).map(|_| 0.2 * (rng.gen::<f64>() - 0.5)).collect();
+        let t: Vec<f64> = (0..n).map(|_| 6.0 * rng.gen::<f64>()).collect();
+        let d: Vec<f64> = (0..n).map(|_| rng.gen::<f64>() - 0.5).collect();
+        let lambda = log_lengths(&l);
+        let enc = derivative_enclosure(&m, &lambda, &u, &t, &d, 53).expect("enclosure");
+        // Independent: Θ − θ from the angles at 320 bits on the same exact data.
+        let hi = |v: &[f64]| -> Vec<Mpfr> { v.iter().map(|&x| Mpfr::from_f64(x, p)).collect() };
+        let g = gradient(&m, &hi(&lambda), &hi(&u), &hi(&t));
+        let gd = g.iter().zip(&d).fold(Float::with_val(320, 0), |s, (a, b)| {
+            s + Float::with_val(640, &a.0 * *b)
+        });
+        let q = Rational::from_f64(0.0).unwrap() + gd.to_rational().unwrap();
+        assert!(
+            enc.lo <= q && q <= enc.hi,
+            "seed {seed}: {q} not in [{}, {}]",
+            enc.lo,
+            enc.hi
+        );
+        let width = Float::with_val(320, &enc.hi - &enc.lo).to_f64();
+        assert!(
+            width < 1e-12,
+            "seed {seed}: width {width}, truncation {}",
+            enc.truncation
+        );
+        // Negative control: moved by 10⁻⁹ it lies outside.
+        let moved = q + Rational::from_f64(1e-9).unwrap();
+        assert!(moved > enc.hi, "seed {seed}: control inside");
+    }
+}
