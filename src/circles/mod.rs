@@ -23,6 +23,7 @@ pub mod harmonic;
 pub mod jacobian;
 pub mod layout;
 pub mod linalg;
+pub mod maximal;
 pub mod metric;
 pub mod pack;
 pub mod pattern;

@@ -114,6 +114,27 @@ pub enum Command {
         /// Write an SVG picture of the laid-out packing to this new file.
         #[arg(long, value_name = "FILE")]
         svg: Option<PathBuf>,
+        /// The maximal packing of a disk: horocycles on the boundary, laid out in the unit
+        /// disk, tangency certified (T11).
+        #[arg(long, conflicts_with = "sphere")]
+        disk: bool,
+        /// The packing of a sphere by caps: punctured at `--puncture`, maximally packed,
+        /// projected stereographically, tangency certified (T11).
+        #[arg(long)]
+        sphere: bool,
+        /// The vertex a sphere is punctured at (`--sphere`).
+        #[arg(long, default_value_t = 0)]
+        puncture: usize,
+        /// MPFR bits of the refined radii and of the certificate (`--disk`, `--sphere`);
+        /// 53 computes in f64.
+        #[arg(long, default_value_t = 128)]
+        bits: u32,
+        /// The tangency tolerance ε to certify (`--disk`, `--sphere`), an exact decimal.
+        #[arg(long, default_value = "1e-30")]
+        epsilon: String,
+        /// Write the circles (and caps) as JSON to this new file (`--disk`, `--sphere`).
+        #[arg(short, long)]
+        output: Option<PathBuf>,
     },
     /// The verification report on the built-in corpus (what `penner` alone runs).
     Report {

@@ -285,9 +285,10 @@ fn shrink_failure(
     shrink(case, witnesses, &fails, Budget::default())
 }
 
-/// [`registry::run_case_with`], with a progress bar on standard error when it is a terminal
-/// and the output is a table: one step per (check, precision), the message naming the last
-/// one finished. Nothing is drawn on a pipe or with `--json`.
+/// [`registry::run_case_with`], with progress bars on standard error when it is a terminal
+/// and the output is a table: one bar over the (check, precision) pairs, the message naming
+/// the last one finished, and one bar per running long check over its elements
+/// ([`ElementBars`]). Nothing is drawn on a pipe or with `--json`.
 fn run_with_progress(
     case: &Surface,
     checks: &[Check],
@@ -296,32 +297,73 @@ fn run_with_progress(
     json: bool,
 ) -> Vec<registry::Row> {
     use std::io::IsTerminal;
-    let total = (checks.len() * precs.len()) as u64;
-    let bar = (!json && std::io::stderr().is_terminal()).then(|| {
-        let b = indicatif::ProgressBar::new(total);
-        if let Ok(style) =
-            indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} checks  {elapsed}  {msg}")
-        {
-            b.set_style(style);
-        }
-        b.set_message(format!(
-            "{} checks × {} precisions on {} faces",
-            checks.len(),
-            precs.len(),
-            case.mesh.n_faces()
-        ));
-        b.enable_steady_tick(std::time::Duration::from_millis(200));
-        b
-    });
-    let done = |row: &registry::Row| {
-        if let Some(b) = &bar {
-            b.inc(1);
-            b.set_message(format!("{} {} done", row.id, row.precision));
-        }
-    };
-    let rows = registry::run_case_with(case, checks, precs, settings, &done);
-    if let Some(b) = bar {
-        b.finish_and_clear();
+    if json || !std::io::stderr().is_terminal() {
+        return registry::run_case(case, checks, precs, settings);
     }
+    let total = (checks.len() * precs.len()) as u64;
+    let multi = indicatif::MultiProgress::new();
+    let bar = multi.add(indicatif::ProgressBar::new(total));
+    if let Ok(style) =
+        indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} checks  {elapsed}  {msg}")
+    {
+        bar.set_style(style);
+    }
+    bar.set_message(format!(
+        "{} checks × {} precisions on {} faces",
+        checks.len(),
+        precs.len(),
+        case.mesh.n_faces()
+    ));
+    bar.enable_steady_tick(std::time::Duration::from_millis(200));
+    let hook = std::sync::Arc::new(ElementBars {
+        multi: multi.clone(),
+        bars: std::sync::Mutex::new(std::collections::HashMap::new()),
+    });
+    let settings = Settings {
+        progress: penner::theorems::progress::Progress::to(hook),
+        ..settings.clone()
+    };
+    let done = |row: &registry::Row| {
+        bar.inc(1);
+        bar.set_message(format!("{} {} done", row.id, row.precision));
+    };
+    let rows = registry::run_case_with(case, checks, precs, &settings, &done);
+    bar.finish_and_clear();
     rows
+}
+
+/// One progress bar per running check over its elements, drawn under the bar of checks;
+/// a stage's bar is removed when the stage completes.
+struct ElementBars {
+    multi: indicatif::MultiProgress,
+    bars: std::sync::Mutex<std::collections::HashMap<String, indicatif::ProgressBar>>,
+}
+
+impl penner::theorems::progress::Hook for ElementBars {
+    fn elements(&self, task: &str, stage: &str, done: u64, total: u64) {
+        let Ok(mut bars) = self.bars.lock() else {
+            return;
+        };
+        let key = format!("{task}: {stage}");
+        if done >= total {
+            if let Some(b) = bars.remove(&key) {
+                b.finish_and_clear();
+                self.multi.remove(&b);
+            }
+            return;
+        }
+        let b = bars.entry(key).or_insert_with(|| {
+            let b = self.multi.add(indicatif::ProgressBar::new(total));
+            if let Ok(style) =
+                indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len}  {prefix}: {msg}")
+            {
+                b.set_style(style);
+            }
+            b.set_prefix(task.to_string());
+            b.set_message(stage.to_string());
+            b
+        });
+        b.set_length(total);
+        b.set_position(done);
+    }
 }

@@ -9,6 +9,7 @@ mod files;
 mod input;
 mod output;
 mod pack;
+mod pack_maximal;
 mod replay;
 mod report;
 mod uniformize;
@@ -54,7 +55,30 @@ pub fn main() -> ExitCode {
             lengths: lengths.as_deref(),
         }),
         Some(Command::Replay { file, json }) => replay::run(&file, json),
-        Some(Command::Pack { surface, svg }) => pack::run(&surface, svg.as_deref()),
+        Some(Command::Pack {
+            surface,
+            svg,
+            disk,
+            sphere,
+            puncture,
+            bits,
+            epsilon,
+            output,
+        }) => {
+            if disk || sphere {
+                pack_maximal::run(&pack_maximal::Options {
+                    path: &surface,
+                    sphere,
+                    puncture,
+                    bits,
+                    epsilon: &epsilon,
+                    svg: svg.as_deref(),
+                    output: output.as_deref(),
+                })
+            } else {
+                pack::run(&surface, svg.as_deref())
+            }
+        }
         Some(Command::Certify { claim }) => certify::run(&claim),
         Some(Command::Uniformize {
             surface,

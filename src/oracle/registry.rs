@@ -148,6 +148,17 @@ fn run_one_as_is(
     prec: Prec,
     settings: &Settings,
 ) -> Option<Row> {
+    // Long checks report their progress over elements under the label `T23 f64`.
+    let labelled;
+    let settings = if settings.progress.is_on() {
+        labelled = Settings {
+            progress: settings.progress.for_task(&format!("{} {prec}", check.id)),
+            ..settings.clone()
+        };
+        &labelled
+    } else {
+        settings
+    };
     let start = Instant::now();
     let result = catch_unwind(AssertUnwindSafe(|| (check.run)(input, prec, settings)));
     let seconds = start.elapsed().as_secs_f64();

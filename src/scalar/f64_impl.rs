@@ -80,7 +80,9 @@ impl Real for f64 {
     }
     #[inline]
     fn ldexp_assign(&mut self, k: i32) {
-        *self *= super::pow2(k);
+        for step in super::pow2_steps(k) {
+            *self *= super::pow2(step);
+        }
     }
     fn to_rational(&self) -> Option<rug::Rational> {
         rug::Rational::from_f64(*self)

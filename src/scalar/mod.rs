@@ -138,8 +138,9 @@ pub trait Real:
         self.lit(1.0)
     }
 
-    /// `self ← self · 2ᵏ` for `|k| ≤ 1000`: exact (no rounding) unless the result leaves
-    /// the normal range of the backend. The default multiplies by `self.lit(2ᵏ)`.
+    /// `self ← self · 2ᵏ` for any `k`: exact (no rounding) unless the result leaves the
+    /// normal range of the backend. The default multiplies by `self.lit(2ʲ)` in steps of
+    /// `|j| ≤ 1000`, so no exponent is clamped.
     ///
     /// ```
     /// use penner::scalar::{Dd, Real};
@@ -148,8 +149,10 @@ pub trait Real:
     /// assert_eq!(x.approx_f64(), 1.5);
     /// ```
     fn ldexp_assign(&mut self, k: i32) {
-        let f = self.lit(pow2(k));
-        *self *= &f;
+        for step in pow2_steps(k) {
+            let f = self.lit(pow2(step));
+            *self *= &f;
+        }
     }
 
     /// Exact conversion to a rational, or `None` when the value is not finite.
@@ -164,7 +167,26 @@ pub trait Real:
     }
 }
 
-/// `2ᵏ` as an `f64`, for `|k| ≤ 1000` (clamped to the normal exponent range).
+/// The exponents `j₁, j₂, …` with `Σ jᵢ = k` and `|jᵢ| ≤ 1000`, so that each `2^{jᵢ}` is a
+/// normal `f64` and `x · 2ᵏ` is the product `x · 2^{j₁} · 2^{j₂} ⋯` (exact while every
+/// partial product stays normal).
+pub(crate) fn pow2_steps(k: i32) -> impl Iterator<Item = i32> {
+    let n = k.unsigned_abs().div_ceil(1000).max(1);
+    let sign = k.signum();
+    let mut rest = k;
+    (0..n).map(move |_| {
+        let j = if rest.unsigned_abs() > 1000 {
+            sign * 1000
+        } else {
+            rest
+        };
+        rest -= j;
+        j
+    })
+}
+
+/// `2ᵏ` as an `f64`, for `|k| ≤ 1000` (clamped to the normal exponent range; callers
+/// with larger `|k|` go through [`pow2_steps`]).
 #[inline]
 pub(crate) fn pow2(k: i32) -> f64 {
     f64::from_bits(((i64::from(k.clamp(-1022, 1023)) + 1023) as u64) << 52)

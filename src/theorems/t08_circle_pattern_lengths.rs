@@ -29,8 +29,14 @@ pub fn face_triangle_signs(
 ) -> Vec<Certified<bool>> {
     let prec = Precision::new(u64::from(bits.max(53))).ok();
     let cos_exact: Vec<Option<Rational>> = phi.iter().map(cos_pi_exact).collect();
-    mesh.faces()
+    // One enclosure of `cos Φ` per distinct angle (the same function of the same input:
+    // the same enclosure), not one per face side.
+    let mut cos_memo: std::collections::HashMap<&Rational, I> = std::collections::HashMap::new();
+    let mut count = s.progress.counter("faces", mesh.n_faces());
+    let signs = mesh
+        .faces()
         .map(|f| {
+            count.add(1);
             let hs = mesh.face_halfedges(f);
             let ends = hs.map(|h| (mesh.tail(h).idx(), mesh.tip(h).idx(), h.edge().idx()));
             if ends.iter().all(|&(_, _, e)| cos_exact[e].is_some()) {
@@ -47,7 +53,10 @@ pub fn face_triangle_signs(
             };
             let sq = ends.map(|(i, j, e)| {
                 let (ri, rj) = (I::from_rational(&r[i], prec), I::from_rational(&r[j], prec));
-                let c: I = cos_pi(&phi[e], prec);
+                let c: I = cos_memo
+                    .entry(&phi[e])
+                    .or_insert_with(|| cos_pi(&phi[e], prec))
+                    .clone();
                 ri.clone() * &ri + &(rj.clone() * &rj) + &(ri * &rj * &c * &I::from_f64(2.0, prec))
             });
             let [a, b, c] = &sq;
@@ -72,7 +81,9 @@ pub fn face_triangle_signs(
                 Certified::Undecided { bits_tried: bits }
             }
         })
-        .collect()
+        .collect();
+    count.finish();
+    signs
 }
 
 /// The verdict of [`face_triangle_signs`]: `Fails` (certified) listing every face proved

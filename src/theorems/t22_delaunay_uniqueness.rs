@@ -149,6 +149,10 @@ pub fn check_delaunay_uniqueness_of<T: Real>(
     let mut witnesses = Vec::new();
     let mut undecided = Vec::new();
     let mut runs: Vec<CertifiedRun> = Vec::new();
+    // Two steps per seed: flipping, then the replay on the input metric.
+    let mut count = settings
+        .progress
+        .counter("runs flipped and replayed", 2 * seeds.len());
     for &seed in seeds {
         let (mut m, mut l) = (mesh.clone(), lengths.to_vec());
         let opts = FlipOptions {
@@ -165,6 +169,7 @@ pub fn check_delaunay_uniqueness_of<T: Real>(
                 }
             }
         };
+        count.add(1);
         if !report.all_certified_delaunay() {
             undecided.push(Witness {
                 element: "surface".into(),
@@ -186,6 +191,7 @@ pub fn check_delaunay_uniqueness_of<T: Real>(
             REPLAY_START_BITS,
             max_bits,
         );
+        count.add(1);
         if !r.certified_delaunay() {
             undecided.push(Witness {
                 element: "surface".into(),
@@ -226,6 +232,7 @@ pub fn check_delaunay_uniqueness_of<T: Real>(
             strict,
         });
     }
+    count.finish();
     witnesses.extend(compare_runs(&runs));
     Verdict::certified(witnesses, undecided, max_bits)
 }

@@ -22,13 +22,14 @@
 //!   hypotheses certified; otherwise it is `Holds { certified: false }` ("not refuted": the
 //!   enclosures intersect, which is all that is known).
 
+use super::progress::Progress;
 use super::{Settings, Verdict, Witness};
 use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
 use crate::algorithms::flips::{euclidean_length_enclosure, ptolemy_length_enclosure};
 use crate::mesh::{Edge, Mesh};
 use crate::predicates::delaunay::{Quad, QuadEdges};
 use crate::predicates::directed::{div_positive, enclose_f64, overlaps, strictly_below, valid};
-use crate::scalar::{Interval, Mpfr, Precision, Real};
+use crate::scalar::{Interval, IntervalBound, Mpfr, Precision, Real};
 
 /// Enclosures of the corner angle opposite `a` in a triangle `a, b, c`:
 /// `2·atan √((a−b+c)(a+b−c) / ((a+b+c)(−a+b+c)))` (MATH.md §1); `None` if the triangle may
@@ -38,10 +39,21 @@ pub fn corner_angle_enclosure(
     b: &Interval<Mpfr>,
     c: &Interval<Mpfr>,
 ) -> Option<Interval<Mpfr>> {
+    let half = half_angle_tangent(a, b, c)?.atan();
+    valid(half * &enclose_f64(2.0, a.ctx()))
+}
+
+/// The enclosure of `tan(α/2) = √((a−b+c)(a+b−c) / ((a+b+c)(−a+b+c)))` for the corner
+/// opposite `a` ([`corner_angle_enclosure`] before its `atan`), on any interval bound:
+/// `None` when the denominator is not certified positive or the radicand may be negative.
+pub(crate) fn half_angle_tangent<B: IntervalBound>(
+    a: &Interval<B>,
+    b: &Interval<B>,
+    c: &Interval<B>,
+) -> Option<Interval<B>> {
     let num = (a.clone() - b + c) * &(a.clone() + b - c);
     let den = (a.clone() + b + c) * &(b.clone() + c - a);
-    let half = valid(div_positive(&num, &den)?.sqrt())?.atan();
-    valid(half * &enclose_f64(2.0, a.ctx()))
+    valid(div_positive(&num, &den)?.sqrt())
 }
 
 /// Enclosures of all cone angles `θ_v = Σ` corner angles at `v` ([`corner_angle_enclosure`]),
@@ -91,12 +103,22 @@ fn first_invalid_face(mesh: &Mesh, l: &[Interval<Mpfr>]) -> Option<u32> {
         let (Some(a), Some(b), Some(c)) = (a, b, c) else {
             return Some(f.0);
         };
-        let zero = a.zero_like();
-        let ok = [(a, b, c), (b, c, a), (c, a, b)]
-            .iter()
-            .all(|&(x, y, z)| strictly_below(&zero, &(y.clone() + z - x)));
-        (!ok).then_some(f.0)
+        (!face_certified(a, b, c)).then_some(f.0)
     })
+}
+
+/// Whether the side enclosures `a, b, c` of a face are certified to satisfy the strict
+/// triangle inequality: `y + z − x` certified positive for `(x, y, z)` = `(a, b, c)`,
+/// `(b, c, a)`, `(c, a, b)`, on any interval bound.
+pub(crate) fn face_certified<B: IntervalBound>(
+    a: &Interval<B>,
+    b: &Interval<B>,
+    c: &Interval<B>,
+) -> bool {
+    let zero = a.zero_like();
+    [(a, b, c), (b, c, a), (c, a, b)]
+        .iter()
+        .all(|&(x, y, z)| strictly_below(&zero, &(y.clone() + z - x)))
 }
 
 /// Whether the hypotheses of T23's planar lemma are certified on enclosures `q` of the
@@ -113,16 +135,16 @@ fn first_invalid_face(mesh: &Mesh, l: &[Interval<Mpfr>]) -> Option<u32> {
 /// (`Q_i = 2acd (cos α_i^{ijk} + cos α_i^{jil})`, law of cosines). Every sign is read from
 /// an outward-rounded enclosure (proof: B20), so `true` proves the hypotheses for the exact
 /// lengths; `false` means they could not be certified (or fail).
-pub fn flip_hypotheses_certified(q: Quad<&Interval<Mpfr>>) -> bool {
-    let zero = enclose_f64(0.0, q.ij.ctx());
-    let positive = |x: &Interval<Mpfr>| strictly_below(&zero, x);
-    let strict_triangle = |a: &Interval<Mpfr>, b: &Interval<Mpfr>, c: &Interval<Mpfr>| {
+pub fn flip_hypotheses_certified<B: IntervalBound>(q: Quad<&Interval<B>>) -> bool {
+    let zero = q.ij.zero_like();
+    let positive = |x: &Interval<B>| strictly_below(&zero, x);
+    let strict_triangle = |a: &Interval<B>, b: &Interval<B>, c: &Interval<B>| {
         positive(&(b.clone() + c - a))
             && positive(&(a.clone() - b + c))
             && positive(&(a.clone() + b - c))
     };
     let (a, b, c, d, e) = (q.ij, q.jk, q.ki, q.il, q.lj);
-    let sq = |x: &Interval<Mpfr>| x.clone() * x;
+    let sq = |x: &Interval<B>| x.clone() * x;
     let q_i = d.clone() * &(sq(a) + &sq(c) - &sq(b)) + &(c.clone() * &(sq(a) + &sq(d) - &sq(e)));
     let q_j = e.clone() * &(sq(a) + &sq(b) - &sq(c)) + &(b.clone() * &(sq(a) + &sq(e) - &sq(d)));
     strict_triangle(a, b, c) && strict_triangle(a, d, e) && positive(&q_i) && positive(&q_j)
@@ -156,7 +178,14 @@ pub fn check_euclidean_flips_preserve_cone_metric<T: Real>(
         ..FlipOptions::default()
     };
     match flip_to_delaunay(&mut m, &mut l, FlipKind::Euclidean, &opts) {
-        Ok(report) => verify_flip_sequence(mesh, lengths, &report.sequence, replay, prec),
+        Ok(report) => verify_flip_sequence_with(
+            mesh,
+            lengths,
+            &report.sequence,
+            replay,
+            prec,
+            &settings.progress,
+        ),
         Err(err) => Verdict::NotApplicable {
             reason: err.to_string(),
         },
@@ -182,14 +211,71 @@ pub fn check_euclidean_flips_preserve_cone_metric<T: Real>(
 ///   not certified, or some flip is not Euclidean: not refuted, not proved.
 ///
 /// `max_error` is the widest enclosure of a cone angle (an upper bound on any difference
-/// the comparison could have missed).
-#[allow(clippy::too_many_lines)]
+/// the comparison could have missed); `0` when the first rung proves the certified
+/// `Holds` (proof: B84), which establishes exact equality of the cone angles without
+/// enclosing them.
 pub fn verify_flip_sequence<T: Real>(
     mesh: &Mesh,
     lengths: &[T],
     sequence: &[Edge],
     replay: FlipKind,
     prec: u32,
+) -> Verdict {
+    verify_flip_sequence_with(mesh, lengths, sequence, replay, prec, &Progress::default())
+}
+
+/// [`verify_flip_sequence`], reporting the flips replayed to `progress`.
+pub fn verify_flip_sequence_with<T: Real>(
+    mesh: &Mesh,
+    lengths: &[T],
+    sequence: &[Edge],
+    replay: FlipKind,
+    prec: u32,
+    progress: &Progress,
+) -> Verdict {
+    let bits = prec;
+    let prec = match Precision::new(u64::from(bits)) {
+        Ok(p) => p,
+        Err(err) => {
+            return Verdict::NotApplicable {
+                reason: err.to_string(),
+            }
+        }
+    };
+    if lengths.len() != mesh.n_edges() {
+        return Verdict::NotApplicable {
+            reason: format!(
+                "{} lengths given for a mesh with {} edges",
+                lengths.len(),
+                mesh.n_edges()
+            ),
+        };
+    }
+    // The first rung (proof: B84): on f64 enclosures, MPFR only for what they leave open.
+    // When it proves every condition of a certified `Holds` of the comparison on MPFR
+    // enclosures, the exact cone angles are equal and nothing is left to compare.
+    if replay == FlipKind::Euclidean
+        && super::t23_first_rung::proved(mesh, lengths, sequence, prec, progress)
+    {
+        return Verdict::Holds {
+            certified: true,
+            max_error: 0.0,
+        };
+    }
+    verify_flip_sequence_on_mpfr(mesh, lengths, sequence, replay, bits, progress)
+}
+
+/// [`verify_flip_sequence`] without its first rung: the whole replay and both cone-angle
+/// comparisons on MPFR enclosures at `prec` bits (the verdicts of the first rung are
+/// those of this comparison, proof: B84; `max_error` is always the widest enclosure).
+#[allow(clippy::too_many_lines)]
+pub fn verify_flip_sequence_on_mpfr<T: Real>(
+    mesh: &Mesh,
+    lengths: &[T],
+    sequence: &[Edge],
+    replay: FlipKind,
+    prec: u32,
+    progress: &Progress,
 ) -> Verdict {
     let bits = prec;
     let prec = match Precision::new(u64::from(bits)) {
@@ -232,7 +318,9 @@ pub fn verify_flip_sequence<T: Real>(
     // Whether T23's lemma proves the exact cone angles equal: every flip Euclidean with its
     // hypotheses certified (no flip: the metric is unchanged).
     let mut proved = true;
+    let mut count = progress.counter("flips replayed on MPFR enclosures", sequence.len());
     for &e in sequence {
+        count.add(1);
         let quad = (e.idx() < replayed.n_edges())
             .then(|| QuadEdges::of(&replayed, e))
             .flatten();
@@ -265,6 +353,7 @@ pub fn verify_flip_sequence<T: Real>(
         enc[e.idx()] = new;
         let _ = replayed.flip(e);
     }
+    count.finish();
     let (before, after) = if undecided.is_empty() {
         (
             cone_angle_enclosures_at(mesh, &enc0, prec, &touched).ok(),

@@ -21,13 +21,16 @@ pub fn check_euclidean_equals_ptolemy_iff_cocircular<T: Real>(
     lengths: &[T],
     settings: &Settings,
 ) -> Verdict {
+    let mut count = settings.progress.counter("signs of D", mesh.n_edges());
     let signs: Vec<Option<Sign>> = mesh
         .edges()
         .map(|e| {
+            count.add(1);
             let q = QuadEdges::of(mesh, e)?;
             decide(&RealQuad(q.lengths(lengths)), &settings.ladder).value()
         })
         .collect();
+    count.finish();
     verify_cocircularity_signs(mesh, lengths, &signs, settings)
 }
 
@@ -49,7 +52,11 @@ pub fn verify_cocircularity_signs<T: Real>(
     let mut witnesses = Vec::new();
     let mut undecided = Vec::new();
     let fast = f64_enclosures(lengths);
+    let mut count = settings
+        .progress
+        .counter("new lengths compared", mesh.n_edges());
     for e in mesh.edges() {
+        count.add(1);
         let Some(q) = QuadEdges::of(mesh, e) else {
             continue;
         };
@@ -132,12 +139,13 @@ pub fn verify_cocircularity_signs<T: Real>(
             }),
         }
     }
+    count.finish();
     Verdict::certified(witnesses, undecided, settings.ladder.max_bits)
 }
 
 /// Outward `f64` enclosures of the lengths (B21): the point itself for `f64` values, the
 /// directed roundings of the exact value otherwise; `None` for a non-finite length.
-fn f64_enclosures<T: Real>(lengths: &[T]) -> Vec<Option<Interval<f64>>> {
+pub(crate) fn f64_enclosures<T: Real>(lengths: &[T]) -> Vec<Option<Interval<f64>>> {
     let exact_f64 = T::is_point()
         && lengths
             .first()

@@ -98,6 +98,8 @@ pub struct Settings {
     /// Multiplier `c` on the derived error bound for numerical checks (the bound itself
     /// comes from the precision and a `proofs/` B-ID; `c` is never tuned per test).
     pub slack: f64,
+    /// Where long checks report their progress over elements (no-op by default).
+    pub progress: super::progress::Progress,
 }
 
 impl Default for Settings {
@@ -105,6 +107,7 @@ impl Default for Settings {
         Settings {
             ladder: Ladder::default(),
             slack: 1.0,
+            progress: super::progress::Progress::default(),
         }
     }
 }

@@ -336,3 +336,25 @@ fn b19_negative_control_truncation_and_double_rounding_are_caught() {
     assert_eq!(twice, 1e-323);
     assert!(!same(twice, reference(&trap)));
 }
+
+/// `Real::ldexp_assign` scales by `2ᵏ` exactly for `|k|` beyond one binary64 exponent
+/// step: `2⁻¹⁰⁰⁰ · 2¹⁵⁰⁰ = 2⁵⁰⁰` and `2¹⁰⁰⁰ · 2⁻¹⁵⁰⁰ = 2⁻⁵⁰⁰` in f64 and Dd, compared
+/// with `f64::powi`-free bit patterns. Negative control: a scaling clamped to one step
+/// (`2⁻¹⁰⁰⁰ · 2¹⁰²³`) is a different number.
+#[test]
+fn ldexp_assign_is_exact_beyond_one_exponent_step() {
+    let pow = |e: i64| f64::from_bits(((e + 1023) as u64) << 52);
+    let mut x = pow(-1000);
+    x.ldexp_assign(1500);
+    assert_eq!(x, pow(500));
+    let mut y = pow(1000);
+    y.ldexp_assign(-1500);
+    assert_eq!(y, pow(-500));
+    let mut d = Dd::from_f64(pow(-1000));
+    d.ldexp_assign(1500);
+    assert_eq!(d.approx_f64(), pow(500));
+    let mut g = 1.0_f64;
+    Real::ldexp_assign(&mut g, 0);
+    assert_eq!(g, 1.0);
+    assert_ne!(pow(-1000) * pow(1023), pow(500));
+}

@@ -2,7 +2,7 @@
 //! search"): the shards of a run partition its case indices, and a malformed value stops
 //! the test harness with a message naming it.
 
-use crate::support::{parse_shard, shard_from, shard_indices};
+use crate::support::{parse_shard, shard_cases_of, shard_from, shard_indices};
 
 /// For every `n ≤ 9` and case count up to 40, the shards `0/n … (n−1)/n` together run every
 /// index exactly once, each index in the shard of its residue; outside the long mode, or
@@ -47,4 +47,27 @@ fn shards_partition_the_case_indices() {
 #[should_panic(expected = "PENNER_SHARD=\"4/4\": expected i/n")]
 fn malformed_shard_panics_with_its_value() {
     shard_from(Some("4/4"), true);
+}
+
+/// A generated batch (the never-fails families) is split by its case index: the shards
+/// together run every case exactly once. Negative control: without shard n − 1 some cases
+/// are missed.
+#[test]
+fn shards_partition_a_generated_batch() {
+    for n in 1..=7 {
+        for count in 0..=30 {
+            let batch: Vec<usize> = (0..count).map(|k| 1000 + k).collect();
+            let mut all: Vec<usize> = (0..n)
+                .flat_map(|i| shard_cases_of(&batch, (i, n)))
+                .collect();
+            all.sort_unstable();
+            assert_eq!(all, batch, "n = {n}, count = {count}");
+            if n > 1 && count >= n {
+                let partial: usize = (0..n - 1)
+                    .map(|i| shard_cases_of(&batch, (i, n)).len())
+                    .sum();
+                assert!(partial < count);
+            }
+        }
+    }
 }

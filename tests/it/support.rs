@@ -65,6 +65,20 @@ pub fn case_indices(default: usize, long: usize) -> impl Iterator<Item = usize> 
     shard_indices(cases(default, long), shard())
 }
 
+/// The cases of a generated batch this shard runs ([`shard`]): those whose index in the
+/// batch is in the shard (the whole batch outside the long mode or without
+/// `PENNER_SHARD`).
+pub fn shard_cases<T: Clone>(all: &[T]) -> Vec<T> {
+    shard_cases_of(all, shard())
+}
+
+/// The cases of `all` whose index `k` has `k ≡ i (mod n)`.
+pub fn shard_cases_of<T: Clone>(all: &[T], (i, n): (usize, usize)) -> Vec<T> {
+    shard_indices(all.len(), (i, n))
+        .map(|k| all[k].clone())
+        .collect()
+}
+
 /// The indices `k < count` with `k ≡ i (mod n)`.
 pub fn shard_indices(count: usize, (i, n): (usize, usize)) -> impl Iterator<Item = usize> {
     (0..count).skip(i).step_by(n.max(1))

@@ -642,3 +642,137 @@ fn t23_comparisons_refuse_bad_input_without_panicking() {
         Err(0)
     ));
 }
+
+/// The lengths of a planar quadrilateral with rational corners `p` (`planar_quad`'s mesh),
+/// as square roots of the exact squared lengths in MPFR at 256 bits.
+fn planar_quad_mpfr(p: &[[Rational; 2]; 4]) -> (Mesh, Vec<Mpfr>, Edge) {
+    use penner::scalar::Real;
+    let prec = Precision::new(256).unwrap();
+    let m = Mesh::from_faces(4, &[[0, 1, 2], [1, 0, 3]]).unwrap();
+    let l: Vec<Mpfr> = m
+        .edges()
+        .map(|e| {
+            let h = e.halfedge();
+            let (a, b) = (&p[m.tail(h).idx()], &p[m.tip(h).idx()]);
+            let dx = Rational::from(&a[0] - &b[0]);
+            let dy = Rational::from(&a[1] - &b[1]);
+            let sq = Rational::from(&dx * &dx) + Rational::from(&dy * &dy);
+            Mpfr::from_rational(&sq, prec).sqrt()
+        })
+        .collect();
+    let e = m.edges().find(|&e| QuadEdges::of(&m, e).is_some()).unwrap();
+    (m, l, e)
+}
+
+#[test]
+fn b84_first_rung_verdicts_equal_the_mpfr_comparison() {
+    use penner::theorems::progress::Progress;
+    use penner::theorems::t23_euclidean_flip_cone_metric::verify_flip_sequence_on_mpfr;
+    use penner::theorems::t23_first_rung::proved;
+    let quiet = Progress::default();
+    let mut by_rung = 0;
+    for seed in case_seeds(2, 20) {
+        let mut rng = ChaCha8Rng::seed_from_u64(84 + seed);
+        for (name, m0) in delta_complexes(seed) {
+            let (mut m, mut l) = (m0.clone(), cone_metric(&m0, &mut rng));
+            let n = 3 * m.n_edges();
+            scramble(&mut m, &mut l, n, &mut rng);
+            let (mut md, mut ld) = (m.clone(), l.clone());
+            let opts = FlipOptions {
+                record: true,
+                ..FlipOptions::default()
+            };
+            let seq = flip_to_delaunay(&mut md, &mut ld, FlipKind::Euclidean, &opts)
+                .unwrap()
+                .sequence;
+            for bits in [64, 128] {
+                let p = proved(&m, &l, &seq, Precision::new(bits).unwrap(), &quiet);
+                let fast = verify_flip_sequence(&m, &l, &seq, FlipKind::Euclidean, bits as u32);
+                let slow = verify_flip_sequence_on_mpfr(
+                    &m,
+                    &l,
+                    &seq,
+                    FlipKind::Euclidean,
+                    bits as u32,
+                    &quiet,
+                );
+                // The oracle: the whole comparison on MPFR enclosures.
+                if p {
+                    by_rung += 1;
+                    assert!(certified_holds(&slow), "{name}: {slow:?}");
+                    assert_eq!(
+                        fast,
+                        Verdict::Holds {
+                            certified: true,
+                            max_error: 0.0
+                        }
+                    );
+                } else {
+                    assert_eq!(fast, slow, "{name}");
+                }
+            }
+        }
+    }
+    assert!(by_rung > 20, "{by_rung} decided by the first rung");
+    // A quadrilateral whose triangle (i, j, k) is nearly flat (k at (2, 2⁻³⁰) over the
+    // diagonal from (0, 0) to (4, 0), so ℓ_jk + ℓ_ki − ℓ_ij ≈ 2⁻⁶¹): its strict triangle
+    // inequality is open on f64 enclosures of the 256-bit lengths and certified on the
+    // lazily built MPFR ones.
+    let r = |n: i64| Rational::from(n);
+    let tiny = Rational::from(1) >> 30u32;
+    let corners = |dy: &Rational| {
+        [
+            [r(0), r(0)],
+            [r(4), r(0)],
+            [r(2), dy.clone()],
+            [r(2), r(-1)],
+        ]
+    };
+    let (m, l, e) = planar_quad_mpfr(&corners(&tiny));
+    let q = QuadEdges::of(&m, e).unwrap();
+    let as_f64: Vec<Interval<f64>> = l
+        .iter()
+        .map(|x| {
+            use penner::scalar::Real;
+            Interval::<f64>::from_rational(&x.to_rational().unwrap(), ())
+        })
+        .collect();
+    assert!(!flip_hypotheses_certified(q.lengths(&as_f64)));
+    assert!(proved(&m, &l, &[e], Precision::new(128).unwrap(), &quiet));
+    let slow = verify_flip_sequence_on_mpfr(&m, &l, &[e], FlipKind::Euclidean, 128, &quiet);
+    assert!(certified_holds(&slow), "{slow:?}");
+    // Negative controls: the same quadrilateral with k on the diagonal (a degenerate
+    // triangle), and a reflex kite: the rung proves nothing, and the verdict is the MPFR
+    // comparison's.
+    let (m, l, e) = planar_quad_mpfr(&corners(&r(0)));
+    assert!(!proved(&m, &l, &[e], Precision::new(128).unwrap(), &quiet));
+    let slow = verify_flip_sequence_on_mpfr(&m, &l, &[e], FlipKind::Euclidean, 128, &quiet);
+    assert!(!certified_holds(&slow), "{slow:?}");
+    assert_eq!(
+        verify_flip_sequence(&m, &l, &[e], FlipKind::Euclidean, 128),
+        slow
+    );
+    // Convex at i by about 2⁻⁶¹ (k at (−1, 1), l at (1 + 2⁻⁶⁰, −1)): the hypotheses hold,
+    // but i lies almost on the new edge kl, whose flat triangle's corners are not enclosed.
+    let tiny = Rational::from(1) >> 60u32;
+    let (m, l, e) = planar_quad_mpfr(&[
+        [r(0), r(0)],
+        [r(4), r(0)],
+        [r(-1), r(1)],
+        [r(1) + &tiny, r(-1)],
+    ]);
+    assert!(!proved(&m, &l, &[e], Precision::new(128).unwrap(), &quiet));
+    assert_eq!(
+        verify_flip_sequence(&m, &l, &[e], FlipKind::Euclidean, 128),
+        verify_flip_sequence_on_mpfr(&m, &l, &[e], FlipKind::Euclidean, 128, &quiet)
+    );
+    let (m, l, e) = planar_quad([[0.0, 0.0], [4.0, 0.0], [-1.0, 1.0], [-1.0, -1.0]]);
+    assert!(!proved(&m, &l, &[e], Precision::new(128).unwrap(), &quiet));
+    assert!(certified_fails(&verify_flip_sequence(
+        &m,
+        &l,
+        &[e],
+        FlipKind::Euclidean,
+        128
+    )));
+}

@@ -1,0 +1,252 @@
+//! The maximal packing's radii: Newton's method in `f64` on the interior vertices with faer's
+//! sparse Cholesky of `H = −∂θ/∂u` ([`super::hyperbolic`]), then mixed-precision refinement
+//! in any backend `T` (MATH.md §7, as in the uniformization): the residual `2π − θ(u)` is
+//! evaluated in `T`, the correction solved with the `f64` factor of `H` at the `f64`
+//! solution. Each refinement step contracts the residual by about `κ(H)·u_f64` (a
+//! simplified Newton iteration), so a few steps reach `2⁻¹⁰⁰` from `10⁻¹³`.
+//!
+//! The stopping rules read `approx_f64` (heuristics): the packing is certified afterwards,
+//! on its circles ([`super::tangency`]).
+
+use super::hyperbolic::{angle_jacobian_triplets, angle_sums, radii_from_u};
+use crate::mesh::Mesh;
+use crate::scalar::Real;
+use faer::linalg::solvers::Solve;
+use faer::sparse::linalg::solvers::{Llt, SymbolicLlt};
+use faer::sparse::{SparseColMat, Triplet};
+use faer::{Mat, Side};
+
+/// Why the radii were not computed.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum MaximalSolveError {
+    /// The grounded Hessian was not numerically positive definite.
+    #[error("iteration {0}: the Hessian −∂θ/∂u is not numerically positive definite")]
+    Singular(usize),
+    /// No step decreased the residual.
+    #[error("iteration {iteration}: no step decreases |2π − θ| (residual {residual:e})")]
+    Stalled {
+        /// Iteration.
+        iteration: usize,
+        /// `max |2π − θ|` reached.
+        residual: f64,
+    },
+    /// The iteration cap was reached.
+    #[error("{iterations} iterations without convergence (residual {residual:e})")]
+    NoConvergence {
+        /// Iterations run.
+        iterations: usize,
+        /// `max |2π − θ|` reached.
+        residual: f64,
+    },
+}
+
+/// `H = −∂θ/∂u` on the interior vertices (`index[v]`), lower triangle, duplicates summed.
+fn hessian(mesh: &Mesh, t: &[f64], interior: &[bool], index: &[usize]) -> SparseColMat<usize, f64> {
+    let n = interior.iter().filter(|&&b| b).count();
+    let mut entries: Vec<(usize, usize, f64)> = angle_jacobian_triplets(mesh, t, interior)
+        .into_iter()
+        .map(|(i, j, v)| (index[i], index[j], -v))
+        .filter(|&(a, b, _)| a >= b)
+        .map(|(a, b, v)| (b, a, v))
+        .collect();
+    entries.sort_unstable_by_key(|&(c, r, _)| (c, r));
+    let mut t: Vec<Triplet<usize, usize, f64>> = Vec::with_capacity(entries.len());
+    for (c, r, v) in entries {
+        match t.last_mut() {
+            Some(last) if last.row == r && last.col == c => last.val += v,
+            _ => t.push(Triplet::new(r, c, v)),
+        }
+    }
+    SparseColMat::try_new_from_triplets(n, n, &t).expect("indices in range by construction")
+}
+
+/// A sparse Cholesky factor of `H` on the interior vertices.
+pub struct HessianFactor {
+    llt: Llt<usize, f64>,
+}
+
+impl HessianFactor {
+    /// Solve `H x = b`.
+    pub fn solve(&self, b: &[f64]) -> Vec<f64> {
+        let mut rhs = Mat::<f64>::from_fn(b.len(), 1, |i, _| b[i]);
+        self.llt.solve_in_place(rhs.as_mut());
+        (0..b.len()).map(|i| rhs[(i, 0)]).collect()
+    }
+}
+
+/// Factor `H` at `u` (numerically; `None` when not positive definite).
+fn factor(
+    mesh: &Mesh,
+    u: &[f64],
+    interior: &[bool],
+    index: &[usize],
+    symbolic: &mut Option<SymbolicLlt<usize>>,
+) -> Option<HessianFactor> {
+    let t = radii_from_u(u, interior);
+    let h = hessian(mesh, &t, interior, index);
+    if symbolic.is_none() {
+        *symbolic = Some(SymbolicLlt::try_new(h.symbolic(), Side::Lower).ok()?);
+    }
+    let s = symbolic.clone()?;
+    let llt = Llt::try_new_with_symbolic(s, h.as_ref(), Side::Lower).ok()?;
+    Some(HessianFactor { llt })
+}
+
+/// `2π − θ_v` on the interior vertices, in interior order.
+pub fn residual<T: Real>(mesh: &Mesh, u: &[T], interior: &[bool]) -> Vec<T> {
+    let t = radii_from_u(u, interior);
+    let theta = angle_sums(mesh, &t);
+    let two_pi = T::pi(u[0].ctx()) * &u[0].lit(2.0);
+    theta
+        .into_iter()
+        .zip(interior)
+        .filter(|(_, &i)| i)
+        .map(|(th, _)| two_pi.clone() - &th)
+        .collect()
+}
+
+fn max_abs<T: Real>(g: &[T]) -> f64 {
+    g.iter().map(|x| x.approx_f64().abs()).fold(0.0, f64::max)
+}
+
+fn norm2(g: &[f64]) -> f64 {
+    g.iter().map(|x| x * x).sum::<f64>().sqrt()
+}
+
+/// The `f64` solution: `u` per vertex (0 on the boundary, where `t = 1`), the factor of `H`
+/// at it, Newton iterations, and the final `max |2π − θ|`.
+pub struct F64Solution {
+    /// `ln t` per vertex (0 on horocycles).
+    pub u: Vec<f64>,
+    /// The sparse Cholesky factor of `H` at `u`.
+    pub factor: HessianFactor,
+    /// Newton iterations.
+    pub iterations: usize,
+    /// `max |2π − θ|` at `u`.
+    pub residual: f64,
+}
+
+/// Interior index of every vertex (`usize::MAX` on the boundary).
+pub fn interior_index(interior: &[bool]) -> Vec<usize> {
+    let mut k = 0;
+    interior
+        .iter()
+        .map(|&i| {
+            if i {
+                k += 1;
+                k - 1
+            } else {
+                usize::MAX
+            }
+        })
+        .collect()
+}
+
+/// Newton's method in `f64` from `start` (`u = ln tanh(r/2) < 0` per vertex, read on the
+/// interior vertices) until `max |2π − θ| ≤ tol`; the step is halved until the residual's
+/// 2-norm decreases and every `u` stays negative (`t < 1`).
+pub fn newton_f64(
+    mesh: &Mesh,
+    interior: &[bool],
+    start: &[f64],
+    tol: f64,
+    max_iter: usize,
+) -> Result<F64Solution, MaximalSolveError> {
+    let index = interior_index(interior);
+    let mut u: Vec<f64> = start
+        .iter()
+        .zip(interior)
+        .map(|(&x, &i)| if i { x } else { 0.0 })
+        .collect();
+    let mut symbolic = None;
+    let mut g = residual(mesh, &u, interior);
+    for it in 0..=max_iter {
+        let res = max_abs(&g);
+        let f = factor(mesh, &u, interior, &index, &mut symbolic)
+            .ok_or(MaximalSolveError::Singular(it))?;
+        if res <= tol {
+            return Ok(F64Solution {
+                u,
+                factor: f,
+                iterations: it,
+                residual: res,
+            });
+        }
+        if it == max_iter {
+            break;
+        }
+        let neg: Vec<f64> = g.iter().map(|x| -x).collect();
+        let d = f.solve(&neg);
+        let g_norm = norm2(&g);
+        let mut step = 1.0;
+        let mut accepted = None;
+        for _ in 0..60 {
+            let mut trial = u.clone();
+            let mut ok = true;
+            for (v, x) in trial.iter_mut().enumerate() {
+                if interior[v] {
+                    *x += step * d[index[v]];
+                    ok &= *x < 0.0 && x.is_finite();
+                }
+            }
+            if ok {
+                let gt = residual(mesh, &trial, interior);
+                if norm2(&gt) < g_norm {
+                    accepted = Some((trial, gt));
+                    break;
+                }
+            }
+            step *= 0.5;
+        }
+        let Some((trial, gt)) = accepted else {
+            return Err(MaximalSolveError::Stalled {
+                iteration: it,
+                residual: res,
+            });
+        };
+        u = trial;
+        g = gt;
+    }
+    Err(MaximalSolveError::NoConvergence {
+        iterations: max_iter,
+        residual: max_abs(&g),
+    })
+}
+
+/// Mixed-precision refinement of the `f64` solution in the backend of `ctx`: `u ← u + d`
+/// with `H d = −(2π − θ(u))` solved by the `f64` factor, the residual in `T`, until
+/// `max |2π − θ| ≤ tol` or `max_iter` steps. Returns `u` per vertex and the steps taken.
+pub fn refine<T: Real>(
+    mesh: &Mesh,
+    interior: &[bool],
+    sol: &F64Solution,
+    ctx: T::Ctx,
+    tol: f64,
+    max_iter: usize,
+) -> Result<(Vec<T>, usize), MaximalSolveError> {
+    let index = interior_index(interior);
+    let mut u: Vec<T> = sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect();
+    let mut g = residual(mesh, &u, interior);
+    for it in 0..max_iter {
+        let res = max_abs(&g);
+        if res <= tol {
+            return Ok((u, it));
+        }
+        let neg: Vec<f64> = g.iter().map(|x| -x.approx_f64()).collect();
+        let d = sol.factor.solve(&neg);
+        for (v, x) in u.iter_mut().enumerate() {
+            if interior[v] {
+                *x += &T::from_f64(d[index[v]], ctx);
+            }
+        }
+        g = residual(mesh, &u, interior);
+    }
+    let res = max_abs(&g);
+    if res <= tol {
+        return Ok((u, max_iter));
+    }
+    Err(MaximalSolveError::NoConvergence {
+        iterations: max_iter,
+        residual: res,
+    })
+}

@@ -1,0 +1,204 @@
+//! Circle packings on the unit sphere from a maximal packing of the punctured sphere
+//! (proofs/T11): the inverse stereographic projection from the south pole,
+//! `σ⁻¹(x, y) = (2x, 2y, 1 − |z|²)/(1 + |z|²)`, maps the disk `|z − c| < ρ` to the cap
+//! `{P ∈ S²: N·P > H}` with `N = (2c_x, 2c_y, 1 + ρ² − |c|²)` and `H = 1 + |c|² − ρ²`
+//! (substitute `x = P_x/(1 + P_z)`, `|z|² = (1 − P_z)/(1 + P_z)` in `|z − c|² < ρ²`). The
+//! punctured vertex gets the outside of the unit disk, the southern hemisphere
+//! `N = (0, 0, −1)`, `H = 0`.
+//!
+//! Two caps `(N, H)`, `(N', H')` are tangent from outside when their inversive distance
+//! `I = (HH' − N·N')/√((|N|² − H²)(|N'|² − H'²))` is 1 (`I = (cos a cos a' − cos δ)/(sin a
+//! sin a')` for angular radii `a, a'` and centre angle `δ`, proofs/B96), a Möbius invariant.
+
+use super::tangency::PackingVerdict;
+use crate::mesh::{Mesh, Vertex};
+use crate::scalar::{Interval, IntervalBound, Mpfr, Precision, Real, Sign};
+use rug::Rational;
+
+type I = Interval<Mpfr>;
+
+/// A spherical cap `{P: n·P > h}` on the unit sphere, `|n| = 1` (up to rounding).
+#[derive(Clone, Debug)]
+pub struct Cap<T> {
+    /// The unit normal: the cap's centre on the sphere.
+    pub normal: [T; 3],
+    /// `cos` of the angular radius.
+    pub height: T,
+}
+
+/// The cap of the plane disk of centre `c` and radius `ρ` (module docs), normalised.
+pub fn cap_of_disk<T: Real>(c: &[T; 2], rho: &T) -> Cap<T> {
+    let one = rho.one_like();
+    let cc = c[0].clone() * &c[0] + &(c[1].clone() * &c[1]);
+    let rr = rho.clone() * rho;
+    let n = [
+        c[0].clone() * &one.lit(2.0),
+        c[1].clone() * &one.lit(2.0),
+        one.clone() + &rr - &cc,
+    ];
+    let h = one + &cc - &rr;
+    let len = (n[0].clone() * &n[0] + &(n[1].clone() * &n[1]) + &(n[2].clone() * &n[2])).sqrt();
+    Cap {
+        normal: n.map(|x| x / &len),
+        height: h / &len,
+    }
+}
+
+/// The southern hemisphere: the cap of the outside of the unit disk.
+pub fn outer_cap<T: Real>(like: &T) -> Cap<T> {
+    Cap {
+        normal: [like.zero_like(), like.zero_like(), -like.one_like()],
+        height: like.zero_like(),
+    }
+}
+
+/// A cap with exact rational normal and height (not necessarily unit).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExactCap {
+    /// Normal `N`.
+    pub normal: [Rational; 3],
+    /// Height `H`.
+    pub height: Rational,
+}
+
+fn dot(a: &[Rational; 3], b: &[Rational; 3]) -> Rational {
+    Rational::from(&a[0] * &b[0]) + Rational::from(&a[1] * &b[1]) + Rational::from(&a[2] * &b[2])
+}
+
+fn det(a: &[Rational; 3], b: &[Rational; 3], c: &[Rational; 3]) -> Rational {
+    let m = |x: &Rational, y: &Rational| Rational::from(x * y);
+    m(&a[0], &(m(&b[1], &c[2]) - m(&b[2], &c[1]))) - m(&a[1], &(m(&b[0], &c[2]) - m(&b[2], &c[0])))
+        + m(&a[2], &(m(&b[0], &c[1]) - m(&b[1], &c[0])))
+}
+
+/// Check that `caps` (one per vertex) realize the closed triangulation `mesh` as a packing
+/// on the sphere within `ε`: every edge `|I − 1| ≤ ε` (inversive distance on `bits`-bit
+/// MPFR enclosures), every face `det(N_a, N_b, N_c) > 0` (exact), and around every vertex
+/// the neighbours' normals wind once (exact, measured in the plane orthogonal to `N_v`
+/// from a coordinate axis). `Fails` only on a proved violation.
+pub fn check_sphere_packing(
+    mesh: &Mesh,
+    caps: &[ExactCap],
+    eps: &Rational,
+    bits: u32,
+) -> PackingVerdict {
+    let prec = match Precision::new(u64::from(bits)) {
+        Ok(p) => p,
+        Err(e) => return PackingVerdict::Undecided(vec![e.to_string()]),
+    };
+    if caps.len() != mesh.n_vertices() {
+        return PackingVerdict::Fails(vec![format!(
+            "{} caps for {} vertices",
+            caps.len(),
+            mesh.n_vertices()
+        )]);
+    }
+    let (mut fails, mut undecided) = (Vec::new(), Vec::new());
+    let mut spread = Vec::with_capacity(caps.len());
+    for (v, c) in caps.iter().enumerate() {
+        // |N|² − H² > 0: a proper cap (neither empty nor the whole sphere).
+        let s = dot(&c.normal, &c.normal) - Rational::from(&c.height * &c.height);
+        if s <= 0 {
+            fails.push(format!("v{v}: not a proper cap (|N|² ≤ H²)"));
+        }
+        spread.push(s);
+    }
+    if !fails.is_empty() {
+        return PackingVerdict::Fails(fails);
+    }
+    let e = I::from_rational(eps, prec);
+    let mut max_defect = 0.0_f64;
+    for edge in mesh.edges() {
+        let h = edge.halfedge();
+        let (i, j) = (mesh.tail(h).idx(), mesh.tip(h).idx());
+        let num = Rational::from(&caps[i].height * &caps[j].height)
+            - dot(&caps[i].normal, &caps[j].normal);
+        let den = Rational::from(&spread[i] * &spread[j]);
+        let inv = I::from_rational(&num, prec) / &I::from_rational(&den, prec).sqrt();
+        let d = inv - &I::from_f64(1.0, prec);
+        max_defect = max_defect.max(d.abs().hi().to_f64_up());
+        let up = (e.clone() - &d).sign();
+        let down = (e.clone() + &d).sign();
+        if up == Some(Sign::Negative) || down == Some(Sign::Negative) {
+            fails.push(format!(
+                "edge e{} (v{i}, v{j}): inversive distance defect {:.3e} > ε",
+                edge.idx(),
+                d.approx_f64()
+            ));
+        } else if up != Some(Sign::Positive) || down != Some(Sign::Positive) {
+            undecided.push(format!(
+                "edge e{} (v{i}, v{j}): defect not separated from ε",
+                edge.idx()
+            ));
+        }
+    }
+    for f in mesh.faces() {
+        let [a, b, c] = mesh.face_vertices(f).map(Vertex::idx);
+        if det(&caps[a].normal, &caps[b].normal, &caps[c].normal) <= 0 {
+            fails.push(format!(
+                "face f{} (v{a}, v{b}, v{c}): centres not positively oriented",
+                f.idx()
+            ));
+        }
+    }
+    if fails.is_empty() {
+        for v in mesh.vertices() {
+            let w = winding(mesh, v, caps);
+            if w != 1 {
+                fails.push(format!(
+                    "v{}: the neighbours wind {w} times around it",
+                    v.idx()
+                ));
+            }
+        }
+    }
+    if !fails.is_empty() {
+        PackingVerdict::Fails(fails)
+    } else if !undecided.is_empty() {
+        PackingVerdict::Undecided(undecided)
+    } else {
+        PackingVerdict::Holds { max_defect }
+    }
+}
+
+/// Winding of the neighbours' normals around `N_v` (counter-clockwise seen from outside),
+/// counted as turns from the lower into the upper half of the plane orthogonal to `N_v`,
+/// the half-planes split by the projection of the coordinate axis `R` least aligned with
+/// `N_v`: upper when `det(N_v, R, N_k) > 0`, or `= 0` with a positive component along `R`.
+fn winding(mesh: &Mesh, v: Vertex, caps: &[ExactCap]) -> usize {
+    let nv = &caps[v.idx()].normal;
+    let axis = (0..3)
+        .min_by(|&a, &b| nv[a].clone().abs().cmp(&nv[b].clone().abs()))
+        .unwrap_or(0);
+    let mut r: [Rational; 3] = [Rational::new(), Rational::new(), Rational::new()];
+    r[axis] = Rational::from(1);
+    let nn = dot(nv, nv);
+    let rn = dot(&r, nv);
+    let upper = |nk: &[Rational; 3]| {
+        let s = det(nv, &r, nk);
+        s > 0 || (s == 0 && Rational::from(&nn * &dot(&r, nk)) > Rational::from(&rn * &dot(nv, nk)))
+    };
+    let mut ups: Vec<bool> = mesh
+        .outgoing(v)
+        .map(|h| upper(&caps[mesh.tip(h).idx()].normal))
+        .collect();
+    ups.reverse();
+    let n = ups.len();
+    (0..n).filter(|&k| !ups[k] && ups[(k + 1) % n]).count()
+}
+
+/// Exact caps from computed ones (any point backend).
+pub fn exact_caps<T: Real>(caps: &[Cap<T>]) -> Option<Vec<ExactCap>> {
+    caps.iter()
+        .map(|c| {
+            Some(ExactCap {
+                normal: [
+                    c.normal[0].to_rational()?,
+                    c.normal[1].to_rational()?,
+                    c.normal[2].to_rational()?,
+                ],
+                height: c.height.to_rational()?,
+            })
+        })
+        .collect()
+}

@@ -1,0 +1,231 @@
+//! Certifying that given circles realize a triangulation as a packing within `ε`
+//! (proofs/B95): for circles with exact rational centres `c_v` and radii `ρ_v > 0`,
+//!
+//! 1. every edge `ij`: `|‖c_i − c_j‖ − (ρ_i + ρ_j)| ≤ ε`, decided on an `Interval<Mpfr>`
+//!    enclosure of the defect (inclusion property, proofs/B20);
+//! 2. every face `abc`: the centres are positively oriented — the sign of
+//!    `(c_b − c_a) × (c_c − c_a)`, exact in ℚ;
+//! 3. every interior vertex: its neighbours' centres wind once around its centre — with
+//!    every turn positive (2.), the winding number is the count of turns from the lower
+//!    half-plane `[π, 2π)` into the upper `[0, π)`, exact in ℚ;
+//! 4. optionally (maximal packings in the unit disk): the marked circles are internally
+//!    tangent to the unit circle within `ε` (`|1 − ‖c‖ − ρ| ≤ ε`) and the others lie inside
+//!    it (`‖c‖ + ρ < 1`), on enclosures.
+//!
+//! `Fails` only when a violation is proved (an enclosure beyond `ε`, an exact negative
+//! orientation or a wrong winding number); an enclosure straddling the bound is
+//! `Undecided`.
+
+use crate::mesh::{Mesh, Vertex};
+use crate::scalar::{Interval, IntervalBound, Mpfr, Precision, Real, Sign};
+use rug::Rational;
+
+type I = Interval<Mpfr>;
+
+/// A circle with exact rational centre and radius.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExactCircle {
+    /// Centre `(x, y)`.
+    pub centre: [Rational; 2],
+    /// Radius.
+    pub radius: Rational,
+}
+
+/// The verdict on a claimed packing.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PackingVerdict {
+    /// Every condition proved; `max_defect` bounds every tangency defect from above.
+    Holds {
+        /// An upper bound on every `|‖c_i − c_j‖ − (ρ_i + ρ_j)|` (and boundary defect).
+        max_defect: f64,
+    },
+    /// Some condition is proved violated: the witnesses.
+    Fails(Vec<String>),
+    /// Nothing proved violated, something not proved: the reasons.
+    Undecided(Vec<String>),
+}
+
+/// `|d| ≤ ε` decided on the enclosure `d`: `Some(true)` proved, `Some(false)` refuted,
+/// `None` undecided.
+fn within(d: &I, eps: &I) -> Option<bool> {
+    let up = (eps.clone() - d).sign();
+    let down = (eps.clone() + d).sign();
+    if up == Some(Sign::Positive) && down == Some(Sign::Positive) {
+        Some(true)
+    } else if up == Some(Sign::Negative) || down == Some(Sign::Negative) {
+        Some(false)
+    } else {
+        None
+    }
+}
+
+fn cross(a: &[Rational; 2], b: &[Rational; 2], c: &[Rational; 2]) -> Rational {
+    let (bx, by) = (Rational::from(&b[0] - &a[0]), Rational::from(&b[1] - &a[1]));
+    let (cx, cy) = (Rational::from(&c[0] - &a[0]), Rational::from(&c[1] - &a[1]));
+    bx * cy - by * cx
+}
+
+/// Whether `d` is in the upper half-plane `[0, π)` (`y > 0`, or `y = 0` and `x > 0`).
+fn upper(d: &[Rational; 2]) -> bool {
+    d[1] > 0 || (d[1] == 0 && d[0] > 0)
+}
+
+/// Check the packing conditions (module docs) for `circles` (one per vertex) on `mesh`
+/// within `eps ≥ 0`, with MPFR intervals of `bits` bits; `unit_disk` marks the circles
+/// that must touch the unit circle from inside (`None`: no unit-disk conditions).
+pub fn check_packing(
+    mesh: &Mesh,
+    circles: &[ExactCircle],
+    eps: &Rational,
+    bits: u32,
+    unit_disk: Option<&[bool]>,
+) -> PackingVerdict {
+    let mut fails = Vec::new();
+    let mut undecided = Vec::new();
+    let prec = match Precision::new(u64::from(bits)) {
+        Ok(p) => p,
+        Err(e) => return PackingVerdict::Undecided(vec![e.to_string()]),
+    };
+    if circles.len() != mesh.n_vertices() {
+        return PackingVerdict::Fails(vec![format!(
+            "{} circles for {} vertices",
+            circles.len(),
+            mesh.n_vertices()
+        )]);
+    }
+    for (v, c) in circles.iter().enumerate() {
+        if c.radius <= 0 {
+            fails.push(format!("v{v}: radius {} is not positive", c.radius));
+        }
+    }
+    let e = I::from_rational(eps, prec);
+    let enc = |c: &ExactCircle| {
+        (
+            I::from_rational(&c.centre[0], prec),
+            I::from_rational(&c.centre[1], prec),
+            I::from_rational(&c.radius, prec),
+        )
+    };
+    let mut max_defect = 0.0_f64;
+    let mut record = |d: &I, what: String, fails: &mut Vec<String>, und: &mut Vec<String>| {
+        max_defect = max_defect.max(d.abs().hi().to_f64_up());
+        match within(d, &e) {
+            Some(true) => {}
+            Some(false) => fails.push(format!("{what}: defect {:.3e} > ε", d.approx_f64())),
+            None => und.push(format!(
+                "{what}: defect {:.3e} not separated from ε",
+                d.approx_f64()
+            )),
+        }
+    };
+    for edge in mesh.edges() {
+        let h = edge.halfedge();
+        let (i, j) = (mesh.tail(h).idx(), mesh.tip(h).idx());
+        let (xi, yi, ri) = enc(&circles[i]);
+        let (xj, yj, rj) = enc(&circles[j]);
+        let (dx, dy) = (xi - &xj, yi - &yj);
+        let dist = (dx.abs() * &dx.abs() + &(dy.abs() * &dy.abs())).sqrt();
+        let d = dist - &(ri + &rj);
+        record(
+            &d,
+            format!("edge e{} (v{i}, v{j})", edge.idx()),
+            &mut fails,
+            &mut undecided,
+        );
+    }
+    if let Some(marks) = unit_disk {
+        let one = I::from_f64(1.0, prec);
+        for (v, c) in circles.iter().enumerate() {
+            let (x, y, r) = enc(c);
+            let reach = (x.abs() * &x.abs() + &(y.abs() * &y.abs())).sqrt() + &r;
+            let gap = one.clone() - &reach;
+            if marks.get(v).copied().unwrap_or(false) {
+                record(
+                    &gap,
+                    format!("v{v} and the unit circle"),
+                    &mut fails,
+                    &mut undecided,
+                );
+            } else {
+                match gap.sign() {
+                    Some(Sign::Positive) => {}
+                    Some(Sign::Negative) => {
+                        fails.push(format!("v{v}: the circle leaves the unit disk"));
+                    }
+                    _ => undecided.push(format!("v{v}: inside the unit disk not proved")),
+                }
+            }
+        }
+    }
+    orientation_and_winding(mesh, circles, &mut fails);
+    if !fails.is_empty() {
+        PackingVerdict::Fails(fails)
+    } else if !undecided.is_empty() {
+        PackingVerdict::Undecided(undecided)
+    } else {
+        PackingVerdict::Holds { max_defect }
+    }
+}
+
+/// Conditions 2 and 3 of the module docs, exactly; violations are pushed to `fails`.
+fn orientation_and_winding(mesh: &Mesh, circles: &[ExactCircle], fails: &mut Vec<String>) {
+    for f in mesh.faces() {
+        let [a, b, c] = mesh.face_vertices(f).map(Vertex::idx);
+        let s = cross(&circles[a].centre, &circles[b].centre, &circles[c].centre);
+        if s <= 0 {
+            fails.push(format!(
+                "face f{} (v{a}, v{b}, v{c}): centres not positively oriented",
+                f.idx()
+            ));
+        }
+    }
+    if fails.is_empty() {
+        let boundary = mesh.boundary_vertices();
+        for v in mesh.vertices() {
+            if boundary[v.idx()] {
+                continue;
+            }
+            let w = winding(mesh, v, circles);
+            if w != 1 {
+                fails.push(format!(
+                    "v{}: the neighbours wind {w} times around it",
+                    v.idx()
+                ));
+            }
+        }
+    }
+}
+
+/// The number of turns of the neighbours of interior `v` around its centre from the lower
+/// into the upper half-plane, going counter-clockwise (exact; meaningful when every face
+/// at `v` is positively oriented).
+fn winding(mesh: &Mesh, v: Vertex, circles: &[ExactCircle]) -> usize {
+    let c = &circles[v.idx()].centre;
+    // `outgoing` turns clockwise: reverse it.
+    let mut dirs: Vec<[Rational; 2]> = mesh
+        .outgoing(v)
+        .map(|h| {
+            let p = &circles[mesh.tip(h).idx()].centre;
+            [Rational::from(&p[0] - &c[0]), Rational::from(&p[1] - &c[1])]
+        })
+        .collect();
+    dirs.reverse();
+    let n = dirs.len();
+    (0..n)
+        .filter(|&k| !upper(&dirs[k]) && upper(&dirs[(k + 1) % n]))
+        .count()
+}
+
+/// Exact circles from computed ones (any point backend): `None` if a value has no exact
+/// value (an enclosure or a non-finite number).
+pub fn exact_circles<T: Real>(circles: &[super::layout::Circle<T>]) -> Option<Vec<ExactCircle>> {
+    circles
+        .iter()
+        .map(|c| {
+            Some(ExactCircle {
+                centre: [c.centre[0].to_rational()?, c.centre[1].to_rational()?],
+                radius: c.radius.to_rational()?,
+            })
+        })
+        .collect()
+}

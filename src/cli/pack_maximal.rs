@@ -1,0 +1,161 @@
+//! `penner pack SURFACE (--disk | --sphere)`: the Koebe–Andreev–Thurston maximal packing
+//! (`penner::circles::maximal`, proofs/T11), refined at `--bits`, tangency certified within
+//! `--epsilon` (B95, B96), written as JSON (`-o`) and drawn as SVG (`--svg`).
+
+use super::error::{code, CliError};
+use super::files::{create_new, emit};
+use super::input::load_case;
+use penner::circles::maximal::layout::Circle;
+use penner::circles::maximal::sphere::{check_sphere_packing, exact_caps};
+use penner::circles::maximal::svg::render_disk_svg;
+use penner::circles::maximal::tangency::{check_packing, exact_circles, PackingVerdict};
+use penner::circles::maximal::{maximal_disk, maximal_sphere, DiskPacking, Options as Opts};
+use penner::scalar::{parse_rational, Mpfr, Precision, Real};
+use rug::Rational;
+use serde_json::{json, Value};
+use std::fmt::Write as _;
+use std::io::Write;
+use std::path::Path;
+
+/// What `penner pack --disk/--sphere` was asked.
+pub struct Options<'a> {
+    /// The surface file.
+    pub path: &'a Path,
+    /// Sphere (else disk).
+    pub sphere: bool,
+    /// The puncture vertex of a sphere.
+    pub puncture: usize,
+    /// MPFR bits (53: f64).
+    pub bits: u32,
+    /// ε as given.
+    pub epsilon: &'a str,
+    /// SVG output.
+    pub svg: Option<&'a Path>,
+    /// JSON output.
+    pub output: Option<&'a Path>,
+}
+
+fn write_new(path: &Path, text: &str) -> Result<(), CliError> {
+    let mut f = create_new(path)?;
+    f.write_all(text.as_bytes())
+        .and_then(|()| f.flush())
+        .map_err(|e| CliError::Write {
+            path: path.to_path_buf(),
+            reason: e.to_string(),
+        })
+}
+
+fn to_f64<T: Real>(circles: &[Circle<T>]) -> Vec<Circle<f64>> {
+    circles
+        .iter()
+        .map(|c| Circle {
+            centre: [c.centre[0].approx_f64(), c.centre[1].approx_f64()],
+            radius: c.radius.approx_f64(),
+        })
+        .collect()
+}
+
+fn exact_string(q: &Rational) -> Value {
+    Value::String(q.to_string())
+}
+
+/// Run the maximal packing: exit 0 when tangency is certified within ε, 1 when a violation
+/// is proved, 2 when undecided, 3 on bad input or when no packing is computed, 4 when an
+/// output cannot be written.
+pub fn run(o: &Options) -> Result<u8, CliError> {
+    let shown = o.path.display().to_string();
+    let eps = parse_rational(o.epsilon)
+        .map_err(|e| CliError::Input(format!("--epsilon {}: {e}", o.epsilon)))?;
+    if eps < 0 {
+        return Err(CliError::Input(format!(
+            "--epsilon {}: must be ≥ 0",
+            o.epsilon
+        )));
+    }
+    let prec = Precision::new(u64::from(o.bits))
+        .map_err(|e| CliError::Input(format!("--bits {}: {e}", o.bits)))?;
+    let case = load_case(o.path)?;
+    let bad = |e: penner::circles::maximal::MaximalError| CliError::Input(format!("{shown}: {e}"));
+    let opts = Opts::default();
+    // The sphere's caps (exact) next to the disk packing.
+    let (disk, caps): (DiskPacking<Mpfr>, Option<Vec<_>>) = if o.sphere {
+        let s = maximal_sphere::<Mpfr>(&case.mesh, o.puncture, prec, &opts).map_err(bad)?;
+        let caps = exact_caps(&s.caps)
+            .ok_or_else(|| CliError::Input(format!("{shown}: a cap is not finite")))?;
+        (s.disk, Some(caps))
+    } else {
+        (
+            maximal_disk::<Mpfr>(&case.mesh, prec, &opts).map_err(bad)?,
+            None,
+        )
+    };
+    let circles = exact_circles(&disk.circles)
+        .ok_or_else(|| CliError::Input(format!("{shown}: a circle is not finite")))?;
+    let cert_bits = 2 * o.bits.max(64);
+    let marks: Vec<bool> = disk.interior.iter().map(|b| !b).collect();
+    let verdict = match &caps {
+        Some(c) => check_sphere_packing(&case.mesh, c, &eps, cert_bits),
+        None => check_packing(&disk.mesh, &circles, &eps, cert_bits, Some(&marks)),
+    };
+    let mut text = format!(
+        "{}: maximal packing ({}), {} vertices, {} Newton iterations (f64, residual {:.1e}), {} refinement steps at {} bits\n",
+        case.name,
+        if o.sphere { "sphere punctured at v".to_string() + &o.puncture.to_string() } else { "disk".into() },
+        case.mesh.n_vertices(),
+        disk.newton_iterations,
+        disk.f64_residual,
+        disk.refinement_steps,
+        o.bits
+    );
+    let (status, exit) = match &verdict {
+        PackingVerdict::Holds { max_defect } => {
+            let _ = writeln!(
+                text,
+                "certified (B95{}): every tangency within ε = {} (largest defect ≤ {max_defect:.1e}), every face positively oriented, every vertex wound once",
+                if o.sphere { ", B96" } else { "" },
+                o.epsilon
+            );
+            ("holds", code::HOLDS)
+        }
+        PackingVerdict::Fails(w) => {
+            let _ = writeln!(text, "fails: {}", w.join("; "));
+            ("fails", code::FAILS)
+        }
+        PackingVerdict::Undecided(w) => {
+            let _ = writeln!(text, "undecided: {}", w.join("; "));
+            ("undecided", code::UNDECIDED)
+        }
+    };
+    if let Some(out) = o.output {
+        let mut doc = json!({
+            "penner_pack": 1,
+            "mode": if o.sphere { "sphere" } else { "disk" },
+            "status": status,
+            "epsilon": o.epsilon,
+            "faces": disk.mesh.face_list(),
+            "centres": circles.iter().map(|c| json!([exact_string(&c.centre[0]), exact_string(&c.centre[1])])).collect::<Vec<_>>(),
+            "radii": circles.iter().map(|c| exact_string(&c.radius)).collect::<Vec<_>>(),
+            "unit_disk": marks,
+        });
+        if let Some(c) = &caps {
+            doc["puncture"] = json!(o.puncture);
+            doc["caps"] = c
+                .iter()
+                .map(|c| {
+                    json!({
+                        "normal": c.normal.iter().map(exact_string).collect::<Vec<_>>(),
+                        "height": exact_string(&c.height),
+                    })
+                })
+                .collect();
+        }
+        write_new(out, &(doc.to_string() + "\n"))?;
+        let _ = writeln!(text, "wrote {}", out.display());
+    }
+    if let Some(out) = o.svg {
+        write_new(out, &render_disk_svg(&disk.mesh, &to_f64(&disk.circles)))?;
+        let _ = writeln!(text, "wrote {}", out.display());
+    }
+    emit(&text)?;
+    Ok(exit)
+}
