@@ -2,7 +2,10 @@
 //! the sparse Hessian assembly (`penner::variational::energy`) on a closed mesh with 10⁵
 //! faces (a 250 × 200 jittered torus grid), in f64, double-double and MPFR-256, and the
 //! cone-angle kernel alone (`geometry::cone_angles`, f64) on the same mesh for the ratio
-//! (E + ∇E + H at f64) / (cone angles at f64).
+//! (E + ∇E + H at f64) / (cone angles at f64). The input of `E` is the scaled logarithmic
+//! lengths `λ̃` (computed once, outside the timing, as a Newton step would keep them);
+//! `pattern_reused` times the same with the Hessian's sparsity pattern built once, and
+//! `gradient_hessian` without `E` (no Lobachevsky function).
 //!
 //! Run: `cargo bench --bench energy -- --measurement-time 5 --warm-up-time 1`.
 //! `PENNER_BENCH_FACES_GRID=NU,NV` picks another grid (2·NU·NV faces).
@@ -18,17 +21,19 @@ use meshgen::jittered_torus;
 use penner::geometry::cone_angles::cone_angles;
 use penner::mesh::Mesh;
 use penner::scalar::{Dd, Mpfr, Precision, Real};
-use penner::variational::energy::{energy_at, gradient_at, hessian_at, log_lengths};
+use penner::special::lobachevsky;
+use penner::variational::energy::{
+    energy_gradient_hessian_at, energy_gradient_hessian_with, gradient_at, hessian_at, log_lengths,
+};
+use penner::variational::pattern::HessianPattern;
+use penner::variational::triangle::angles_from_log_lengths;
 use std::hint::black_box;
 
-/// `E`, `∇E` and the Hessian from the lengths (log lengths, `u = 0`, targets 2π).
-fn energy_all<T: Real>(mesh: &Mesh, l: &[T], u: &[T], t: &[T]) -> usize {
-    let lt = log_lengths(l);
-    let e = energy_at(mesh, &lt, u, t);
-    let g = gradient_at(mesh, &lt, t);
-    let h = hessian_at(mesh, &lt);
-    black_box((e, g));
-    h.dim()
+/// `E`, `∇E` and the Hessian from the log lengths `λ̃` (`u = 0`, targets 2π).
+fn energy_all<T: Real>(mesh: &Mesh, lt: &[T], u: &[T], t: &[T]) -> usize {
+    let parts = energy_gradient_hessian_at(mesh, lt, u, t);
+    black_box((parts.energy, parts.gradient));
+    parts.hessian.dim()
 }
 
 fn run<T: Real>(
@@ -39,11 +44,25 @@ fn run<T: Real>(
     ctx: T::Ctx,
 ) {
     let l: Vec<T> = len.iter().map(|&x| T::from_f64(x, ctx)).collect();
+    let lt = log_lengths(&l);
     let n = mesh.n_vertices();
     let u = vec![T::from_f64(0.0, ctx); n];
     let t = vec![T::pi(ctx) * &T::from_f64(2.0, ctx); n];
     g.bench_function(BenchmarkId::new("energy_gradient_hessian", name), |b| {
-        b.iter(|| black_box(energy_all(mesh, black_box(&l), &u, &t)));
+        b.iter(|| black_box(energy_all(mesh, black_box(&lt), &u, &t)));
+    });
+    let pattern = HessianPattern::new(mesh);
+    g.bench_function(BenchmarkId::new("pattern_reused", name), |b| {
+        b.iter(|| {
+            let p = energy_gradient_hessian_with(&pattern, mesh, black_box(&lt), &u, &t);
+            black_box(p.energy)
+        });
+    });
+    g.bench_function(BenchmarkId::new("gradient_hessian", name), |b| {
+        b.iter(|| {
+            let gr = gradient_at(mesh, black_box(&lt), &t);
+            black_box((gr, hessian_at(mesh, &lt).dim()))
+        });
     });
 }
 
@@ -64,6 +83,30 @@ fn bench_energy(c: &mut Criterion) {
     g.sample_size(10);
     g.bench_function(BenchmarkId::new("cone_angles", "f64"), |b| {
         b.iter(|| black_box(cone_angles(&mesh, black_box(&len))));
+    });
+    g.bench_function(BenchmarkId::new("hessian_pattern", "f64"), |b| {
+        b.iter(|| black_box(HessianPattern::new(black_box(&mesh)).dim()));
+    });
+    // Л alone on the mesh's 3·10⁵ corner angles (its share of E + ∇E + H at f64).
+    let lt64 = log_lengths(&len);
+    let angles: Vec<f64> = mesh
+        .faces()
+        .flat_map(|f| {
+            let x = mesh.face_halfedges(f).map(|h| lt64[h.edge().idx()]);
+            angles_from_log_lengths(&x)
+        })
+        .collect();
+    g.bench_function(BenchmarkId::new("lobachevsky_of_angles", "f64"), |b| {
+        b.iter(|| {
+            let s: f64 = black_box(&angles).iter().map(lobachevsky).sum();
+            black_box(s)
+        });
+    });
+    g.bench_function(BenchmarkId::new("atan_of_angles", "f64"), |b| {
+        b.iter(|| {
+            let s: f64 = black_box(&angles).iter().copied().map(f64::atan).sum();
+            black_box(s)
+        });
     });
     run::<f64>(&mut g, "f64", &mesh, &len, ());
     run::<Dd>(&mut g, "dd", &mesh, &len, ());

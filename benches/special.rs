@@ -25,6 +25,18 @@ fn bench(c: &mut Criterion) {
     g.bench_function("f64", |b| {
         b.iter(|| xs.iter().map(|x| lobachevsky(black_box(x))).sum::<f64>());
     });
+    // Triangle angles in (0, π): the native double-double range of B55.
+    let angles: Vec<Dd> = (0..64)
+        .map(|i| Dd::from_f64(std::f64::consts::PI * (f64::from(i) + 0.37) / 64.0))
+        .collect();
+    g.bench_function("dd-angles", |b| {
+        b.iter(|| {
+            angles
+                .iter()
+                .map(|x| lobachevsky(black_box(x)).approx_f64())
+                .sum::<f64>()
+        });
+    });
     let dd: Vec<Dd> = xs.iter().map(|&x| Dd::from_f64(x)).collect();
     g.bench_function("dd", |b| {
         b.iter(|| {

@@ -74,6 +74,24 @@ impl<T: Real> SparseMatrix<T> {
         }
     }
 
+    /// A matrix from its compressed-sparse-row parts (rows `row_ptr[i]..row_ptr[i+1]` of
+    /// `col`/`val`, columns sorted and distinct within a row), as built by a precomputed
+    /// pattern. Callers inside the crate guarantee the layout.
+    pub(crate) fn from_csr_parts(
+        n: usize,
+        row_ptr: Vec<usize>,
+        col: Vec<usize>,
+        val: Vec<T>,
+    ) -> SparseMatrix<T> {
+        debug_assert!(row_ptr.len() == n + 1 && col.len() == val.len());
+        SparseMatrix {
+            n,
+            row_ptr,
+            col,
+            val,
+        }
+    }
+
     /// The dimension `n`.
     pub fn dim(&self) -> usize {
         self.n

@@ -33,8 +33,9 @@ fn may_contain(a: &Float, b: &Float, c_sixths: i32) -> bool {
     let c = Float::with_val(w, &pi * c_sixths) / 6u32;
     let ua = Float::with_val(w, a - &c) / &pi;
     let ub = Float::with_val(w, b - &c) / &pi;
-    // Rounding errors are below 2^(e−w+2) = 2⁻⁶⁷ ≪ δ = 2⁻⁸.
-    let delta = Float::with_val(w, 0.00390625);
+    // Rounding errors are below 2^(e−w+2) = 2⁻⁶⁷ < δ = 2⁻⁶⁰ (a wider δ only widens
+    // enclosures of narrow intervals next to ±π/6 to the whole range [−M, M]).
+    let delta = Float::with_val(w, 1) >> 60u32;
     let lo = Float::with_val(w, &ua - &delta).ceil();
     let hi = Float::with_val(w, &ub + &delta).floor();
     hi >= lo

@@ -9,8 +9,9 @@
 //! `Л(π/2 + t) = −t (log 2 − Σ (4ⁿ − 1) aₙ t²ⁿ)` for odd `k`, `|t| ≤ 1/2`; each converges
 //! at least 8.5× per term. The coefficients are enclosed in MPFR once per precision.
 //!
-//! Per backend: `f64` has a dedicated binary64 path (B53); `Dd`, `Mpfr` evaluate in MPFR at
-//! `p + 32..p + 95` bits and round once; `Dual<T>` adds the derivative
+//! Per backend: `f64` has a dedicated binary64 path (B53); `Dd` a double-double path for
+//! `|x| ≤ 3.9` (B55); `Mpfr` (and `Dd` elsewhere) evaluate in MPFR at `p + 32..p + 95`
+//! bits and round once; `Dual<T>` adds the derivative
 //! `Л′(x) = −log|2 sin x|`; `Interval<Mpfr>` and `Interval<f64>` return the rigorous
 //! enclosure of [`lobachevsky_enclosure`](super::lobachevsky_enclosure).
 //!
@@ -25,6 +26,7 @@
 
 use super::enclosure::lobachevsky_enclosure;
 use super::eval::point;
+use super::fast_dd::lobachevsky_dd;
 use super::fast_f64::lobachevsky_f64;
 use crate::scalar::{Dd, Interval, Mpfr, Precision, Real};
 use rug::float::Round;
@@ -48,6 +50,7 @@ fn exact_float(q: &Rational) -> Float {
 }
 
 /// `Л(x)` for an `f64`: the binary64 path, or MPFR rounded once when it declines.
+#[inline]
 fn lobachevsky_f64_any(x: f64) -> f64 {
     if let Some(y) = lobachevsky_f64(x) {
         return y;
@@ -81,7 +84,8 @@ fn interval_f64(x: &Interval<f64>) -> Interval<f64> {
 /// `Л′(x) = −log|2 sin x|`, `Л(x) ≈ x(1 − log|2x|)` near 0; the maximum is
 /// `Л(π/6) = 0.50747080…`.
 ///
-/// Accuracy (proofs/B52, B53): `f64` within a few ulps (measured), `Dd` and `Mpfr`-p within
+/// Accuracy (proofs/B52, B53, B55): `f64` within a few ulps (measured), `Dd` within 4
+/// units of `2⁻¹⁰⁶` for `|x| ≤ 3.9` (measured) and `Dd` elsewhere and `Mpfr`-p within
 /// one ulp plus `2⁻³⁰` ulp, for every finite argument whose reduction needs at most 2²⁰
 /// bits of π (otherwise NaN). On `Interval<Mpfr>` / `Interval<f64>` the result is a
 /// rigorous enclosure; on `Dual<T>` the derivative part is `d·Л′(v)` (second order exact
@@ -89,6 +93,11 @@ fn interval_f64(x: &Interval<f64>) -> Interval<f64> {
 pub fn lobachevsky<T: Real>(x: &T) -> T {
     if let Some(v) = cast::<T, f64>(x) {
         return cast::<f64, T>(&lobachevsky_f64_any(v)).unwrap_or_else(|| nan_like(x));
+    }
+    if let Some(v) = cast::<T, Dd>(x) {
+        if let Some(y) = lobachevsky_dd(v) {
+            return cast::<Dd, T>(&y).unwrap_or_else(|| nan_like(x));
+        }
     }
     if let Some(v) = cast::<T, Interval<Mpfr>>(x) {
         return cast::<Interval<Mpfr>, T>(&lobachevsky_enclosure(&v))

@@ -5,6 +5,7 @@
 mod coefficients;
 mod enclosure;
 mod eval;
+mod fast_dd;
 mod fast_f64;
 pub mod lobachevsky;
 mod reduce;

@@ -38,6 +38,7 @@ pub mod t28_ptolemy_flip;
 pub mod t29_euclidean_ptolemy_cocircular;
 pub mod t30_lobachevsky;
 pub mod t31_schlafli;
+pub mod t32_difference;
 pub mod t32_energy;
 pub mod t33_hyperbolic;
 pub mod t34_steiner_rivin;

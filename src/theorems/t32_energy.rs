@@ -14,11 +14,12 @@
 use super::bounds::{cot_error, eps, eps_shift, sum_error, SAFETY};
 use super::energy_bounds::{face_angle_error, face_energy_error, schlafli_error, slack_condition};
 use super::report::{check_lengths, lengths_out_of_range, Tally};
+use super::t32_difference::{derivative_enclosure, distance_outside};
 use super::verdict::{Settings, Verdict, Witness};
 use crate::geometry::laplacian::SparseMatrix;
 use crate::mesh::{Face, HalfEdge, Mesh};
 use crate::predicates::tolerance::sign_beyond;
-use crate::scalar::{Dual, Mpfr, Precision, Real, Sign};
+use crate::scalar::{Dual, Real, Sign};
 use crate::variational::energy::{
     energy, gradient, hessian, hessian_at, log_lengths, scaled_log_lengths,
 };
@@ -172,11 +173,12 @@ pub fn check_energy<T: Real>(
 
 /// `∇E = g` against claimed `g` (one per vertex), along each direction `d`:
 /// (1) the dual-number derivative `D_d E` equals `g·d` within proofs/B57 (B56 per face plus
-/// the angle errors of `Θ − θ`, B40, and the sums, B41); (2) an independent central finite
-/// difference `(E(u+hd) − E(u−hd))/2h` at twice the working precision (MPFR, `2p` bits,
-/// `h = 2^{−⌈p/2⌉}`) equals `g·d` within the angle part of that bound plus the difference's
-/// own error `SAFETY·ε(|D³_d E|/48 + 2^{1−p/2} S_E)` (B57; `D³_d E` by dual numbers of the
-/// Hessian, `S_E` the sum of the magnitudes of `E`'s terms). Witnesses `d{k}`, `fd{k}`.
+/// the angle errors of `Θ − θ`, B40, and the sums, B41); (2) `g·d` lies in the enclosure
+/// of `E′(u)·d` made of the central difference `(E(u+hd) − E(u−hd))/2h` on
+/// `Interval<Mpfr>` at twice the working precision (`h = 2^{−⌈p/2⌉}`) widened by the
+/// rigorous truncation bound `(h²/6) max|E‴|` over the segment (proofs/B57), up to the
+/// angle part of B57 and the sums (the error of the claimed `g·d` itself). Witnesses
+/// `d{k}`, `fd{k}`; a face not certified proper near `u` makes `fd{k}` undecided.
 pub fn verify_gradient<T: Real>(
     input: &EnergyInput<'_, T>,
     claimed: &[T],
@@ -238,80 +240,30 @@ pub fn verify_gradient<T: Real>(
         let sums = sum_error(terms.iter().copied(), e);
         let tol = settings.slack * (angle_part + schlafli_part + 2.0 * sums);
         tally.within(format!("d{k}"), "D_d E − (Θ−θ)·d", &(ed.d - &gd), tol);
-        // (2) Central finite difference at twice the precision.
-        match finite_difference(input, &lambda, d, bits) {
-            Some((fd_err, third, size)) => {
-                let gd_hi = gd.to_rational();
-                let own = SAFETY
-                    * e
-                    * (third.abs() / 48.0 + 2.0 * (-(f64::from(bits)) / 2.0).exp2() * size);
-                let tol = settings.slack * (angle_part + sums + own);
-                match gd_hi {
-                    Some(q) => {
-                        let p2 = fd_err.ctx();
-                        let err = fd_err - &Mpfr::from_rational(&q, p2);
-                        tally.within(format!("fd{k}"), "finite difference − (Θ−θ)·d", &err, tol);
-                    }
-                    None => tally.undecided(format!("fd{k}"), "g·d not finite", f64::NAN),
+        // (2) The enclosure of E′(u)·d by central differences at twice the precision with
+        // a rigorous truncation bound (B57): only the claimed g·d carries a tolerance.
+        match derivative_enclosure(mesh, &lambda, input.u, input.targets, d, bits) {
+            Some(enc) => match gd.to_rational() {
+                Some(q) => {
+                    let out = distance_outside(&q, &enc);
+                    let tol = settings.slack * (angle_part + sums);
+                    tally.within(
+                        format!("fd{k}"),
+                        "(Θ−θ)·d outside the difference enclosure of E′·d",
+                        &out,
+                        tol,
+                    );
                 }
-            }
-            None => tally.undecided(format!("fd{k}"), "finite difference not formed", f64::NAN),
+                None => tally.undecided(format!("fd{k}"), "g·d not finite", f64::NAN),
+            },
+            None => tally.undecided(
+                format!("fd{k}"),
+                "difference enclosure not formed (a face not certified proper near u)",
+                f64::NAN,
+            ),
         }
     }
     tally.verdict()
-}
-
-/// `(fd, D³_d E, S_E)`: the central difference of `E` along `d` at `2p` bits, the third
-/// directional derivative at the working precision (dual numbers of `dᵀ H d`), and the
-/// size `Σ|2f| + (π/2)Σ|λ̃| + Σ|Θ_i u_i|` of `E`'s terms.
-fn finite_difference<T: Real>(
-    input: &EnergyInput<'_, T>,
-    lambda: &[T],
-    d: &[T],
-    bits: u32,
-) -> Option<(Mpfr, f64, f64)> {
-    let mesh = input.mesh;
-    let p2 = Precision::new(u64::from(2 * bits)).ok()?;
-    let hi = |v: &[T]| -> Option<Vec<Mpfr>> {
-        v.iter()
-            .map(|x| Some(Mpfr::from_rational(&x.to_rational()?, p2)))
-            .collect()
-    };
-    let (l2, u2, t2, d2) = (hi(lambda)?, hi(input.u)?, hi(input.targets)?, hi(d)?);
-    let h = Mpfr::from_f64((-f64::from(bits.div_ceil(2))).exp2(), p2);
-    let shift = |s: f64| -> Vec<Mpfr> {
-        u2.iter()
-            .zip(&d2)
-            .map(|(a, b)| a.clone() + &(b.clone() * &h * &h.lit(s)))
-            .collect()
-    };
-    let ep = energy(mesh, &l2, &shift(1.0), &t2)?;
-    let em = energy(mesh, &l2, &shift(-1.0), &t2)?;
-    let fd = (ep - &em) / &(h.clone() * &h.lit(2.0));
-    // D³_d E = d/dt (dᵀ H(u + t d) d).
-    let lt = scaled_log_lengths(mesh, &constants(lambda), &dual_u(input.u, d));
-    let hd = hessian_at(mesh, &lt);
-    let dd = constants(d);
-    let hdd = hd.mul_vec(&dd)?;
-    let q = hdd
-        .iter()
-        .zip(&dd)
-        .fold(dd[0].zero_like(), |s, (a, b)| s + &(a.clone() * b));
-    let ltf = scaled_log_lengths(mesh, lambda, input.u);
-    let mut size: f64 = 0.0;
-    for f in mesh.faces() {
-        let fd = face_data(mesh, f, &ltf);
-        size += (0..3)
-            .map(|m| (fd.alpha[m] * fd.x[m]).abs() + 1.0 + std::f64::consts::PI * fd.x[m].abs())
-            .sum::<f64>();
-    }
-    size += input
-        .targets
-        .iter()
-        .zip(input.u)
-        .map(|(t, u)| (t.approx_f64() * u.approx_f64()).abs())
-        .sum::<f64>();
-    Some((fd, q.d.approx_f64(), size))
 }
 
 /// The Hessian of `E` is `hessian` (the cotan Laplacian): along each direction `d`, the

@@ -32,7 +32,8 @@
 //! assert!(energy(&m, &lambda, &u, &t).unwrap().is_finite());
 //! ```
 
-use super::triangle::{angles_from_log_lengths, cotangents, triangle_energy};
+use super::pattern::HessianPattern;
+use super::triangle::{angles_from_log_lengths, face_terms, triangle_energy};
 use crate::algorithms::flip_scaled::flip_to_delaunay_scaled;
 use crate::algorithms::flip_to_delaunay::{FlipKind, FlipOptions, FlipReport, FlipToDelaunayError};
 use crate::geometry::laplacian::SparseMatrix;
@@ -123,29 +124,125 @@ pub fn gradient<T: Real>(mesh: &Mesh, lambda: &[T], u: &[T], targets: &[T]) -> V
     gradient_at(mesh, &scaled_log_lengths(mesh, lambda, u), targets)
 }
 
-/// The Hessian of `E`, the cotan Laplacian `H = −L` (module doc), assembled sparse
-/// ([`SparseMatrix::from_triplets`]) face by face from the cotangents of
-/// [`cotangents`] (scale-free per face, so no length over- or underflows): each side
+/// The Hessian of `E`, the cotan Laplacian `H = −L` (module doc), assembled sparse on the
+/// [`HessianPattern`] of `mesh` face by face from the cotangents of
+/// [`face_terms`] (scale-free per face, so no length over- or underflows): each side
 /// `ij` with opposite angle `α` adds `½ cot α` to `H_ii`, `H_jj` and subtracts it from
 /// `H_ij`, `H_ji` (loops cancel). Degenerate or undecided faces add nothing (their
-/// second derivatives vanish inside the degenerate region).
+/// second derivatives vanish inside the degenerate region); every pair joined by a side is
+/// stored, with the value 0 when only such faces join it.
 pub fn hessian_at<T: Real>(mesh: &Mesh, lt: &[T]) -> SparseMatrix<T> {
-    let mut trip: Vec<(usize, usize, T)> = Vec::with_capacity(12 * mesh.n_faces());
+    let pattern = HessianPattern::new(mesh);
+    let Some(zero) = lt.first().map(Real::zero_like) else {
+        return SparseMatrix::from_triplets(mesh.n_vertices(), &[]);
+    };
+    let mut val = pattern.zeros(&zero);
     for f in mesh.faces() {
         let (hs, x) = face_x(mesh, f, lt);
-        let Some(c) = cotangents(&x) else {
-            continue;
-        };
-        for m in 0..3 {
-            let w = c[m].clone() * &c[m].lit(0.5);
-            let (i, j) = (mesh.tail(hs[m]).idx(), mesh.tip(hs[m]).idx());
-            trip.push((i, i, w.clone()));
-            trip.push((j, j, w.clone()));
-            trip.push((i, j, -w.clone()));
-            trip.push((j, i, -w));
+        if let Some(c) = face_terms(&x, false, true).cot {
+            add_face_hessian(&pattern, mesh, &mut val, hs, &c);
         }
     }
-    SparseMatrix::from_triplets(mesh.n_vertices(), &trip)
+    pattern.matrix(val)
+}
+
+/// Adds one proper face's `½ cot α_m` for its three sides (see [`hessian_at`]).
+#[inline]
+fn add_face_hessian<T: Real>(
+    pattern: &HessianPattern,
+    mesh: &Mesh,
+    val: &mut [T],
+    hs: [HalfEdge; 3],
+    cot: &[T; 3],
+) {
+    for m in 0..3 {
+        let w = cot[m].clone() * &cot[m].lit(0.5);
+        pattern.add_side(mesh, val, hs[m], &w);
+    }
+}
+
+/// `E`, `∇E` and the Hessian at one point, from one pass over the faces.
+#[derive(Clone, Debug)]
+pub struct EnergyParts<T> {
+    /// `E` as [`energy_at`] gives it.
+    pub energy: Option<T>,
+    /// `∇E = Θ − θ` as [`gradient_at`] gives it.
+    pub gradient: Vec<T>,
+    /// The cotan Laplacian as [`hessian_at`] gives it.
+    pub hessian: SparseMatrix<T>,
+}
+
+/// [`energy_at`], [`gradient_at`] and [`hessian_at`] together: each face's shifted sides,
+/// shape, angles, `Л` values and cotangents are computed once ([`face_terms`]) and the
+/// Hessian is assembled in place on a [`HessianPattern`] built here. The same formulas,
+/// in the same order of summation, as the three separate functions.
+pub fn energy_gradient_hessian_at<T: Real>(
+    mesh: &Mesh,
+    lt: &[T],
+    u: &[T],
+    targets: &[T],
+) -> EnergyParts<T> {
+    let pattern = HessianPattern::new(mesh);
+    energy_gradient_hessian_with(&pattern, mesh, lt, u, targets)
+}
+
+/// [`energy_gradient_hessian_at`] on a pattern built once for `mesh` (reused across
+/// evaluations on the same triangulation, e.g. by a Newton solver).
+///
+/// A pattern of another mesh is a programming error: it panics when its size does not fit
+/// ([`HessianPattern::fits`]).
+pub fn energy_gradient_hessian_with<T: Real>(
+    pattern: &HessianPattern,
+    mesh: &Mesh,
+    lt: &[T],
+    u: &[T],
+    targets: &[T],
+) -> EnergyParts<T> {
+    assert!(pattern.fits(mesh), "Hessian pattern of another mesh");
+    let Some(z) = lt.first().or(u.first()) else {
+        return EnergyParts {
+            energy: None,
+            gradient: targets.to_vec(),
+            hessian: SparseMatrix::from_triplets(mesh.n_vertices(), &[]),
+        };
+    };
+    let zero = z.zero_like();
+    let half_pi = T::pi(z.ctx()) * &z.lit(0.5);
+    let two = z.lit(2.0);
+    let mut e = zero.clone();
+    let mut theta = vec![zero.clone(); mesh.n_vertices()];
+    let mut val = pattern.zeros(&zero);
+    for f in mesh.faces() {
+        let (hs, x) = face_x(mesh, f, lt);
+        let ft = face_terms(&x, true, true);
+        if let Some(fx) = &ft.f {
+            let sum = x[0].clone() + &x[1] + &x[2];
+            e += &(fx.clone() * &two - &(half_pi.clone() * &sum));
+        }
+        for m in 0..3 {
+            theta[mesh.tail(hs[(m + 2) % 3]).idx()] += &ft.angles[m];
+        }
+        if let Some(c) = &ft.cot {
+            add_face_hessian(pattern, mesh, &mut val, hs, c);
+        }
+    }
+    for (t, ui) in targets.iter().zip(u) {
+        e += &(t.clone() * ui);
+    }
+    let gradient = if lt.is_empty() {
+        targets.to_vec()
+    } else {
+        theta
+            .into_iter()
+            .zip(targets)
+            .map(|(th, t)| t.clone() - &th)
+            .collect()
+    };
+    EnergyParts {
+        energy: Some(e),
+        gradient,
+        hessian: pattern.matrix(val),
+    }
 }
 
 /// The Hessian of `E(u)` from the unscaled logarithmic lengths `λ` ([`hessian_at`]).
@@ -199,9 +296,11 @@ pub fn at_delaunay<T: Real>(
         flip_to_delaunay_scaled(&mut m, base, u, FlipKind::Ptolemy, &FlipOptions::default())?;
     let lt: Vec<T> = lengths.iter().map(|l| log_length_exp(l, ctx)).collect();
     let uu: Vec<T> = u.iter().map(|&x| T::from_f64(x, ctx)).collect();
-    let energy = energy_at(&m, &lt, &uu, targets);
-    let gradient = gradient_at(&m, &lt, targets);
-    let hessian = hessian_at(&m, &lt);
+    let EnergyParts {
+        energy,
+        gradient,
+        hessian,
+    } = energy_gradient_hessian_at(&m, &lt, &uu, targets);
     Ok(DelaunayEnergy {
         mesh: m,
         report,

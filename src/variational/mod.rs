@@ -13,5 +13,6 @@
 
 pub mod energy;
 pub mod hyperbolic;
+pub mod pattern;
 pub mod triangle;
 pub mod weights;

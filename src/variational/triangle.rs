@@ -27,10 +27,11 @@
 //! assert!((triangle_energy(&x) - 0.5 * std::f64::consts::PI * x[2]).abs() < 1e-15);
 //! ```
 
-use crate::geometry::triangle::{corner_angle, cot_opposite};
+use crate::geometry::triangle::{corner_angle, cot_opposite, kahan_area};
 use crate::predicates::tolerance::sign_exact;
-use crate::scalar::{Real, Sign};
+use crate::scalar::{Dd, Real, Sign};
 use crate::special::lobachevsky;
+use std::any::Any;
 
 /// The shape of a triangle given by three lengths, as decided on the computed slacks
 /// `ℓ_{m+1} + ℓ_{m+2} − ℓ_m`.
@@ -45,11 +46,20 @@ pub enum Shape {
 }
 
 /// The sign of a computed value: exactly on the stored number for point backends
-/// ([`sign_exact`]); for enclosures ([`Real::is_point`] false) from the validity of the
+/// ([`sign_exact`]; for `f64` and `Dd` read from the leading word, the same answer without
+/// forming the rational); for enclosures ([`Real::is_point`] false) from the validity of the
 /// enclosure's square roots, which is decided on its bounds (`√x` is a valid enclosure iff
 /// its lower bound is `≥ 0`): positive when `√x` is valid and `√(−x)` is not, negative in
 /// the mirror case, `None` otherwise.
 fn sign_of<T: Real>(x: &T) -> Option<Sign> {
+    let any = x as &dyn Any;
+    if let Some(v) = any.downcast_ref::<f64>() {
+        return sign_of_word(*v);
+    }
+    if let Some(v) = any.downcast_ref::<Dd>() {
+        // Normalized: `hi = RN(hi + lo)` has the sign of the value, and is 0 only for 0.
+        return sign_of_word(v.hi);
+    }
     if T::is_point() {
         return sign_exact(x);
     }
@@ -71,6 +81,20 @@ pub fn shifted_lengths<T: Real>(x: &[T; 3]) -> [T; 3] {
         .unwrap_or(0);
     let half = x[0].lit(0.5);
     [0, 1, 2].map(|m| ((x[m].clone() - &x[s]) * &half).exp())
+}
+
+/// The exact sign of a finite binary64 number (`None` for NaN and `±∞`, as
+/// [`sign_exact`]).
+fn sign_of_word(v: f64) -> Option<Sign> {
+    if !v.is_finite() {
+        None
+    } else if v > 0.0 {
+        Some(Sign::Positive)
+    } else if v < 0.0 {
+        Some(Sign::Negative)
+    } else {
+        Some(Sign::Zero)
+    }
 }
 
 /// The [`Shape`] of the triangle with sides `l`.
@@ -144,4 +168,55 @@ pub fn cotangents<T: Real>(x: &[T; 3]) -> Option<[T; 3]> {
     let l = shifted_lengths(x);
     (shape(&l) == Shape::Proper)
         .then(|| [0, 1, 2].map(|m| cot_opposite(&l[m], &l[(m + 1) % 3], &l[(m + 2) % 3])))
+}
+
+/// What `E`, `∇E` and the Hessian need from one face, from one evaluation of its shifted
+/// sides and shape ([`face_terms`]).
+#[derive(Clone, Debug)]
+pub struct FaceTerms<T> {
+    /// The angles `α_m` of [`angles_from_log_lengths`].
+    pub angles: [T; 3],
+    /// `cot α_m` as in [`cotangents`] (`None` for a degenerate or undecided face, or when
+    /// not asked for).
+    pub cot: Option<[T; 3]>,
+    /// `f(x)` of [`triangle_energy`] (`None` when not asked for).
+    pub f: Option<T>,
+}
+
+/// The angles, and on request `f` and the cotangents, of the triangle with logarithmic
+/// lengths `x`, from one computation of [`shifted_lengths`] and [`shape`]: the same
+/// formulas as [`angles_from_log_lengths`], [`triangle_energy`] and [`cotangents`]
+/// (the cotangents share one Kahan area, `cot α_m = (ℓ²_{m+1} + ℓ²_{m+2} − ℓ²_m)/(4A)`,
+/// proofs/B44; `A` is symmetric in the sides since [`kahan_area`] sorts them).
+pub fn face_terms<T: Real>(x: &[T; 3], with_f: bool, with_cot: bool) -> FaceTerms<T> {
+    let l = shifted_lengths(x);
+    let half = x[0].lit(0.5);
+    let sh = shape(&l);
+    if let Shape::Degenerate(m) = sh {
+        let pi = T::pi(x[0].ctx());
+        let zero = l[0].zero_like();
+        let mut angles = [zero.clone(), zero.clone(), zero];
+        angles[m] = pi.clone();
+        let f = with_f.then(|| pi * &x[m] * &half);
+        return FaceTerms {
+            angles,
+            cot: None,
+            f,
+        };
+    }
+    let angles = [0, 1, 2].map(|m| corner_angle(&l[m], &l[(m + 1) % 3], &l[(m + 2) % 3]));
+    let f = with_f.then(|| {
+        let mut f = x[0].zero_like();
+        for m in 0..3 {
+            f += &(angles[m].clone() * &x[m] * &half);
+            f += &lobachevsky(&angles[m]);
+        }
+        f
+    });
+    let cot = (with_cot && sh == Shape::Proper).then(|| {
+        let four_area = kahan_area(&l[0], &l[1], &l[2]) * &x[0].lit(4.0);
+        let sq = [0, 1, 2].map(|m| l[m].clone() * &l[m]);
+        [0, 1, 2].map(|m| (sq[(m + 1) % 3].clone() + &sq[(m + 2) % 3] - &sq[m]) / &four_area)
+    });
+    FaceTerms { angles, cot, f }
 }

@@ -55,6 +55,7 @@ mod scalar_dd_reduction;
 mod scalar_nearest;
 mod sharding;
 mod special;
+mod special_dd;
 #[cfg(feature = "strategies")]
 mod strategies;
 #[allow(dead_code)] // helpers used by some areas only
@@ -69,3 +70,4 @@ mod tolerance_range;
 mod tolerance_tightness;
 mod uniformization;
 mod variational;
+mod variational_fused;

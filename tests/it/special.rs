@@ -160,7 +160,10 @@ fn b52_mpfr_and_dd_within_one_ulp_of_the_tangent_series() {
         let yf = Float::with_val(200, y.hi) + y.lo;
         // Below 2⁻⁹⁶⁸ a Dd carries an absolute 2⁻¹⁰⁷⁵ (B09).
         let e = ulps(&yf, &r, 106, -1075);
-        assert!(e <= 1.0, "Dd: Л({x:e}) off by {e} ulps");
+        // The native double-double series (B55) is within 4 units; the MPFR path, taken
+        // for |x| > 3.9 and next to multiples of π/2, within one.
+        let bound = if x.abs() <= 3.9 { 4.0 } else { 1.0 }; // proof: B55
+        assert!(e <= bound, "Dd: Л({x:e}) off by {e} ulps");
     }
 }
 

@@ -1,0 +1,107 @@
+//! Lobachevsky's function at double-double (B55): the native double-double series
+//! against the independent Bernoulli/tangent-number evaluation at more than twice the
+//! precision, on double-double arguments with a genuine trailing word.
+
+use crate::support::cases;
+use penner::scalar::Dd;
+use penner::special::{lobachevsky, lobachevsky_tangent_series};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use rug::float::Constant;
+use rug::Float;
+
+/// B55: the double-double evaluation is within this many units of `2^(e−106)` of `Л(x)`.
+const DD_ULPS: f64 = 4.0; // proof: B55
+
+/// `|y − r|` in units of `2^(e−106)`, `r = m·2ᵉ`, `m ∈ [1/2, 1)`; below `2⁻⁹⁶⁸` the unit
+/// is `2⁻¹⁰⁷⁵` (a double-double's absolute floor, B09).
+fn dd_ulps(y: Dd, r: &Float) -> f64 {
+    let yf = Float::with_val(300, y.hi) + y.lo;
+    let diff = Float::with_val(600, &yf - r).abs();
+    if diff.is_zero() {
+        return 0.0;
+    }
+    let e = r.get_exp().unwrap_or(-1075 + 106);
+    (diff >> (e - 106).max(-1075)).to_f64()
+}
+
+/// The exact value of a double-double as an MPFR number.
+fn exact(x: Dd) -> Float {
+    Float::with_val(2200, x.hi) + x.lo
+}
+
+/// The double-double nearest to `v`.
+fn nearest(v: &Float) -> Dd {
+    Dd::from_float(v)
+}
+
+/// Double-double arguments: the angles of triangles (0, π), the whole native range
+/// `|x| ≤ 3.9` with random trailing words, the reduced-argument boundaries (`2⁻³⁰` from a
+/// multiple of π/2, where the MPFR path takes over), the branch points `|t| = 1/2`,
+/// `π/4`, tiny, and beyond the native range.
+fn arguments(rng: &mut ChaCha8Rng, count: usize) -> Vec<Dd> {
+    let hp = Float::with_val(400, Constant::Pi) >> 1u32;
+    let mut out = vec![
+        Dd::from_f64(0.0),
+        nearest(&hp),
+        nearest(&Float::with_val(400, &hp * 2u32)),
+        nearest(&Float::with_val(400, &hp / 3u32)),
+        nearest(&Float::with_val(400, &hp + 0.5)),
+        nearest(&Float::with_val(400, &hp - 0.5)),
+        Dd::from_f64(3.9),
+        Dd::from_f64(4.5),
+    ];
+    while out.len() < count {
+        let lo_word =
+            |rng: &mut ChaCha8Rng, hi: f64| hi * 2f64.powi(-54) * rng.gen_range(-1.0..1.0);
+        let x = match out.len() % 5 {
+            0 => {
+                let hi: f64 = rng.gen_range(1e-3..std::f64::consts::PI);
+                Dd::from_parts(hi, lo_word(rng, hi))
+            }
+            1 => {
+                let hi: f64 = rng.gen_range(-3.9..3.9);
+                Dd::from_parts(hi, lo_word(rng, hi))
+            }
+            2 => {
+                // Next to kπ/2 (k = 1, 2), offsets 2⁻⁴⁰ … 2⁻²: both sides of the 2⁻³⁰ switch.
+                let k: u32 = rng.gen_range(1..3);
+                let off = Float::with_val(400, rng.gen_range(0.5..1.0)) >> rng.gen_range(2..40u32);
+                let v = Float::with_val(400, &hp * k) + if rng.gen() { off } else { -off };
+                nearest(&v)
+            }
+            3 => {
+                let hi = rng.gen_range(0.5..1.0) * 2f64.powi(-rng.gen_range(1..900));
+                Dd::from_parts(hi, lo_word(rng, hi))
+            }
+            _ => {
+                let hi: f64 = rng.gen_range(-40.0..40.0);
+                Dd::from_parts(hi, lo_word(rng, hi))
+            }
+        };
+        out.push(if rng.gen() { x } else { -x });
+    }
+    out
+}
+
+#[test]
+fn b55_dd_within_few_ulps_of_the_tangent_series() {
+    let mut rng = ChaCha8Rng::seed_from_u64(100);
+    let mut worst = (0.0, 0.0);
+    for x in arguments(&mut rng, cases(3000, 100_000)) {
+        let y = lobachevsky(&x);
+        let r = lobachevsky_tangent_series(&exact(x), 2 * 106 + 16).expect("finite");
+        let e = dd_ulps(y, &r);
+        if e > worst.0 {
+            worst = (e, x.hi);
+        }
+        assert!(e <= DD_ULPS, "Л({x:?}) = {y:?}: {e} ulps from {r}");
+        // Negative control: 8 units away is rejected by the same measure.
+        if !r.is_zero() {
+            let unit = 2f64.powi((r.get_exp().unwrap_or(0) - 106).max(-1075));
+            let bumped = Dd::from_parts(y.hi, y.lo + 8.0 * unit);
+            assert!(dd_ulps(bumped, &r) > DD_ULPS, "control at {x:?}");
+        }
+    }
+    eprintln!("Dd worst {} ulps at {:e}", worst.0, worst.1);
+}
