@@ -34,22 +34,14 @@ pub fn check_flip_path(
     s: &[Rational],
     t: &[Rational],
 ) -> Verdict {
-    let surface = |detail: String| Witness {
-        element: "surface".into(),
-        detail,
-        value: f64::NAN,
-    };
-    if l0.len() != t0.n_edges() || s.len() != t0.n_vertices() || t.len() != t0.n_vertices() {
-        return Verdict::certified(
-            vec![surface(
-                "one length per edge and one factor per vertex are required".into(),
-            )],
-            vec![],
-            0,
-        );
-    }
+    // The counts are checked once, by `check_flip_path_exact` (a conversion keeps them).
     let Some(l): Option<Vec<Rational>> = l0.iter().map(|&x| Rational::from_f64(x)).collect() else {
-        return Verdict::certified(vec![surface("a length is not finite".into())], vec![], 0);
+        let w = Witness {
+            element: "surface".into(),
+            detail: "a length is not finite".into(),
+            value: f64::NAN,
+        };
+        return Verdict::certified(vec![w], vec![], 0);
     };
     check_flip_path_exact(t0, l, sequence, final_mesh, s, t)
 }
