@@ -30,6 +30,18 @@ pub fn flat_targets<T: Real>(n: usize, like: &T) -> Vec<T> {
     vec![T::pi(like.ctx()) * &like.lit(2.0); n]
 }
 
+/// The probe of T32, T33 and their controls on `n` vertices, in the context of `like`:
+/// the log scale factors `u` ([`log_scale_factors`]), flat targets `Θ`
+/// ([`flat_targets`]) and the directions `d` ([`directions`]).
+#[allow(clippy::type_complexity)]
+pub fn energy_probe<T: Real>(n: usize, like: &T) -> (Vec<T>, Vec<T>, Vec<Vec<T>>) {
+    (
+        log_scale_factors(n, like),
+        flat_targets(n, like),
+        directions(n, like),
+    )
+}
+
 /// Three fixed directions in `ℝⁿ`: `e_0` (so a perturbed `∂E/∂u_0` is seen) and two
 /// irregular patterns `((7v + 5k) mod 11 − 5)/5`, `k = 1, 2`.
 pub fn directions<T: Real>(n: usize, like: &T) -> Vec<Vec<T>> {
@@ -117,11 +129,7 @@ fn t32(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
     at_precision!(prec, case, |l: T| {
         let n = case.mesh.n_vertices();
         let z = l.first()?;
-        let (u, t, d) = (
-            log_scale_factors(n, z),
-            flat_targets(n, z),
-            directions(n, z),
-        );
+        let (u, t, d) = energy_probe(n, z);
         let input = EnergyInput {
             mesh: &case.mesh,
             lengths: &l,
@@ -139,11 +147,7 @@ fn t33(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
     at_precision!(prec, case, |l: T| {
         let n = case.mesh.n_vertices();
         let z = l.first()?;
-        let (u, t, d) = (
-            log_scale_factors(n, z),
-            flat_targets(n, z),
-            directions(n, z),
-        );
+        let (u, t, d) = energy_probe(n, z);
         Some(t33_hyperbolic::check_hyperbolic(
             &case.mesh, &l, &u, &t, &d, s,
         ))

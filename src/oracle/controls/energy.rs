@@ -8,8 +8,7 @@
 use crate::geometry::cotan::cotan_weights;
 use crate::io::Surface;
 use crate::oracle::checks_energy::{
-    beyond_limits, directions, flat_targets, log_scale_factors, MAX_FACES, T06_MAX_EDGES,
-    T31_MAX_FACES,
+    beyond_limits, energy_probe, MAX_FACES, T06_MAX_EDGES, T31_MAX_FACES,
 };
 use crate::oracle::precision::Prec;
 use crate::oracle::registry::Check;
@@ -66,11 +65,7 @@ fn t32_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
     at_precision!(prec, case, |l: T| {
         let n = case.mesh.n_vertices();
         let z = l.first()?;
-        let (u, t, d) = (
-            log_scale_factors(n, z),
-            flat_targets(n, z),
-            directions(n, z),
-        );
+        let (u, t, d) = energy_probe(n, z);
         let lambda = energy::log_lengths(&l);
         let mut g = energy::gradient(&case.mesh, &lambda, &u, &t);
         let bump = g[0].lit(1e-3);
@@ -93,11 +88,7 @@ fn t33_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
     at_precision!(prec, case, |l: T| {
         let n = case.mesh.n_vertices();
         let z = l.first()?;
-        let (u, t, d) = (
-            log_scale_factors(n, z),
-            flat_targets(n, z),
-            directions(n, z),
-        );
+        let (u, t, d) = energy_probe(n, z);
         let mut g = hyperbolic::gradient(&case.mesh, &l, &u, &t);
         let bump = g[0].lit(1e-3);
         g[0] += &bump;
