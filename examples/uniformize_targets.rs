@@ -123,6 +123,21 @@ fn main() -> ExitCode {
         sol.residual_max,
         sol.stop
     );
+    let history: Vec<String> = sol
+        .steps
+        .iter()
+        .map(|s| {
+            format!(
+                "{:.1e}{}",
+                s.residual_max,
+                if s.step < 1.0 { "*" } else { "" }
+            )
+        })
+        .collect();
+    println!(
+        "  max |Θ − θ| after each step (* a shortened step): {}",
+        history.join(", ")
+    );
     if !sol.converged() {
         return ExitCode::from(2);
     }

@@ -11,10 +11,17 @@
 use super::components::Components;
 use crate::geometry::laplacian::{cotan_laplacian, SparseMatrix};
 use crate::mesh::Mesh;
+use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
+use faer::linalg::cholesky::llt::factor::LltRegularization;
 use faer::linalg::solvers::Solve;
+use faer::sparse::linalg::cholesky::{
+    factorize_symbolic_cholesky, CholeskySymbolicParams, LltRef, SymbolicCholesky,
+    SymmetricOrdering,
+};
 use faer::sparse::linalg::solvers::{Llt, SymbolicLlt};
 use faer::sparse::{SparseColMat, Triplet};
-use faer::{Mat, Side};
+use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
+use faer::{Conj, Mat, Par, Side, Spec};
 
 /// The grounded Hessian `H = −L` on the free vertices, lower triangle, column-compressed.
 pub struct GroundedHessian {
@@ -124,7 +131,11 @@ pub struct GroundedPattern {
     /// value array, `usize::MAX` where the entry is at a grounded vertex or the half-edge
     /// adds nothing (boundary, loop).
     slots: Vec<[usize; 3]>,
-    symbolic: Option<SymbolicLlt<usize>>,
+    symbolic: Option<SymbolicCholesky<usize>>,
+    /// The numeric factor's values (reused across steps).
+    l_values: Vec<f64>,
+    /// Work space of the numeric factorization and the solves (reused).
+    scratch: MemBuffer,
 }
 
 const NO_SLOT: usize = usize::MAX;
@@ -208,6 +219,8 @@ impl GroundedPattern {
             row_idx: rows,
             slots,
             symbolic: None,
+            l_values: Vec::new(),
+            scratch: MemBuffer::new(StackReq::empty()),
         }
     }
 
@@ -240,11 +253,13 @@ impl GroundedPattern {
         }
     }
 
-    /// Factor the matrix with values `val` (pattern order); the symbolic factorization is
-    /// computed on the first call and kept. `None` when the matrix is not (numerically)
-    /// positive definite. Counts into `cache`.
-    pub fn factor(&mut self, val: &[f64], cache: &mut CholeskyCache) -> Option<Factor> {
-        let sym = faer::sparse::SymbolicSparseColMatRef::new_checked(
+    /// Factor the matrix with values `val` (pattern order) sequentially (`Par::Seq`: on a
+    /// shared machine a spinning thread pool costs more than it saves), in place of the
+    /// previous factor; the symbolic factorization (approximate minimum degree ordering,
+    /// faer's supernodal/simplicial choice) is computed on the first call and kept.
+    /// `false` when the matrix is not (numerically) positive definite. Counts into `cache`.
+    pub fn factor(&mut self, val: &[f64], cache: &mut CholeskyCache) -> bool {
+        let sym = SymbolicSparseColMatRef::new_checked(
             self.n,
             self.n,
             &self.col_ptr,
@@ -252,14 +267,58 @@ impl GroundedPattern {
             &self.row_idx,
         );
         if self.symbolic.is_none() {
-            self.symbolic = Some(SymbolicLlt::try_new(sym, Side::Lower).ok()?);
+            let Ok(s) = factorize_symbolic_cholesky(
+                sym,
+                Side::Lower,
+                SymmetricOrdering::Amd,
+                CholeskySymbolicParams::default(),
+            ) else {
+                return false;
+            };
+            let req = StackReq::any_of(&[
+                s.factorize_numeric_llt_scratch::<f64>(Par::Seq, Spec::default()),
+                s.solve_in_place_scratch::<f64>(1, Par::Seq),
+            ]);
+            self.scratch = MemBuffer::new(req);
+            self.l_values = vec![0.0; s.len_val()];
+            self.symbolic = Some(s);
             cache.symbolic_count += 1;
         }
-        let s = self.symbolic.clone()?;
+        let Some(s) = &self.symbolic else {
+            return false;
+        };
         cache.numeric_count += 1;
-        let mat = faer::sparse::SparseColMatRef::new(sym, val);
-        let llt = Llt::try_new_with_symbolic(s, mat, Side::Lower).ok()?;
-        Some(Factor { llt })
+        let mat = SparseColMatRef::new(sym, val);
+        s.factorize_numeric_llt(
+            &mut self.l_values,
+            mat,
+            Side::Lower,
+            LltRegularization::default(),
+            Par::Seq,
+            MemStack::new(&mut self.scratch),
+            Spec::default(),
+        )
+        .is_ok()
+    }
+
+    /// The Newton direction after a successful [`Self::factor`]: `d = −H⁻¹g` on the free
+    /// vertices `free` (in pattern order), `0` on the grounded ones.
+    pub fn newton_direction(&mut self, grad: &[f64], free: &[usize]) -> Vec<f64> {
+        let mut d = vec![0.0; grad.len()];
+        let Some(s) = &self.symbolic else {
+            return d;
+        };
+        let mut rhs = Mat::<f64>::from_fn(free.len(), 1, |k, _| -grad[free[k]]);
+        LltRef::new(s, &self.l_values).solve_in_place_with_conj(
+            Conj::No,
+            rhs.as_mut(),
+            Par::Seq,
+            MemStack::new(&mut self.scratch),
+        );
+        for (k, &v) in free.iter().enumerate() {
+            d[v] = rhs[(k, 0)];
+        }
+        d
     }
 
     /// The stored entries `(row, column, value)` (`row ≥ column`, free-vertex positions)
@@ -280,6 +339,8 @@ impl GroundedPattern {
     pub fn adopt_symbolic(&mut self, other: &mut GroundedPattern) {
         if self.same_pattern(other) {
             self.symbolic = other.symbolic.take();
+            self.l_values = std::mem::take(&mut other.l_values);
+            self.scratch = std::mem::replace(&mut other.scratch, MemBuffer::new(StackReq::empty()));
         }
     }
 }

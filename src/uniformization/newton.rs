@@ -17,7 +17,7 @@
 
 use super::components::Components;
 use super::error::UniformizeError;
-use super::hessian::{newton_direction, CholeskyCache, GroundedPattern};
+use super::hessian::{CholeskyCache, GroundedPattern};
 use super::scaling::scaled_fast;
 use super::targets::Targets;
 use crate::algorithms::flip_scaled::flip_to_delaunay_exp;
@@ -290,7 +290,7 @@ pub fn uniformize_with_progress(
         });
     }
     let comps = Components::of(&t0);
-    let (_, free_idx) = comps.free_index();
+    let (free, free_idx) = comps.free_index();
     let theta_target = targets.radians_f64();
     let mut cache = CholeskyCache::default();
     let mut steps = Vec::new();
@@ -348,7 +348,7 @@ pub fn uniformize_with_progress(
             break;
         }
         pattern.fill(&ev.cot, &mut values);
-        let Some(factor) = pattern.factor(&values, &mut cache) else {
+        if !pattern.factor(&values, &mut cache) {
             let reason = "the grounded Hessian is not numerically positive definite".to_string();
             return Ok(finish(
                 ev,
@@ -359,7 +359,7 @@ pub fn uniformize_with_progress(
                 &cache,
             ));
         };
-        let d = newton_direction(&factor, &ev.grad, &comps);
+        let d = pattern.newton_direction(&ev.grad, &free);
         let n0 = norm2(&ev.grad);
         let mut t = 1.0;
         let mut accepted = None;
