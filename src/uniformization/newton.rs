@@ -358,7 +358,7 @@ pub fn uniformize_with_progress(
                 Stop::DegenerateStep(reason),
                 &cache,
             ));
-        };
+        }
         let d = pattern.newton_direction(&ev.grad, &free);
         let n0 = norm2(&ev.grad);
         let mut t = 1.0;

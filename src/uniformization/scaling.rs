@@ -11,9 +11,9 @@
 use crate::scalar::exp_length::{ExpLength, MAX_LOG_SCALE};
 
 /// `ln 2` to 32 significant bits (fdlibm's `ln2_hi`): `k·LN2_HI` is exact for `|k| < 2²¹`.
-const LN2_HI: f64 = 6.931_471_803_691_238_164_90e-1;
+const LN2_HI: f64 = f64::from_bits(0x3fe6_2e42_fee0_0000);
 /// `ln 2 − LN2_HI`, rounded (fdlibm's `ln2_lo`).
-const LN2_LO: f64 = 1.908_214_929_270_587_700_02e-10;
+const LN2_LO: f64 = f64::from_bits(0x3dea_39ef_3579_3c76);
 
 /// The relative error bound of [`scaled_fast`] in units of `2⁻⁵³`. proof: B77
 pub const SCALED_FAST_ULPS: f64 = 6.2;

@@ -31,7 +31,7 @@ fn random_u(rng: &mut ChaCha8Rng) -> f64 {
         0 => rng.gen_range(-1.0..1.0),
         1 => rng.gen_range(-800.0..800.0),
         2 => rng.gen_range(-1_048_576.0..=1_048_576.0),
-        _ => (rng.gen_range(-1000i32..1000) as f64 + 0.5) * std::f64::consts::LN_2,
+        _ => (f64::from(rng.gen_range(-1000i32..1000)) + 0.5) * std::f64::consts::LN_2,
     }
 }
 
