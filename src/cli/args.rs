@@ -105,6 +105,18 @@ pub enum Command {
         /// Certificate output (must not exist).
         #[arg(short, long)]
         output: Option<PathBuf>,
+        /// The sphere target (Thm 9): the convex polyhedron inscribed in the unit sphere.
+        #[arg(long, conflicts_with_all = ["targets", "flat"])]
+        sphere: bool,
+        /// The pole v∞ of `--sphere` (default: the vertex of largest degree that works).
+        #[arg(long, value_name = "V", requires = "sphere")]
+        pole: Option<u32>,
+        /// Write the inscribed polyhedron of `--sphere` as OBJ to this new file.
+        #[arg(long, value_name = "FILE", requires = "sphere")]
+        obj: Option<PathBuf>,
+        /// Write the planar layout of the result as SVG to this new file.
+        #[arg(long, value_name = "FILE")]
+        svg: Option<PathBuf>,
     },
     /// The tangency circle packing of a surface's combinatorics (disk: boundary radii 1;
     /// sphere: punctured at v0), certified, optionally drawn as SVG.

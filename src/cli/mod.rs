@@ -13,6 +13,7 @@ mod pack_maximal;
 mod replay;
 mod report;
 mod uniformize;
+mod uniformize_sphere;
 
 use args::{Cli, Command};
 use clap::Parser;
@@ -86,12 +87,20 @@ pub fn main() -> ExitCode {
             flat,
             precision,
             output,
+            sphere,
+            pole,
+            obj,
+            svg,
         }) => uniformize::run(&uniformize::Options {
             path: &surface,
             targets: targets.as_deref(),
             flat,
             precision: &precision,
             output: output.as_deref(),
+            sphere,
+            pole,
+            obj: obj.as_deref(),
+            svg: svg.as_deref(),
         }),
         Some(Command::Delaunay {
             surface,

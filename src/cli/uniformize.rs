@@ -29,6 +29,14 @@ pub struct Options<'a> {
     pub precision: &'a str,
     /// Certificate output.
     pub output: Option<&'a Path>,
+    /// The sphere target (`--sphere`).
+    pub sphere: bool,
+    /// The pole of `--sphere`.
+    pub pole: Option<u32>,
+    /// OBJ output of `--sphere`.
+    pub obj: Option<&'a Path>,
+    /// SVG picture of the planar layout.
+    pub svg: Option<&'a Path>,
 }
 
 /// Interval bits and refinement tolerance of a precision word: `f64` → 1e-10 and `dd` →
@@ -119,6 +127,11 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     let shown = o.path.display().to_string();
     let case = load_flip_case(o.path)?;
     let (mesh, lengths, shift) = scaled_input(case);
+    if o.sphere {
+        return super::uniformize_sphere::run(
+            &shown, &mesh, &lengths, o.pole, o.output, o.obj, o.svg,
+        );
+    }
     let targets =
         match (o.targets, o.flat) {
             (Some(_), true) => {
