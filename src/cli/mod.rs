@@ -14,6 +14,7 @@ mod replay;
 mod report;
 mod uniformize;
 mod uniformize_sphere;
+mod uniformize_svg;
 
 use args::{Cli, Command};
 use clap::Parser;

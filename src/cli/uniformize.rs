@@ -195,6 +195,9 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         super::files::emit(&out)?;
         return Ok(code::UNDECIDED);
     }
+    if let Some(path) = o.svg {
+        out.push_str(&super::uniformize_svg::write(path, &sol)?);
+    }
     if let Some(b) = &bar {
         b.set_message(format!("refining and certifying at {bits} bits"));
     }

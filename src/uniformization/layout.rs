@@ -142,3 +142,34 @@ pub fn unproved_faces(mesh: &Mesh, layout: &Layout) -> Vec<Face> {
         .map(|(_, f)| f)
         .collect()
 }
+
+/// The largest mismatch of the layout's cut edges from a translation, relative to the
+/// layout's diameter: for a cut edge laid out as `p → q` in one face and `q' → p'` in the
+/// other, `|(p' − p) − (q' − q)|/diam`. A flat torus's fundamental domain tiles the plane
+/// by translations, so this vanishes up to the layout's rounding and the solve's residual
+/// (B75); a cone (rotational holonomy) makes it of the order of the cone's defect.
+/// `None` when a face is not laid out.
+pub fn cut_translation_mismatch(mesh: &Mesh, layout: &Layout) -> Option<f64> {
+    let (mut x0, mut y0, mut x1, mut y1) = (f64::MAX, f64::MAX, f64::MIN, f64::MIN);
+    for p in layout.corner.iter().flatten() {
+        x0 = x0.min(p[0]);
+        y0 = y0.min(p[1]);
+        x1 = x1.max(p[0]);
+        y1 = y1.max(p[1]);
+    }
+    let diam = (x1 - x0).hypot(y1 - y0);
+    let mut worst: f64 = 0.0;
+    for h in mesh.halfedges() {
+        if mesh.face(h).is_none() || !layout.is_cut(mesh, h) {
+            continue;
+        }
+        let t = h.twin();
+        let p = layout.corner[h.idx()]?;
+        let q = layout.corner[mesh.next(h).idx()]?;
+        let q2 = layout.corner[t.idx()]?;
+        let p2 = layout.corner[mesh.next(t).idx()]?;
+        let d = ((p2[0] - p[0]) - (q2[0] - q[0])).hypot((p2[1] - p[1]) - (q2[1] - q[1]));
+        worst = worst.max(d / diam);
+    }
+    Some(worst)
+}

@@ -70,6 +70,7 @@ mod tie_claims;
 mod tolerance_range;
 mod tolerance_tightness;
 mod uniformization;
+mod uniformization_layout;
 mod uniformization_sphere;
 mod variational;
 mod variational_fused;
