@@ -9,7 +9,6 @@
 //! ```
 
 #[path = "../tests/it/meshgen.rs"]
-#[allow(dead_code)]
 mod meshgen;
 
 use penner::uniformization::certificate::CertificateOutcome;

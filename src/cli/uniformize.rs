@@ -29,14 +29,8 @@ pub struct Options<'a> {
     pub precision: &'a str,
     /// Certificate output.
     pub output: Option<&'a Path>,
-    /// The sphere target (`--sphere`).
-    pub sphere: bool,
-    /// The pole of `--sphere`.
-    pub pole: Option<u32>,
-    /// OBJ output of `--sphere`.
-    pub obj: Option<&'a Path>,
-    /// SVG picture of the planar layout.
-    pub svg: Option<&'a Path>,
+    /// `--sphere`, `--pole`, `--obj`, `--svg`.
+    pub extra: &'a super::args::UniformizeExtra,
 }
 
 /// Interval bits and refinement tolerance of a precision word: `f64` → 1e-10 and `dd` →
@@ -127,10 +121,8 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     let shown = o.path.display().to_string();
     let case = load_flip_case(o.path)?;
     let (mesh, lengths, shift) = scaled_input(case);
-    if o.sphere {
-        return super::uniformize_sphere::run(
-            &shown, &mesh, &lengths, o.pole, o.output, o.obj, o.svg,
-        );
+    if o.extra.sphere {
+        return super::uniformize_sphere::run(&shown, &mesh, &lengths, o.output, o.extra);
     }
     let targets =
         match (o.targets, o.flat) {
@@ -195,7 +187,7 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         super::files::emit(&out)?;
         return Ok(code::UNDECIDED);
     }
-    if let Some(path) = o.svg {
+    if let Some(path) = o.extra.svg.as_deref() {
         out.push_str(&super::uniformize_svg::write(path, &sol)?);
     }
     if let Some(b) = &bar {

@@ -33,13 +33,12 @@ pub fn run(
     shown: &str,
     mesh: &penner::mesh::Mesh,
     lengths: &[f64],
-    pole: Option<u32>,
     output: Option<&Path>,
-    obj: Option<&Path>,
-    svg: Option<&Path>,
+    extra: &super::args::UniformizeExtra,
 ) -> Result<u8, CliError> {
+    let (obj, svg) = (extra.obj.as_deref(), extra.svg.as_deref());
     let opts = SphereOptions {
-        pole,
+        pole: extra.pole,
         ..SphereOptions::default()
     };
     let sol = uniformize_sphere(mesh, lengths, &opts)

@@ -128,8 +128,8 @@ pub fn check_disk_certificate(data: &DiskCertificateData, bits: u32) -> Certific
     // 2. A convex boundary: θ_a ≤ π at every link vertex on the box.
     let pi = I::pi(prec);
     let theta_box = cone_angles(&mesh, &lb);
-    for v in 0..n {
-        if data.pole_length[v].is_some() && !lower_nonnegative(&(pi.clone() - &theta_box[v])) {
+    for (v, theta_v) in theta_box.iter().enumerate() {
+        if data.pole_length[v].is_some() && !lower_nonnegative(&(pi.clone() - theta_v)) {
             return undecided(format!(
                 "the disk's angle at link vertex v{v} is not certified ≤ π on the whole box"
             ));
