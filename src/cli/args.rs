@@ -105,6 +105,9 @@ pub enum Command {
         /// Certificate output (must not exist).
         #[arg(short, long)]
         output: Option<PathBuf>,
+        /// The sphere target and the pictures.
+        #[command(flatten)]
+        extra: UniformizeExtra,
     },
     /// The tangency circle packing of a surface's combinatorics (disk: boundary radii 1;
     /// sphere: punctured at v0), certified, optionally drawn as SVG.
@@ -154,4 +157,21 @@ pub enum FlipKind {
     Euclidean,
     /// Ptolemy flip: ℓ_kl = (ℓ_ki ℓ_lj + ℓ_il ℓ_jk) / ℓ_ij (MATH.md Eq. 18).
     Ptolemy,
+}
+
+/// Options of `penner uniformize` beyond the cone targets: the sphere target and pictures.
+#[derive(clap::Args, Debug, Clone)]
+pub struct UniformizeExtra {
+    /// The sphere target (Thm 9): the convex polyhedron inscribed in the unit sphere.
+    #[arg(long, conflicts_with_all = ["targets", "flat"])]
+    pub sphere: bool,
+    /// The pole v∞ of `--sphere` (default: the vertex of largest degree that works).
+    #[arg(long, value_name = "V", requires = "sphere")]
+    pub pole: Option<u32>,
+    /// Write the inscribed polyhedron of `--sphere` as OBJ to this new file.
+    #[arg(long, value_name = "FILE", requires = "sphere")]
+    pub obj: Option<PathBuf>,
+    /// Write the planar layout of the result as SVG to this new file.
+    #[arg(long, value_name = "FILE")]
+    pub svg: Option<PathBuf>,
 }

@@ -13,6 +13,8 @@ mod pack_maximal;
 mod replay;
 mod report;
 mod uniformize;
+mod uniformize_sphere;
+mod uniformize_svg;
 
 use args::{Cli, Command};
 use clap::Parser;
@@ -86,12 +88,14 @@ pub fn main() -> ExitCode {
             flat,
             precision,
             output,
+            extra,
         }) => uniformize::run(&uniformize::Options {
             path: &surface,
             targets: targets.as_deref(),
             flat,
             precision: &precision,
             output: output.as_deref(),
+            extra: &extra,
         }),
         Some(Command::Delaunay {
             surface,

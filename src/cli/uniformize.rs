@@ -29,6 +29,8 @@ pub struct Options<'a> {
     pub precision: &'a str,
     /// Certificate output.
     pub output: Option<&'a Path>,
+    /// `--sphere`, `--pole`, `--obj`, `--svg`.
+    pub extra: &'a super::args::UniformizeExtra,
 }
 
 /// Interval bits and refinement tolerance of a precision word: `f64` → 1e-10 and `dd` →
@@ -119,6 +121,9 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     let shown = o.path.display().to_string();
     let case = load_flip_case(o.path)?;
     let (mesh, lengths, shift) = scaled_input(case);
+    if o.extra.sphere {
+        return super::uniformize_sphere::run(&shown, &mesh, &lengths, o.output, o.extra);
+    }
     let targets =
         match (o.targets, o.flat) {
             (Some(_), true) => {
@@ -181,6 +186,9 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         );
         super::files::emit(&out)?;
         return Ok(code::UNDECIDED);
+    }
+    if let Some(path) = o.extra.svg.as_deref() {
+        out.push_str(&super::uniformize_svg::write(path, &sol)?);
     }
     if let Some(b) = &bar {
         b.set_message(format!("refining and certifying at {bits} bits"));

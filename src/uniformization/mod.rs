@@ -11,14 +11,20 @@
 pub mod certificate;
 pub mod claim_form;
 pub mod components;
+pub mod dirichlet;
+pub mod dirichlet_certificate;
 pub mod error;
 pub mod exclusion;
 pub mod hessian;
 pub mod input_metric;
 pub mod krawczyk;
+pub mod layout;
 pub mod newton;
 pub mod refine;
 pub mod scaling;
+pub mod sphere;
+pub mod sphere_checks;
+pub mod svg;
 pub mod targets;
 pub mod verified_cholesky;
 

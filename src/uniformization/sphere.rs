@@ -1,0 +1,522 @@
+//! The sphere target (notes §1.5.3 Thm 9): a closed genus-0 surface with a discrete metric
+//! is discretely conformally equivalent (with Ptolemy flips) to a convex polyhedron
+//! inscribed in the unit sphere. proof: B74
+//!
+//! Method (B74): choose a pole `v∞` (given, or [`pole_candidates`]: the vertices of largest
+//! degree with a simple link, tried in turn). The inversion centred at `v∞` is a
+//! Möbius map; it turns the inscribed polyhedron into a planar Delaunay triangulation of
+//! the disk `D = M − star(v∞)` whose lengths are `e^{(w_i+w_j)/2}·ℓ_ij` with
+//! `w_a = −2 log ℓ_{a v∞}` on the link of `v∞`. So:
+//!
+//! 1. `T₀`: the input made intrinsic Delaunay by Euclidean flips (as in [`super::newton`]);
+//! 2. the Dirichlet problem on `D` ([`super::dirichlet`]): `u_a = w_a` on the link,
+//!    `θ_i(u) = 2π` at the other vertices, Ptolemy flips of the interior edges of `D`;
+//! 3. `D` laid out in the plane ([`super::layout`]), scaled and translated so that its
+//!    vertices have centroid `0` and mean squared distance `1` from it;
+//! 4. inverse stereographic projection `p ↦ (2p, |p|² − 1)/(|p|² + 1)` to `S²`, `v∞` at
+//!    the north pole `(0, 0, 1)`;
+//! 5. optionally ([`SphereOptions::normalize`]) the Möbius normalisation that puts the
+//!    centroid of the vertices at the origin (the conformal barycentre, unique up to
+//!    rotation), by iterating the ball automorphism `φ_c` with `c` half the centroid.
+//!
+//! The final triangulation is `T₀` with the Ptolemy flips of `D` (the star of `v∞` is kept).
+
+use super::dirichlet::{solve_dirichlet, DirichletError, DirichletSolution};
+use super::error::UniformizeError;
+use super::layout::{unfold, Layout};
+use super::newton::{validate_input, Stop, UniformizeOptions};
+use super::targets::Targets;
+use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
+use crate::mesh::{Edge, Face, HalfEdge, Mesh, Vertex};
+
+/// Options of [`uniformize_sphere`].
+#[derive(Clone, Debug)]
+pub struct SphereOptions {
+    /// The pole `v∞` (a vertex of the input); default: [`pole_candidates`] of `T₀` in turn.
+    pub pole: Option<u32>,
+    /// Möbius-normalise: centroid of the output vertices at the origin.
+    pub normalize: bool,
+    /// Newton options of the disk problem.
+    pub newton: UniformizeOptions,
+}
+
+impl Default for SphereOptions {
+    fn default() -> Self {
+        SphereOptions {
+            pole: None,
+            normalize: true,
+            newton: UniformizeOptions {
+                tolerance: 1e-12,
+                ..UniformizeOptions::default()
+            },
+        }
+    }
+}
+
+/// Why the sphere target was refused or not reached.
+#[derive(Debug, thiserror::Error)]
+pub enum SphereError {
+    /// The surface or its lengths are refused.
+    #[error(transparent)]
+    Input(#[from] UniformizeError),
+    /// Not a connected genus-0 surface.
+    #[error("the sphere target needs a connected closed surface of genus 0 (χ = 2); this one has χ = {chi} and {components} component(s)")]
+    NotASphere {
+        /// Euler characteristic.
+        chi: i64,
+        /// Connected components.
+        components: usize,
+    },
+    /// The pole is out of range or its star in `T₀` is not a disk with a simple link.
+    #[error("pole v{vertex}: {reason}")]
+    Pole {
+        /// The vertex.
+        vertex: u32,
+        /// Why.
+        reason: String,
+    },
+    /// No vertex of `T₀` has a simple link that leaves faces outside its star.
+    #[error("no vertex of the intrinsic Delaunay triangulation has a simple link leaving faces outside its star; give --pole")]
+    NoPole,
+    /// The disk problem was refused.
+    #[error("the disk problem: {0}")]
+    Dirichlet(#[from] DirichletError),
+    /// The disk problem did not converge.
+    #[error("the disk problem did not converge ({stop:?}); max |Θ − θ| = {residual:e}")]
+    NotConverged {
+        /// Why Newton stopped.
+        stop: Stop,
+        /// The last residual.
+        residual: f64,
+    },
+    /// The layout of the flat disk failed (a vertex not reached or not finite).
+    #[error("laying out the flat disk: {0}")]
+    Layout(String),
+}
+
+/// The disk `D = T₀ − star(v∞)` with its maps back to `T₀`.
+#[derive(Clone, Debug)]
+pub struct Disk {
+    /// The disk (vertices renumbered: `T₀`'s without `v∞`).
+    pub mesh: Mesh,
+    /// `ℓ⁰` restricted to the disk.
+    pub lengths: Vec<f64>,
+    /// Per disk vertex, the vertex of `T₀`.
+    pub vertex: Vec<u32>,
+    /// Per disk edge, the edge of `T₀` (edge indices survive flips, so this map holds for
+    /// the flipped disk and the flipped `T₀` alike).
+    pub edge: Vec<Edge>,
+    /// Per disk vertex on the link of `v∞`: the length `ℓ⁰_{a v∞}`; `None` inside.
+    pub pole_length: Vec<Option<f64>>,
+}
+
+/// The result of [`uniformize_sphere`].
+#[derive(Clone, Debug)]
+pub struct SphereUniformization {
+    /// `T₀`: the input made intrinsic Delaunay by Euclidean flips.
+    pub initial_mesh: Mesh,
+    /// `ℓ⁰`: the lengths of `T₀`.
+    pub initial_lengths: Vec<f64>,
+    /// Euclidean flips from the input to `T₀`.
+    pub euclidean_flips: usize,
+    /// The pole `v∞` (a vertex of `T₀`).
+    pub pole: u32,
+    /// The disk `T₀ − star(v∞)`.
+    pub disk: Disk,
+    /// The Dirichlet values `w_a = −2 log ℓ⁰_{a v∞}` per disk vertex (`None` inside).
+    pub fixed: Vec<Option<f64>>,
+    /// The solved disk problem.
+    pub solution: DirichletSolution,
+    /// The layout of the final disk triangulation.
+    pub layout: Layout,
+    /// Per disk vertex, its planar position (centroid 0, mean squared radius 1), the
+    /// stereographic preimage of its output position before the Möbius normalisation.
+    pub planar: Vec<[f64; 2]>,
+    /// The final triangulation of the sphere: `T₀` with the disk's Ptolemy flips.
+    pub mesh: Mesh,
+    /// The disk's flips as edges of `T₀`, in order.
+    pub flip_sequence: Vec<Edge>,
+    /// Per vertex of `T₀`, its position on the unit sphere.
+    pub positions: Vec<[f64; 3]>,
+    /// `|centroid|` of `positions` (after the normalisation, when asked for).
+    pub centroid_norm: f64,
+}
+
+/// Whether the star of `v` in `mesh` is a disk with a simple link: no loop at `v`, every
+/// face at `v` has `v` once, the neighbours of `v` are distinct, and some face lies
+/// outside the star. `Err(reason)` otherwise.
+pub fn check_pole(mesh: &Mesh, v: Vertex) -> Result<(), String> {
+    if v.idx() >= mesh.n_vertices() {
+        return Err(format!(
+            "out of range (the surface has {} vertices)",
+            mesh.n_vertices()
+        ));
+    }
+    let mut seen = vec![false; mesh.n_vertices()];
+    for h in mesh.outgoing(v) {
+        let w = mesh.tip(h);
+        if w == v {
+            return Err(format!("edge e{} is a loop at the pole", h.edge().0));
+        }
+        if std::mem::replace(&mut seen[w.idx()], true) {
+            return Err(format!("two edges join the pole to v{}", w.0));
+        }
+    }
+    let star = mesh
+        .faces()
+        .filter(|&f| mesh.face_vertices(f).contains(&v))
+        .count();
+    if star == mesh.n_faces() {
+        return Err("every face contains the pole: nothing is left to lay out".into());
+    }
+    Ok(())
+}
+
+/// Default poles, tried in this order until the disk problem converges: the first
+/// [`POLE_ATTEMPTS`] vertices of `mesh` that pass [`check_pole`], by decreasing degree and
+/// then increasing index.
+pub fn pole_candidates(mesh: &Mesh) -> Vec<Vertex> {
+    let mut v: Vec<Vertex> = mesh
+        .vertices()
+        .filter(|&v| check_pole(mesh, v).is_ok())
+        .collect();
+    v.sort_by_key(|&w| (std::cmp::Reverse(mesh.degree(w)), w.0));
+    v.truncate(POLE_ATTEMPTS);
+    v
+}
+
+/// How many default poles [`uniformize_sphere`] tries.
+pub const POLE_ATTEMPTS: usize = 4;
+
+/// The disk of `pole`, its Dirichlet values `w_a = −2 log ℓ_{a v∞}` and the solved disk
+/// problem.
+fn solve_for_pole(
+    t0: &Mesh,
+    l0: &[f64],
+    pole: Vertex,
+    newton: &UniformizeOptions,
+) -> Result<(Disk, Vec<Option<f64>>, DirichletSolution), SphereError> {
+    let disk = disk_of(t0, l0, pole).map_err(|reason| SphereError::Pole {
+        vertex: pole.0,
+        reason,
+    })?;
+    let fixed: Vec<Option<f64>> = disk
+        .pole_length
+        .iter()
+        .map(|l| l.map(|l| -2.0 * l.ln()))
+        .collect();
+    let theta = vec![2.0 * std::f64::consts::PI; disk.mesh.n_vertices()];
+    let solution = solve_by_continuation(&disk, &fixed, &theta, newton)?;
+    Ok((disk, fixed, solution))
+}
+
+/// The disk `mesh − star(pole)` (the pole already checked by [`check_pole`]).
+pub fn disk_of(mesh: &Mesh, lengths: &[f64], pole: Vertex) -> Result<Disk, String> {
+    let renumber = |w: Vertex| if w.0 < pole.0 { w.0 } else { w.0 - 1 };
+    let in_star = |f: Face| mesh.face_vertices(f).contains(&pole);
+    let kept: Vec<Face> = mesh.faces().filter(|&f| !in_star(f)).collect();
+    let mut slot = vec![u32::MAX; mesh.n_faces()];
+    for (k, f) in kept.iter().enumerate() {
+        slot[f.idx()] = k as u32;
+    }
+    let faces: Vec<[u32; 3]> = kept
+        .iter()
+        .map(|&f| mesh.face_vertices(f).map(renumber))
+        .collect();
+    let side = |h: HalfEdge| -> Option<(u32, u8)> {
+        let f = mesh.face(h)?;
+        let s = mesh.face_halfedges(f).iter().position(|&x| x == h)?;
+        (slot[f.idx()] != u32::MAX).then_some((slot[f.idx()], s as u8))
+    };
+    let gluing: Vec<_> = mesh
+        .edges()
+        .filter_map(|e| Some((side(e.side(0))?, side(e.side(1))?)))
+        .collect();
+    let disk = Mesh::from_gluing(mesh.n_vertices() as u32 - 1, &faces, &gluing)
+        .map_err(|e| format!("the disk does not build: {e}"))?;
+    let mut edge = vec![Edge(u32::MAX); disk.n_edges()];
+    for (k, &f) in kept.iter().enumerate() {
+        let ours = disk.face_halfedges(Face(k as u32));
+        for (hd, hs) in ours.into_iter().zip(mesh.face_halfedges(f)) {
+            if disk.tail(hd).0 != renumber(mesh.tail(hs)) {
+                return Err("the disk's faces do not match the surface's".into());
+            }
+            edge[hd.edge().idx()] = hs.edge();
+        }
+    }
+    let chi = disk.euler_characteristic();
+    if chi != 1 || disk.n_boundary_loops() != 1 {
+        return Err(format!(
+            "the complement of the star is not a disk (χ = {chi}, {} boundary loop(s))",
+            disk.n_boundary_loops()
+        ));
+    }
+    let vertex: Vec<u32> = (0..mesh.n_vertices() as u32)
+        .filter(|&w| w != pole.0)
+        .collect();
+    let mut pole_length = vec![None; disk.n_vertices()];
+    for h in mesh.outgoing(pole) {
+        pole_length[renumber(mesh.tip(h)) as usize] = Some(lengths[h.edge().idx()]);
+    }
+    let disk_lengths = edge.iter().map(|e| lengths[e.idx()]).collect();
+    Ok(Disk {
+        mesh: disk,
+        lengths: disk_lengths,
+        vertex,
+        edge,
+        pole_length,
+    })
+}
+
+/// The disk problem by continuation in the Dirichlet values: with `w̄` their mean and
+/// `δ_a = w_a − w̄`, solve with the values `w̄ + t·δ` for `t` from `0` (a constant, i.e. a
+/// global scale of the input: `u ≡ w̄` is a valid start) to `1`, each stage started at the
+/// previous solution, the step in `t` doubled after a success and halved after a failure
+/// (at least `2⁻²⁰`). Intermediate stages stop at `max |Θ − θ| ≤ 10⁻⁶`.
+fn solve_by_continuation(
+    disk: &Disk,
+    fixed: &[Option<f64>],
+    theta: &[f64],
+    newton: &UniformizeOptions,
+) -> Result<DirichletSolution, SphereError> {
+    let values: Vec<f64> = fixed.iter().flatten().copied().collect();
+    let mean = values.iter().sum::<f64>() / values.len().max(1) as f64;
+    let at = |t: f64| -> Vec<Option<f64>> {
+        fixed
+            .iter()
+            .map(|w| w.map(|w| if t >= 1.0 { w } else { mean + t * (w - mean) }))
+            .collect()
+    };
+    let loose = UniformizeOptions {
+        tolerance: newton.tolerance.max(1e-6),
+        ..newton.clone()
+    };
+    let mut u = vec![mean; fixed.len()];
+    let first = solve_dirichlet(&disk.mesh, &disk.lengths, &at(0.0), theta, &u, &loose)?;
+    if first.stop != Stop::Converged {
+        return Err(SphereError::NotConverged {
+            stop: first.stop,
+            residual: first.residual_max,
+        });
+    }
+    u.clone_from(&first.u);
+    let (mut t, mut dt) = (0.0f64, 1.0f64);
+    loop {
+        let next = (t + dt).min(1.0);
+        let o = if next >= 1.0 { newton } else { &loose };
+        let sol = solve_dirichlet(&disk.mesh, &disk.lengths, &at(next), theta, &u, o)?;
+        if sol.stop == Stop::Converged {
+            if next >= 1.0 {
+                return Ok(sol);
+            }
+            t = next;
+            u = sol.u;
+            dt *= 2.0;
+        } else {
+            dt *= 0.5;
+            if dt < 2f64.powi(-20) {
+                return Err(SphereError::NotConverged {
+                    stop: sol.stop,
+                    residual: sol.residual_max,
+                });
+            }
+        }
+    }
+}
+
+/// Inverse stereographic projection from the north pole: `p ↦ (2p, |p|² − 1)/(|p|² + 1)`.
+pub fn inverse_stereographic(p: [f64; 2]) -> [f64; 3] {
+    let r2 = p[0] * p[0] + p[1] * p[1];
+    let d = r2 + 1.0;
+    unit([2.0 * p[0] / d, 2.0 * p[1] / d, (r2 - 1.0) / d])
+}
+
+fn unit(x: [f64; 3]) -> [f64; 3] {
+    let n = (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]).sqrt();
+    [x[0] / n, x[1] / n, x[2] / n]
+}
+
+fn centroid(points: &[[f64; 3]]) -> [f64; 3] {
+    let n = points.len().max(1) as f64;
+    let mut c = [0.0; 3];
+    for p in points {
+        for k in 0..3 {
+            c[k] += p[k] / n;
+        }
+    }
+    c
+}
+
+fn norm(x: [f64; 3]) -> f64 {
+    (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]).sqrt()
+}
+
+/// The automorphism of the unit ball taking `c` (`|c| < 1`) to the origin, on `|x| = 1`:
+/// `φ_c(x) = ((1 − |c|²)(x − c) − |x − c|²c)/|x − c|²` (a Möbius map of `S²`).
+pub fn ball_automorphism(c: [f64; 3], x: [f64; 3]) -> [f64; 3] {
+    let c2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+    let d = [x[0] - c[0], x[1] - c[1], x[2] - c[2]];
+    let d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    unit([
+        ((1.0 - c2) * d[0] - d2 * c[0]) / d2,
+        ((1.0 - c2) * d[1] - d2 * c[1]) / d2,
+        ((1.0 - c2) * d[2] - d2 * c[2]) / d2,
+    ])
+}
+
+/// Möbius-normalise `points` on `S²`: `x ↦ φ_c(x)` with `c` half the centroid, repeated
+/// until `|centroid| ≤ 10⁻¹³` or 1000 rounds (the linearisation of one round is the
+/// second-moment matrix, of norm below 1 unless all points lie on a line). Returns the
+/// final `|centroid|`.
+pub fn mobius_center(points: &mut [[f64; 3]]) -> f64 {
+    for _ in 0..1000 {
+        let m = centroid(points);
+        if norm(m) <= 1e-13 {
+            break;
+        }
+        let c = [0.5 * m[0], 0.5 * m[1], 0.5 * m[2]];
+        for p in points.iter_mut() {
+            *p = ball_automorphism(c, *p);
+        }
+    }
+    norm(centroid(points))
+}
+
+/// Uniformize a closed genus-0 surface to a convex polyhedron inscribed in the unit sphere
+/// (notes Thm 9) by the method of the module documentation. The result is numerical
+/// (`f64`); [`super::sphere_checks`] certifies its planar layout and
+/// [`super::dirichlet_certificate`] the disk problem.
+#[allow(clippy::too_many_lines)] // the five steps of the method, in order
+pub fn uniformize_sphere(
+    mesh: &Mesh,
+    lengths: &[f64],
+    opts: &SphereOptions,
+) -> Result<SphereUniformization, SphereError> {
+    validate_input(mesh, lengths, &Targets::flat(mesh.n_vertices())).or_else(|e| match e {
+        UniformizeError::GaussBonnet { .. } => Ok(()),
+        other => Err(other),
+    })?;
+    let comps = super::components::Components::of(mesh);
+    let chi = mesh.euler_characteristic();
+    if chi != 2 || comps.roots.len() != 1 {
+        return Err(SphereError::NotASphere {
+            chi,
+            components: comps.roots.len(),
+        });
+    }
+    if let Some(p) = opts.pole {
+        if p as usize >= mesh.n_vertices() {
+            return Err(SphereError::Pole {
+                vertex: p,
+                reason: format!(
+                    "out of range (the surface has {} vertices)",
+                    mesh.n_vertices()
+                ),
+            });
+        }
+    }
+    // 1. T₀ (T21, T23).
+    let mut t0 = mesh.clone();
+    let mut l0 = lengths.to_vec();
+    let rep = flip_to_delaunay(
+        &mut t0,
+        &mut l0,
+        FlipKind::Euclidean,
+        &FlipOptions::default(),
+    )
+    .map_err(UniformizeError::from)?;
+    if !rep.all_certified_delaunay() {
+        return Err(UniformizeError::InitialNotDelaunay {
+            undecided: rep.undecided.len() + rep.refused.len(),
+        }
+        .into());
+    }
+    let candidates: Vec<Vertex> = match opts.pole {
+        Some(p) => {
+            check_pole(&t0, Vertex(p)).map_err(|reason| SphereError::Pole { vertex: p, reason })?;
+            vec![Vertex(p)]
+        }
+        None => pole_candidates(&t0),
+    };
+    // 2. The Dirichlet problem on the disk, for the first candidate pole that converges.
+    let mut first_error = None;
+    let mut found = None;
+    for &pole in &candidates {
+        match solve_for_pole(&t0, &l0, pole, &opts.newton) {
+            Ok(x) => {
+                found = Some((pole, x));
+                break;
+            }
+            Err(e) => {
+                first_error.get_or_insert(e);
+            }
+        }
+    }
+    let Some((pole, (disk, fixed, solution))) = found else {
+        return Err(first_error.unwrap_or(SphereError::NoPole));
+    };
+    // 3. Layout, centroid 0 and mean squared radius 1.
+    let layout = unfold(&solution.mesh, &solution.lengths, Face(0));
+    let placed = layout.vertex_positions(&solution.mesh);
+    let mut planar = Vec::with_capacity(placed.len());
+    for (v, p) in placed.iter().enumerate() {
+        match p {
+            Some(p) if p[0].is_finite() && p[1].is_finite() => planar.push(*p),
+            _ => return Err(SphereError::Layout(format!("disk vertex {v} not placed"))),
+        }
+    }
+    let n = planar.len() as f64;
+    let (cx, cy) = planar
+        .iter()
+        .fold((0.0, 0.0), |(x, y), p| (x + p[0] / n, y + p[1] / n));
+    let spread = (planar
+        .iter()
+        .map(|p| (p[0] - cx).powi(2) + (p[1] - cy).powi(2))
+        .sum::<f64>()
+        / n)
+        .sqrt();
+    if !(spread.is_normal()) {
+        return Err(SphereError::Layout("the laid-out vertices coincide".into()));
+    }
+    for p in &mut planar {
+        *p = [(p[0] - cx) / spread, (p[1] - cy) / spread];
+    }
+    // 4. Inverse stereographic projection, v∞ at the north pole.
+    let mut positions = vec![[0.0, 0.0, 1.0]; t0.n_vertices()];
+    for (k, &v) in disk.vertex.iter().enumerate() {
+        positions[v as usize] = inverse_stereographic(planar[k]);
+    }
+    // 5. Möbius normalisation.
+    let centroid_norm = if opts.normalize {
+        mobius_center(&mut positions)
+    } else {
+        norm(centroid(&positions))
+    };
+    // The final triangulation: the disk's flips on T₀.
+    let mut final_mesh = t0.clone();
+    let flip_sequence: Vec<Edge> = solution
+        .flip_sequence
+        .iter()
+        .map(|e| disk.edge[e.idx()])
+        .collect();
+    for &e in &flip_sequence {
+        final_mesh
+            .flip(e)
+            .map_err(|err| SphereError::Layout(format!("replaying flip of e{}: {err}", e.0)))?;
+    }
+    Ok(SphereUniformization {
+        initial_mesh: t0,
+        initial_lengths: l0,
+        euclidean_flips: rep.flips,
+        pole: pole.0,
+        disk,
+        fixed,
+        solution,
+        layout,
+        planar,
+        mesh: final_mesh,
+        flip_sequence,
+        positions,
+        centroid_norm,
+    })
+}

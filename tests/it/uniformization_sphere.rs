@@ -1,0 +1,193 @@
+//! The sphere target of uniformization (notes Thm 9; T24, B74–B76): a genus-0 surface
+//! mapped to a convex polyhedron inscribed in the unit sphere, checked against a closed
+//! form, against the input's length cross ratios (T16, T20) and by certified planar
+//! predicates, with the disk problem certified (B76). Each check has a negative control.
+
+use crate::meshgen::icosphere;
+use crate::support::cases;
+use penner::mesh::{Mesh, Vertex};
+use penner::uniformization::certificate::CertificateOutcome;
+use penner::uniformization::dirichlet_certificate::{certify_disk, check_disk_certificate};
+use penner::uniformization::sphere::{
+    uniformize_sphere, SphereError, SphereOptions, SphereUniformization,
+};
+use penner::uniformization::sphere_checks::{
+    chord_lengths, cross_ratio_deviation, planar_delaunay,
+};
+use rug::Rational;
+
+/// B75: tolerance of the numerical comparisons of the output polyhedron (chords, log
+/// cross ratios) for surfaces of at most 10³ vertices solved to max |Θ − θ| ≤ 10⁻¹².
+const B75_TOLERANCE: f64 = 1e-8;
+
+/// A noisy icosphere (`20k²` faces) and its Euclidean lengths.
+fn noisy_sphere(k: u32, seed: u64) -> (Mesh, Vec<f64>) {
+    let mut s = icosphere(k);
+    let amount = 0.2 * s.mean_edge();
+    s.jitter(amount, seed);
+    let m = s.mesh();
+    let l = s.lengths(&m);
+    (m, l)
+}
+
+/// The bipyramid over the regular `n`-gon in the unit circle with apexes `(0, 0, top)` and
+/// `(0, 0, −bottom)` (vertices `n`, `n + 1`), and its Euclidean lengths.
+fn bipyramid(n: u32, top: f64, bottom: f64) -> (Mesh, Vec<f64>) {
+    let mut pos: Vec<[f64; 3]> = (0..n)
+        .map(|k| {
+            let a = 2.0 * std::f64::consts::PI * f64::from(k) / f64::from(n);
+            [a.cos(), a.sin(), 0.0]
+        })
+        .collect();
+    pos.push([0.0, 0.0, top]);
+    pos.push([0.0, 0.0, -bottom]);
+    let mut faces = Vec::new();
+    for k in 0..n {
+        faces.push([k, (k + 1) % n, n]);
+        faces.push([(k + 1) % n, k, n + 1]);
+    }
+    let m = Mesh::from_faces(n + 2, &faces).unwrap();
+    let l = m
+        .edges()
+        .map(|e| {
+            let h = e.halfedge();
+            let (a, b) = (pos[m.tail(h).idx()], pos[m.tip(h).idx()]);
+            ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
+        })
+        .collect();
+    (m, l)
+}
+
+/// The largest deviation of the chords of `sol` from the closed form of the bipyramid
+/// (B74, "Closed form"): `√2` from an apex, `2 sin(π/n)` along the equator.
+fn bipyramid_error(sol: &SphereUniformization, n: u32) -> f64 {
+    let c = chord_lengths(sol);
+    let equator = 2.0 * (std::f64::consts::PI / f64::from(n)).sin();
+    sol.mesh
+        .edges()
+        .map(|e| {
+            let h = e.halfedge();
+            let apex = sol.mesh.tail(h).0 >= n || sol.mesh.tip(h).0 >= n;
+            let want = if apex { 2f64.sqrt() } else { equator };
+            (c[e.idx()] - want).abs()
+        })
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn t24_sphere_bipyramid_matches_the_closed_form() {
+    for (n, top, bottom) in [(4, 1.0, 1.0), (5, 0.6, 1.7), (7, 0.3, 2.5)] {
+        let (m, l) = bipyramid(n, top, bottom);
+        let sol = uniformize_sphere(&m, &l, &SphereOptions::default()).unwrap();
+        let err = bipyramid_error(&sol, n);
+        assert!(err <= B75_TOLERANCE, "n = {n}: chord error {err:e}");
+        // The apexes are antipodal (the result is unique up to rotation).
+        let (a, b) = (sol.positions[n as usize], sol.positions[n as usize + 1]);
+        let gap = (0..3).map(|k| (a[k] + b[k]).abs()).fold(0.0, f64::max);
+        assert!(gap <= B75_TOLERANCE, "n = {n}: |a + b| = {gap:e}");
+        // Negative control: without the Möbius normalisation the same polyhedron is
+        // inscribed but not centred, and the closed form rejects it.
+        let raw = SphereOptions {
+            normalize: false,
+            ..SphereOptions::default()
+        };
+        let sol = uniformize_sphere(&m, &l, &raw).unwrap();
+        assert!(bipyramid_error(&sol, n) > 1e3 * B75_TOLERANCE, "n = {n}");
+    }
+}
+
+#[test]
+fn t24_sphere_cross_ratios_match_the_input() {
+    for seed in 0..cases(2, 8) as u64 {
+        let (m, l) = noisy_sphere(3, seed);
+        let sol = uniformize_sphere(&m, &l, &SphereOptions::default()).unwrap();
+        for p in &sol.positions {
+            let r = (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt();
+            assert!((r - 1.0).abs() <= 1e-15, "seed {seed}: |x| = {r}");
+        }
+        let dev = cross_ratio_deviation(&sol, &sol.initial_lengths).unwrap();
+        assert!(dev <= B75_TOLERANCE, "seed {seed}: {dev:e}");
+        // Negative control: one input length 0.1 % longer changes the cross ratios of its
+        // two quadrilaterals' edges by about 10⁻³.
+        let mut wrong = sol.initial_lengths.clone();
+        wrong[7] *= 1.001;
+        let dev = cross_ratio_deviation(&sol, &wrong).unwrap();
+        assert!(dev > 1e4 * B75_TOLERANCE, "seed {seed}: control {dev:e}");
+    }
+}
+
+#[test]
+fn t24_sphere_layout_is_certified_planar_delaunay_and_convex() {
+    let (m, l) = noisy_sphere(3, 11);
+    let sol = uniformize_sphere(&m, &l, &SphereOptions::default()).unwrap();
+    let disk = &sol.solution.mesh;
+    let ok = planar_delaunay(disk, &sol.planar);
+    assert!(ok.holds(), "{ok:?}");
+    // Negative control 1: an interior vertex moved onto a far one folds triangles.
+    let bv = disk.boundary_vertices();
+    let inner: Vec<usize> = (0..disk.n_vertices()).filter(|&v| !bv[v]).collect();
+    let mut folded = sol.planar.clone();
+    folded[inner[0]] = sol.planar[inner[inner.len() - 1]];
+    let bad = planar_delaunay(disk, &folded);
+    assert!(!bad.not_ccw.is_empty(), "{bad:?}");
+    // Negative control 2: a boundary vertex pulled to the centroid of the disk makes the
+    // boundary reflex there.
+    let a = (0..disk.n_vertices()).find(|&v| bv[v]).unwrap();
+    let mut dented = sol.planar.clone();
+    dented[a] = [0.5 * dented[a][0], 0.5 * dented[a][1]];
+    let bad = planar_delaunay(disk, &dented);
+    assert!(bad.not_convex.contains(&Vertex(a as u32)), "{bad:?}");
+}
+
+#[test]
+fn b76_disk_certificate_holds_and_refuses_a_wrong_u() {
+    let (m, l) = noisy_sphere(3, 5);
+    let sol = uniformize_sphere(&m, &l, &SphereOptions::default()).unwrap();
+    let (data, outcome) = certify_disk(&sol, 128);
+    let CertificateOutcome::Holds { distance, .. } = outcome else {
+        panic!("{outcome:?}")
+    };
+    assert!(distance < 1e-9);
+    // Negative control: u moved by 10⁻⁴ at a free vertex, far outside the box's radius.
+    let free = data.pole_length.iter().position(Option::is_none).unwrap();
+    let mut wrong = data.clone();
+    wrong.u[free] += Rational::from((1, 10_000));
+    assert!(matches!(
+        check_disk_certificate(&wrong, 128),
+        CertificateOutcome::Undecided { .. }
+    ));
+    // Negative control: a Dirichlet value of another problem (one pole length doubled).
+    let link = data.pole_length.iter().position(Option::is_some).unwrap();
+    let mut wrong = data;
+    wrong.pole_length[link] = wrong.pole_length[link].map(|x| 2.0 * x);
+    assert!(matches!(
+        check_disk_certificate(&wrong, 128),
+        CertificateOutcome::Undecided { .. }
+    ));
+}
+
+#[test]
+fn t24_sphere_bad_input_is_typed() {
+    let torus = crate::meshgen::jittered_torus(6, 6, 1);
+    assert!(matches!(
+        uniformize_sphere(&torus.0, &torus.1, &SphereOptions::default()),
+        Err(SphereError::NotASphere { chi: 0, .. })
+    ));
+    let (m, l) = bipyramid(5, 1.0, 1.0);
+    let far = SphereOptions {
+        pole: Some(99),
+        ..SphereOptions::default()
+    };
+    assert!(matches!(
+        uniformize_sphere(&m, &l, &far),
+        Err(SphereError::Pole { vertex: 99, .. })
+    ));
+    let mut bad = l.clone();
+    bad[3] = -1.0;
+    assert!(matches!(
+        uniformize_sphere(&m, &bad, &SphereOptions::default()),
+        Err(SphereError::Input(_))
+    ));
+    let open = Mesh::from_faces(3, &[[0, 1, 2]]).unwrap();
+    assert!(uniformize_sphere(&open, &[1.0; 3], &SphereOptions::default()).is_err());
+}
