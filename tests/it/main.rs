@@ -70,4 +70,5 @@ mod tolerance_range;
 mod tolerance_tightness;
 mod uniformization;
 mod variational;
+mod variational_fast;
 mod variational_fused;
