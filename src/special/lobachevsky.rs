@@ -101,6 +101,21 @@ pub fn lobachevsky<T: Real>(x: &T) -> T {
             return cast::<Dd, T>(&y).unwrap_or_else(|| nan_like(x));
         }
     }
+    if let Some(v) = cast::<T, Mpfr>(x) {
+        // The stored number is exact: evaluate on it directly and round once to the
+        // value's precision (the generic path below, without its rational round trips).
+        let p = Mpfr::precision_bits(v.ctx());
+        let found = if v.0.is_finite() {
+            point(&v.0, p)
+        } else {
+            None
+        };
+        let y = match found {
+            Some((value, _, _)) => Mpfr(Float::with_val(p, &value)),
+            None => nan_like(&v),
+        };
+        return cast::<Mpfr, T>(&y).unwrap_or_else(|| nan_like(x));
+    }
     if let Some(v) = cast::<T, Interval<Mpfr>>(x) {
         return cast::<Interval<Mpfr>, T>(&lobachevsky_enclosure(&v))
             .unwrap_or_else(|| nan_like(x));
