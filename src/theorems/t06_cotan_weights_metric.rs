@@ -95,6 +95,20 @@ pub fn verify_weights_determine_metric<T: Real>(
         );
         return tally.verdict();
     }
+    // The gauge edge's equation is not imposed by the reduced solve: a result that misses
+    // it is no metric with these weights (a solver failure, or unrealizable weights).
+    let r0 = sol.residual[0].approx_f64().abs();
+    let r0_bound = SAFETY * 64.0 * (dw[0] + 4.0 * e * weights[0].approx_f64().abs());
+    if r0.partial_cmp(&r0_bound) != Some(std::cmp::Ordering::Less)
+        && r0.partial_cmp(&r0_bound) != Some(std::cmp::Ordering::Equal)
+    {
+        tally.undecided(
+            "e0",
+            "the recovered metric misses the gauge edge's weight: no metric found",
+            r0,
+        );
+        return tally.verdict();
+    }
     let l0 = lengths[0].clone();
     for (r, &edge) in free.iter().enumerate() {
         let row = &sol.hessian_inverse[r];
@@ -112,24 +126,6 @@ pub fn verify_weights_determine_metric<T: Real>(
         };
         let d = sol.q[edge].clone() - &qstar;
         tally.within(format!("e{edge}"), "recovered ℓ²/ℓ₀² − given", &d, tol);
-    }
-    // The gauge edge's equation is not imposed by the reduced solve: a result within
-    // tolerance on every edge that misses it is no metric with these weights (a solver
-    // failure, or unrealizable weights), undecided. An edge beyond its tolerance is a
-    // witness whatever the gauge residual: B59 bounds `q̂ − q*` by the free equations
-    // alone (their solution is unique, T06), so a raised weight is rejected as another
-    // metric, not left undecided.
-    let r0 = sol.residual[0].approx_f64().abs();
-    let r0_bound = SAFETY * 64.0 * (dw[0] + 4.0 * e * weights[0].approx_f64().abs());
-    if !matches!(
-        r0.partial_cmp(&r0_bound),
-        Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)
-    ) {
-        tally.undecided(
-            "e0",
-            "the recovered metric misses the gauge edge's weight: no metric found",
-            r0,
-        );
     }
     tally.verdict()
 }

@@ -20,9 +20,9 @@ use crate::theorems::t33_hyperbolic::verify_hyperbolic_gradient;
 use crate::theorems::{Settings, Verdict};
 use crate::variational::{energy, hyperbolic};
 
-/// T06-NC: the cotan weights of the case's metric with the weight of edge 1 raised by
-/// 1/1000 (edge 0 is the gauge): the free equations then determine another metric, which
-/// the comparison with the case's metric rejects (proofs/T06, B59).
+/// T06-NC: the cotan weights of the metric with the length of edge 1 raised by 1/100
+/// (edge 0 is the gauge): realizable weights of a different metric, which the comparison
+/// with the case's metric rejects.
 fn t06_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
     if case.mesh.n_edges() > T06_MAX_EDGES || case.mesh.n_edges() < 2 {
         return Some(super::not_applicable(
@@ -33,9 +33,10 @@ fn t06_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
         return Some(v);
     }
     at_precision!(prec, case, |l: T| {
-        let mut w = cotan_weights(&case.mesh, &l);
-        let bump = w[1].lit(1e-3);
-        w[1] += &bump;
+        let mut other = l.clone();
+        let bump = other[1].lit(1.01);
+        other[1] *= &bump;
+        let w = cotan_weights(&case.mesh, &other);
         Some(verify_weights_determine_metric(&case.mesh, &l, &w, s))
     })
 }
