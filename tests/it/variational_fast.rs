@@ -56,7 +56,7 @@ fn face_bound(x: &[f64; 3], t: &FaceF64) -> FaceBound {
     let kappa = [0, 1, 2].map(|m| sigma / (l[(m + 1) % 3] + l[(m + 2) % 3] - l[m]));
     let k_sum: f64 = kappa.iter().sum();
     let k_max = kappa.iter().copied().fold(0.0, f64::max);
-    let c_sum: f64 = cot.iter().map(|c| c.abs()).sum();
+    let c_sum: f64 = cot.iter().copied().map(f64::abs).sum();
     let rho = d
         .iter()
         .map(|v| U * v.abs() / 2.0 + 4.0 * U)
