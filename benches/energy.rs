@@ -5,7 +5,8 @@
 //! (E + ∇E + H at f64) / (cone angles at f64). The input of `E` is the scaled logarithmic
 //! lengths `λ̃` (computed once, outside the timing, as a Newton step would keep them);
 //! `pattern_reused` times the same with the Hessian's sparsity pattern built once, and
-//! `gradient_hessian` without `E` (no Lobachevsky function).
+//! `gradient_hessian` without `E` (no Lobachevsky function), `fast_f64` the binary64 pass
+//! of `variational::fast_f64` (each corner angle once, proofs/B88).
 //!
 //! Run: `cargo bench --bench energy -- --measurement-time 5 --warm-up-time 1`.
 //! `PENNER_BENCH_FACES_GRID=NU,NV` picks another grid (2·NU·NV faces).
@@ -25,6 +26,7 @@ use penner::special::lobachevsky;
 use penner::variational::energy::{
     energy_gradient_hessian_at, energy_gradient_hessian_with, gradient_at, hessian_at, log_lengths,
 };
+use penner::variational::fast_f64::energy_gradient_hessian_f64;
 use penner::variational::pattern::HessianPattern;
 use penner::variational::triangle::angles_from_log_lengths;
 use std::hint::black_box;
@@ -36,7 +38,7 @@ fn energy_all<T: Real>(mesh: &Mesh, lt: &[T], u: &[T], t: &[T]) -> usize {
     parts.hessian.dim()
 }
 
-fn run<T: Real>(
+fn run<T: Real + 'static>(
     g: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
     name: &str,
     mesh: &Mesh,
@@ -58,6 +60,15 @@ fn run<T: Real>(
             black_box(p.energy)
         });
     });
+    if let Some(lt64) = (&lt as &dyn std::any::Any).downcast_ref::<Vec<f64>>() {
+        let (u64, t64) = (vec![0.0; n], vec![std::f64::consts::TAU; n]);
+        g.bench_function(BenchmarkId::new("fast_f64", name), |b| {
+            b.iter(|| {
+                let p = energy_gradient_hessian_f64(&pattern, mesh, black_box(lt64), &u64, &t64);
+                black_box(p.energy)
+            });
+        });
+    }
     g.bench_function(BenchmarkId::new("gradient_hessian", name), |b| {
         b.iter(|| {
             let gr = gradient_at(mesh, black_box(&lt), &t);

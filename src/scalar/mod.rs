@@ -24,6 +24,7 @@ pub mod parse;
 pub use certified::{Certified, Sign, Stage};
 #[doc(hidden)]
 pub use dd::div_jmp17 as dd_div_jmp17;
+pub(crate) use dd::reduce_payne_hanek as dd_reduce_payne_hanek;
 #[doc(hidden)]
 pub use dd::sloppy_add as dd_sloppy_add;
 pub use dd::Dd;

@@ -8,11 +8,14 @@
 //! * `Л(π/2 + t) = −t (log 2 − Σ bₙ t²ⁿ)` for odd `k`, `|t| ≤ 1/2`,
 //!
 //! the first terms in double-double (Horner, JMP17 products and sums, B04/B06), the terms
-//! below `2⁻⁶⁰` of the leading factor in binary64. Larger arguments, and reduced arguments
-//! below `2⁻³⁰` (next to a multiple of π/2), go through the MPFR evaluation instead.
+//! below `2⁻⁶⁰` of the leading factor in binary64. Larger arguments are reduced by the
+//! Payne–Hanek reduction of `Dd` (B18: absolute error `2⁻²⁵²`, relative `u²(1 + 2⁻¹⁹)`),
+//! for every finite argument. Reduced arguments below `2⁻³⁰` after the short reduction
+//! and below `2⁻¹⁰⁰` after Payne–Hanek (next to a multiple of π/2) go through the MPFR
+//! evaluation instead.
 
 use super::coefficients::{table, working_precision};
-use crate::scalar::{Dd, Real};
+use crate::scalar::{dd_reduce_payne_hanek as reduce_payne_hanek, Dd, Real};
 use rug::float::Constant;
 use rug::Float;
 use std::sync::OnceLock;
@@ -27,6 +30,10 @@ const DD_LIMIT: f64 = 3.9;
 /// Smallest reduced `|t|` accepted: the reduction's absolute error, below `2⁻¹⁵⁶`, is then
 /// below `2⁻¹²⁶` of `t` (B55).
 const MIN_REDUCED: f64 = 9.313225746154785e-10; // 2⁻³⁰
+
+/// Smallest reduced `|t|` accepted from the Payne–Hanek reduction: its absolute error
+/// `2⁻²⁵²` (B18) is then below `2⁻¹⁵²` of `t`, under its relative error `u²(1 + 2⁻¹⁹)`.
+const MIN_REDUCED_WIDE: f64 = 7.888609052210118e-31; // 2⁻¹⁰⁰
 
 struct Consts {
     /// π/2 = p1 + p2 + p3 + O(2⁻¹⁶⁰).
@@ -134,32 +141,41 @@ fn at_half_pi(t: Dd, c: &Consts) -> Dd {
     neg(mul(t, add(c.ln2, neg(q))))
 }
 
-/// `Л(x)` in double-double, or `None` when the MPFR path must decide (`|x| > 3.9`,
-/// reduced argument below `2⁻³⁰`, non-finite `x`).
+/// `Л(x)` in double-double, or `None` when the MPFR path must decide (reduced argument
+/// below `2⁻³⁰` for `|x| ≤ 3.9`, below `2⁻¹⁰⁰` beyond, non-finite `x`).
 pub(crate) fn lobachevsky_dd(x: Dd) -> Option<Dd> {
     let c = consts();
     let ax = x.hi.abs();
-    if ax.is_nan() || ax > DD_LIMIT {
+    if !ax.is_finite() {
         return None;
     }
     if x.hi == 0.0 {
         return Some(Dd::default());
     }
-    let k = (x.hi / c.p[0]).round();
-    let t = if k == 0.0 {
-        x
+    let (t, odd) = if ax > DD_LIMIT {
+        // proof: B18 (reduction), B55 (wide arguments)
+        let (t, k) = reduce_payne_hanek(x);
+        if t.hi.abs() < MIN_REDUCED_WIDE {
+            return None;
+        }
+        (t, k & 1 == 1)
     } else {
-        // x.hi − k·P₁ is exact (Sterbenz: x.hi/(k·P₁) ∈ [1/2, 2] for |k| ≤ 2, k·P₁ exact);
-        // the small parts are summed exactly as a double-double first.
-        let a = x.hi - k * c.p[0];
-        let (s, e) = two_sum(x.lo, -k * c.p[1]);
-        let small = add_f64(Dd::from_parts(s, e), -k * c.p[2]);
-        add(Dd::from_f64(a), small)
+        let k = (x.hi / c.p[0]).round();
+        let t = if k == 0.0 {
+            x
+        } else {
+            // x.hi − k·P₁ is exact (Sterbenz: x.hi/(k·P₁) ∈ [1/2, 2] for |k| ≤ 2, k·P₁
+            // exact); the small parts are summed exactly as a double-double first.
+            let a = x.hi - k * c.p[0];
+            let (s, e) = two_sum(x.lo, -k * c.p[1]);
+            let small = add_f64(Dd::from_parts(s, e), -k * c.p[2]);
+            add(Dd::from_f64(a), small)
+        };
+        if k != 0.0 && t.hi.abs() < MIN_REDUCED {
+            return None;
+        }
+        (t, k.abs() == 1.0)
     };
-    if k != 0.0 && t.hi.abs() < MIN_REDUCED {
-        return None;
-    }
-    let odd = k.abs() == 1.0;
     if !odd {
         return Some(at_zero(t, c));
     }

@@ -10,7 +10,8 @@
 //! at least 8.5× per term. The coefficients are enclosed in MPFR once per precision.
 //!
 //! Per backend: `f64` has a dedicated binary64 path (B53); `Dd` a double-double path for
-//! `|x| ≤ 3.9` (B55); `Mpfr` (and `Dd` elsewhere) evaluate in MPFR at `p + 32..p + 95`
+//! every finite argument (B55, Payne–Hanek beyond `|x| ≤ 3.9`); `Mpfr` (and `Dd` within
+//! `2⁻³⁰`, resp. `2⁻¹⁰⁰`, of a multiple of π/2) evaluate in MPFR at `p + 32..p + 95`
 //! bits and round once; `Dual<T>` adds the derivative
 //! `Л′(x) = −log|2 sin x|`; `Interval<Mpfr>` and `Interval<f64>` return the rigorous
 //! enclosure of [`lobachevsky_enclosure`](super::lobachevsky_enclosure).
@@ -85,7 +86,8 @@ fn interval_f64(x: &Interval<f64>) -> Interval<f64> {
 /// `Л(π/6) = 0.50747080…`.
 ///
 /// Accuracy (proofs/B52, B53, B55): `f64` within a few ulps (measured), `Dd` within 4
-/// units of `2⁻¹⁰⁶` for `|x| ≤ 3.9` (measured) and `Dd` elsewhere and `Mpfr`-p within
+/// units of `2⁻¹⁰⁶` for `|x| ≤ 3.9` and 5 beyond (measured), `Dd` next to multiples of
+/// π/2 and `Mpfr`-p within
 /// one ulp plus `2⁻³⁰` ulp, for every finite argument whose reduction needs at most 2²⁰
 /// bits of π (otherwise NaN). On `Interval<Mpfr>` / `Interval<f64>` the result is a
 /// rigorous enclosure; on `Dual<T>` the derivative part is `d·Л′(v)` (second order exact
@@ -98,6 +100,21 @@ pub fn lobachevsky<T: Real>(x: &T) -> T {
         if let Some(y) = lobachevsky_dd(v) {
             return cast::<Dd, T>(&y).unwrap_or_else(|| nan_like(x));
         }
+    }
+    if let Some(v) = cast::<T, Mpfr>(x) {
+        // The stored number is exact: evaluate on it directly and round once to the
+        // value's precision (the generic path below, without its rational round trips).
+        let p = Mpfr::precision_bits(v.ctx());
+        let found = if v.0.is_finite() {
+            point(&v.0, p)
+        } else {
+            None
+        };
+        let y = match found {
+            Some((value, _, _)) => Mpfr(Float::with_val(p, &value)),
+            None => nan_like(&v),
+        };
+        return cast::<Mpfr, T>(&y).unwrap_or_else(|| nan_like(x));
     }
     if let Some(v) = cast::<T, Interval<Mpfr>>(x) {
         return cast::<Interval<Mpfr>, T>(&lobachevsky_enclosure(&v))

@@ -12,6 +12,7 @@
 //! its rigorous enclosure (proofs/B52).
 
 pub mod energy;
+pub mod fast_f64;
 pub mod hyperbolic;
 pub mod pattern;
 pub mod triangle;

@@ -74,4 +74,5 @@ mod uniformization_speed;
 mod uniformization_layout;
 mod uniformization_sphere;
 mod variational;
+mod variational_fast;
 mod variational_fused;

@@ -160,9 +160,10 @@ fn b52_mpfr_and_dd_within_one_ulp_of_the_tangent_series() {
         let yf = Float::with_val(200, y.hi) + y.lo;
         // Below 2⁻⁹⁶⁸ a Dd carries an absolute 2⁻¹⁰⁷⁵ (B09).
         let e = ulps(&yf, &r, 106, -1075);
-        // The native double-double series (B55) is within 4 units; the MPFR path, taken
-        // for |x| > 3.9 and next to multiples of π/2, within one.
-        let bound = if x.abs() <= 3.9 { 4.0 } else { 1.0 }; // proof: B55
+        // The native double-double series (B55) is within 4 units after the short
+        // reduction (|x| ≤ 3.9) and within 5 after Payne–Hanek (beyond); the MPFR path,
+        // taken within 2⁻³⁰ (resp. 2⁻¹⁰⁰) of multiples of π/2, within one.
+        let bound = if x.abs() <= 3.9 { 4.0 } else { 5.0 }; // proof: B55
         assert!(e <= bound, "Dd: Л({x:e}) off by {e} ulps");
     }
 }

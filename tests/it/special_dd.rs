@@ -105,3 +105,68 @@ fn b55_dd_within_few_ulps_of_the_tangent_series() {
     }
     eprintln!("Dd worst {} ulps at {:e}", worst.0, worst.1);
 }
+
+/// Arguments beyond the short reduction (`|x| > 3.9`): random magnitudes `2¹ … 2¹⁰²³`
+/// with a genuine trailing word, the hardest binary64 case for reduction
+/// (`6381956970095103·2⁷⁹⁷`), double-doubles nearest to `nπ/2 ± 2⁻ʲ` for `n` up to `2⁶⁰`
+/// (`j = 2 … 95`, both sides of the `2⁻¹⁰⁰` switch to MPFR included), and `2⁻¹⁰⁰⁰`
+/// scalings, which stay on the short path.
+fn wide_arguments(rng: &mut ChaCha8Rng, count: usize) -> Vec<Dd> {
+    let hp = Float::with_val(4000, Constant::Pi) >> 1u32;
+    let mut out = vec![
+        Dd::from_f64(6381956970095103.0 * 2f64.powi(797)),
+        Dd::from_f64(f64::MAX),
+        Dd::from_f64(3.9000000000000004),
+        Dd::from_parts(2f64.powi(-1000), 2f64.powi(-1060)),
+    ];
+    while out.len() < count {
+        let x = match out.len() % 3 {
+            0 => {
+                let hi = rng.gen_range(0.5..1.0) * 2f64.powi(rng.gen_range(2..1023));
+                Dd::from_parts(hi, hi * 2f64.powi(-54) * rng.gen_range(-1.0..1.0))
+            }
+            1 => {
+                let n: u64 = rng.gen_range(3..1u64 << 60);
+                let off = Float::with_val(4000, rng.gen_range(0.5..1.0)) >> rng.gen_range(2..96u32);
+                let v = Float::with_val(4000, &hp * n) + if rng.gen() { off } else { -off };
+                nearest(&v)
+            }
+            _ => {
+                let hi = rng.gen_range(0.5..1.0) * 2f64.powi(-rng.gen_range(900..1000));
+                Dd::from_parts(hi, hi * 2f64.powi(-54) * rng.gen_range(-1.0..1.0))
+            }
+        };
+        out.push(if rng.gen() { x } else { -x });
+    }
+    out
+}
+
+/// B55 (wide arguments): the Payne–Hanek path adds the reduction's relative error
+/// `u²(1 + 2⁻¹⁹)` (B18) to the series' error; measured within this many units.
+const DD_WIDE_ULPS: f64 = 5.0; // proof: B55
+
+#[test]
+fn b55_dd_wide_arguments_reduced_by_payne_hanek() {
+    let mut rng = ChaCha8Rng::seed_from_u64(55);
+    let mut worst = (0.0, 0.0);
+    for x in wide_arguments(&mut rng, cases(600, 20_000)) {
+        let y = lobachevsky(&x);
+        let r = lobachevsky_tangent_series(&exact(x), 2 * 106 + 16).expect("finite");
+        let e = dd_ulps(y, &r);
+        if e > worst.0 {
+            worst = (e, x.hi);
+        }
+        assert!(e <= DD_WIDE_ULPS, "Л({x:?}) = {y:?}: {e} ulps from {r}");
+        // Negative control: the value moved by 16 units, more than twice the allowance (at
+        // least 16 subnormal steps where the unit is below the smallest binary64), is
+        // rejected by the same measure whatever the sign of its own error.
+        if !r.is_zero() {
+            // 2^k exactly, also below 2⁻¹⁰²² (`powi` underflows through 1/2^|k| there).
+            let k = (r.get_exp().unwrap_or(0) - 106).max(-1075);
+            let unit = (Float::with_val(64, 1u32) << k).to_f64();
+            let bumped = Dd::from_parts(y.hi, y.lo + 16.0 * unit.max(f64::from_bits(1)));
+            assert!(dd_ulps(bumped, &r) > DD_WIDE_ULPS, "control at {x:?}");
+        }
+    }
+    eprintln!("Dd wide worst {} ulps at {:e}", worst.0, worst.1);
+}

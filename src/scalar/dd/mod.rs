@@ -23,6 +23,7 @@ mod trig;
 
 #[doc(hidden)]
 pub use arith::{div_jmp17, sloppy_add};
+pub(crate) use reduce::reduce_payne_hanek;
 #[doc(hidden)]
 pub use reduce::{PI_2_FIXED, TWO_OVER_PI_BITS};
 

@@ -151,7 +151,7 @@ fn u128_to_dd(t: u128, scale: i32) -> Dd {
 
 /// `x = k·π/2 + r` with `|r| ≤ π/4 (1 + 2⁻¹⁰⁰)`: returns `r` and `k mod 4`, for every
 /// finite `x`. proof: B18
-pub(super) fn reduce_payne_hanek(x: Dd) -> (Dd, i64) {
+pub(crate) fn reduce_payne_hanek(x: Dd) -> (Dd, i64) {
     let v = times_two_over_pi(x);
     // k = nearest integer to v·2⁻²⁵⁴: add one half (2²⁵³ units), read the top two bits.
     let t = add256(v, [0, 0, 0, 1u64 << 61]);

@@ -1,0 +1,253 @@
+//! The binary64 one-pass `E`, `∇E` and Hessian (`variational::fast_f64`, proofs/B88)
+//! against the generic formulas at MPFR-128 (angles by the half-angle form per corner,
+//! cotangents from Kahan's area, `Л` by the MPFR series): per face and assembled, within
+//! twice the first-order bound of B88 computed from the binary64 values.
+
+use crate::meshgen::{icosphere, jittered_torus, random_tetrahedron};
+use crate::support::cases;
+use penner::mesh::Mesh;
+use penner::scalar::{Mpfr, Precision, Real};
+use penner::variational::energy::{energy_gradient_hessian_at, log_lengths};
+use penner::variational::fast_f64::{energy_gradient_hessian_f64, face_f64, FaceF64};
+use penner::variational::pattern::HessianPattern;
+use penner::variational::triangle::face_terms;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use rug::Float;
+use std::collections::HashMap;
+use std::f64::consts::{FRAC_PI_2, PI};
+
+/// The unit roundoff `2⁻⁵³`.
+const U: f64 = 1.0 / 9007199254740992.0;
+
+/// B88's safety factor over the first-order bound (second-order terms, rounding of the
+/// bound and the MPFR-128 reference's own error).
+const SAFETY: f64 = 2.0;
+
+/// `|fast − reference|`, the difference taken at 256 bits.
+fn err(fast: f64, r: &Mpfr) -> f64 {
+    Float::with_val(256, &r.0 - fast).abs().to_f64()
+}
+
+/// B88 items 1–4 for one face with logarithmic lengths `x` and binary64 terms `t`: the
+/// bound on each angle, on each cotangent and on the face's energy term.
+struct FaceBound {
+    angle: f64,
+    cot: [f64; 3],
+    energy: f64,
+}
+
+fn face_bound(x: &[f64; 3], t: &FaceF64) -> FaceBound {
+    let s = (0..3).max_by(|&a, &b| x[a].total_cmp(&x[b])).unwrap_or(0);
+    let d = x.map(|v| v - x[s]);
+    let xs = x[s].abs();
+    let Some(cot) = t.cot else {
+        // Degenerate: angles 0 and the rounded π; f = Σ(α − π/2)d − (π/2)x_s.
+        let sf: f64 = d.iter().map(|v| FRAC_PI_2 * v.abs()).sum::<f64>() + FRAC_PI_2 * xs;
+        let energy = d.iter().map(|v| v.abs() * 12.0 * U).sum::<f64>() + 7.0 * U * sf + PI * U * xs;
+        return FaceBound {
+            angle: 4.0 * U,
+            cot: [0.0; 3],
+            energy,
+        };
+    };
+    let l = d.map(|v| (0.5 * v).exp());
+    let sigma = l[0] + l[1] + l[2];
+    let kappa = [0, 1, 2].map(|m| sigma / (l[(m + 1) % 3] + l[(m + 2) % 3] - l[m]));
+    let k_sum: f64 = kappa.iter().sum();
+    let k_max = kappa.iter().copied().fold(0.0, f64::max);
+    let c_sum: f64 = cot.iter().copied().map(f64::abs).sum();
+    let rho = d
+        .iter()
+        .map(|v| U * v.abs() / 2.0 + 4.0 * U)
+        .fold(0.0, f64::max);
+    let small = U * (k_sum / 2.0 + k_max + 17.0) + 2.0 * rho * c_sum;
+    let angle = 2.0 * small + 10.0 * U;
+    let dl = t
+        .angles
+        .map(|a| (2.0 * a.sin()).ln().abs() * angle + 4.1 * U);
+    let sf: f64 = (0..3)
+        .map(|m| ((t.angles[m] - FRAC_PI_2) * d[m]).abs() + 2.0 * t.lobachevsky[m].abs())
+        .sum::<f64>()
+        + FRAC_PI_2 * xs;
+    let energy = d.iter().map(|v| v.abs() * (angle + 8.0 * U)).sum::<f64>()
+        + 2.0 * dl.iter().sum::<f64>()
+        + 7.0 * U * sf
+        + PI * U * xs;
+    let cot_b = cot.map(|c| {
+        2.0 * U * c_sum + c.abs() * U * (k_sum / 2.0 + 7.0) + (1.0 + c * c) * 2.0 * rho * c_sum
+    });
+    FaceBound {
+        angle,
+        cot: cot_b,
+        energy,
+    }
+}
+
+/// The surfaces of the comparison: a tetrahedron, an icosphere and jittered tori, with
+/// `λ̃ = λ + u_i + u_j` for random `u ∈ [−½, ½]` plus a common shift of up to ±300 (the
+/// scale enters `E` through `x_s`). Returns the mesh, `λ̃`, `u` and targets `Θ`.
+fn case(seed: u64) -> (Mesh, Vec<f64>, Vec<f64>, Vec<f64>) {
+    let (m, l) = match seed % 3 {
+        0 => {
+            let e = random_tetrahedron(seed);
+            let m = e.mesh();
+            let l = e.lengths(&m);
+            (m, l)
+        }
+        1 => {
+            let e = icosphere(2);
+            let m = e.mesh();
+            let l = e.lengths(&m);
+            (m, l)
+        }
+        _ => jittered_torus(9, 7, seed),
+    };
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let n = m.n_vertices();
+    let shift = 600.0 * (rng.gen::<f64>() - 0.5);
+    let u: Vec<f64> = (0..n)
+        .map(|_| rng.gen::<f64>() - 0.5 + shift / 2.0)
+        .collect();
+    let lambda = log_lengths(&l);
+    let lt = m
+        .edges()
+        .map(|e| {
+            let h = e.halfedge();
+            lambda[e.idx()] + u[m.tail(h).idx()] + u[m.tip(h).idx()]
+        })
+        .collect();
+    let t = (0..n).map(|_| 6.0 * rng.gen::<f64>()).collect();
+    (m, lt, u, t)
+}
+
+/// Elements of the binary64 result outside `SAFETY ×` their B88 bound against the
+/// MPFR-128 generic evaluation at `lt_ref` (`lt_ref = lt` for the comparison itself):
+/// per-face angles, cotangents and energy terms, then `E`, every `∇E_i` and every stored
+/// Hessian entry.
+fn violations(m: &Mesh, lt: &[f64], lt_ref: &[f64], u: &[f64], t: &[f64]) -> usize {
+    let p = Precision::new(128).unwrap();
+    let hi = |v: &[f64]| -> Vec<Mpfr> { v.iter().map(|&x| Mpfr::from_f64(x, p)).collect() };
+    let (lr, ur, tr) = (hi(lt_ref), hi(u), hi(t));
+    let mut bad = 0;
+    let mut e_bound = 0.0;
+    let mut e_abs = 0.0;
+    let mut theta_bound = vec![0.0; m.n_vertices()];
+    let mut corners = vec![0.0; m.n_vertices()];
+    // (i, j) ↦ (Σ ½Δcot, Σ |½cot|, contributions).
+    let mut h_bound: HashMap<(usize, usize), (f64, f64, f64)> = HashMap::new();
+    for f in m.faces() {
+        let hs = m.face_halfedges(f);
+        let x = hs.map(|h| lt[h.edge().idx()]);
+        let tf = face_f64(&x);
+        let b = face_bound(&x, &tf);
+        let xr = hs.map(|h| lr[h.edge().idx()].clone());
+        let rf = face_terms(&xr, true, true);
+        if rf.cot.is_some() != tf.cot.is_some() {
+            bad += 1;
+            continue;
+        }
+        for k in 0..3 {
+            bad += usize::from(err(tf.angles[k], &rf.angles[k]) > SAFETY * b.angle);
+            let v = m.tail(hs[(k + 2) % 3]).idx();
+            theta_bound[v] += b.angle;
+            corners[v] += 1.0;
+        }
+        let sum = xr[0].clone() + &xr[1] + &xr[2];
+        let half_pi = Mpfr::pi(p) * &Mpfr::from_f64(0.5, p);
+        let fr = rf.f.clone().unwrap() * &Mpfr::from_f64(2.0, p) - &(half_pi * &sum);
+        bad += usize::from(err(tf.energy, &fr) > SAFETY * b.energy);
+        e_bound += b.energy;
+        e_abs += tf.energy.abs();
+        if let (Some(c), Some(cr)) = (tf.cot, &rf.cot) {
+            for k in 0..3 {
+                bad += usize::from(err(c[k], &cr[k]) > SAFETY * b.cot[k]);
+                let (i, j) = (m.tail(hs[k]).idx(), m.tip(hs[k]).idx());
+                for key in [(i, i), (j, j), (i, j), (j, i)] {
+                    let e = h_bound.entry(key).or_insert((0.0, 0.0, 0.0));
+                    e.0 += 0.5 * b.cot[k];
+                    e.1 += 0.5 * c[k].abs();
+                    e.2 += 1.0;
+                }
+            }
+        }
+    }
+    let pattern = HessianPattern::new(m);
+    let fast = energy_gradient_hessian_f64(&pattern, m, lt, u, t);
+    let reference = energy_gradient_hessian_at(m, &lr, &ur, &tr);
+    // E: faces, then Σ Θ_i u_i, recursive summation (B41).
+    let tu: f64 = t.iter().zip(u).map(|(a, b)| (a * b).abs()).sum();
+    let n_terms = (m.n_faces() + m.n_vertices()) as f64;
+    let eb = e_bound + n_terms * U * (e_abs + tu) + U * tu;
+    let e = fast.energy.unwrap();
+    bad += usize::from(err(e, reference.energy.as_ref().unwrap()) > SAFETY * eb);
+    for (i, (g, gr)) in fast.gradient.iter().zip(&reference.gradient).enumerate() {
+        // Corner sums (B41: (corners − 1)·u·θ), then Θ − θ rounded once.
+        let gb = theta_bound[i] + corners[i] * U * (t[i] - g).abs() + U * g.abs();
+        bad += usize::from(err(*g, gr) > SAFETY * gb);
+    }
+    for i in 0..m.n_vertices() {
+        for (j, v) in fast.hessian.row(i) {
+            let r = reference
+                .hessian
+                .get(i, j)
+                .cloned()
+                .unwrap_or(Mpfr::from_f64(0.0, p));
+            let (b, abs, cnt) = h_bound.get(&(i, j)).copied().unwrap_or_default();
+            bad += usize::from(err(*v, &r) > SAFETY * (b + cnt * U * abs));
+        }
+    }
+    bad
+}
+
+#[test]
+fn b88_fast_energy_gradient_hessian_within_bound_of_mpfr_generic() {
+    for seed in 0..cases(9, 60) as u64 {
+        let (m, lt, u, t) = case(seed);
+        assert_eq!(violations(&m, &lt, &lt, &u, &t), 0, "seed {seed}");
+        // Negative control: against the reference at λ̃ with one edge lengthened by
+        // 10⁻⁹ (its faces' angles move by about that), the same comparison fails.
+        let mut moved = lt.clone();
+        moved[0] += 1e-9;
+        assert!(
+            violations(&m, &lt, &moved, &u, &t) > 0,
+            "seed {seed}: control"
+        );
+    }
+}
+
+#[test]
+fn b88_fast_path_degenerate_and_loops() {
+    use penner::mesh::builders::{one_vertex_torus, two_triangle_sphere};
+    // A degenerate face (1, 1, 3): α = (0, 0, π), f = ½πx₂, no Hessian term.
+    let x = [0.0, 0.0, 2.0 * 3.0_f64.ln()];
+    let t = face_f64(&x);
+    assert_eq!(t.angles, [0.0, 0.0, PI]);
+    assert!(t.cot.is_none());
+    let want = PI * x[2] - FRAC_PI_2 * (x[0] + x[1] + x[2]);
+    assert!(
+        (t.energy - want).abs() < 8.0 * U * want.abs(),
+        "{} {want}",
+        t.energy
+    );
+    // Control: the proper triangle (1, 1, 1.9) has cotangents.
+    assert!(face_f64(&[0.0, 0.0, 2.0 * 1.9_f64.ln()]).cot.is_some());
+    // Non-finite input: NaN angles, never a panic.
+    assert!(face_f64(&[f64::NAN, 0.0, 0.0])
+        .angles
+        .iter()
+        .all(|a| a.is_nan()));
+    // The one-vertex torus: all sides are loops, H = 0, ∇E = 2π − 2π.
+    let m = one_vertex_torus();
+    let p = HessianPattern::new(&m);
+    let parts = energy_gradient_hessian_f64(&p, &m, &[0.1, -0.05, 0.2], &[0.0], &[PI * 2.0]);
+    assert_eq!(parts.hessian.get(0, 0).copied(), Some(0.0));
+    assert!(parts.gradient[0].abs() < 1e-14);
+    // Two-triangle sphere with equal sides: cone angles 2π/3.
+    let m = two_triangle_sphere();
+    let p = HessianPattern::new(&m);
+    let parts = energy_gradient_hessian_f64(&p, &m, &[0.0; 3], &[0.0; 3], &[0.0; 3]);
+    for g in &parts.gradient {
+        assert!((g + 2.0 * PI / 3.0).abs() < 1e-15, "{g}");
+    }
+}
