@@ -6,7 +6,8 @@
 //! - [`flip_scaled`]: the same for conformally scaled metrics `e^{(u_i+u_j)/2}·ℓ_ij`, with
 //!   the exponent kept apart (no overflow for `|u|` up to 2²⁰).
 //! - [`replay`]: replay a recorded flip sequence on the exact input metric with certified
-//!   arithmetic (B80), to certify a rounded run's triangulation for the input.
+//!   arithmetic (B80), to certify a rounded run's triangulation for the input;
+//!   [`replay_dag`] holds its lazily built flip lengths (B85).
 //! - [`naive`]: an uncertified `f64` baseline, for benchmarks and for showing where raw
 //!   floating-point decisions go wrong.
 
@@ -15,4 +16,5 @@ pub mod flip_to_delaunay;
 pub mod flips;
 pub mod naive;
 pub mod replay;
+pub mod replay_dag;
 pub mod replay_input;

@@ -18,16 +18,15 @@ use super::flip_to_delaunay::rational_bits;
 use super::flips::{
     euclidean_length_enclosure, ptolemy_length_enclosure, ptolemy_length_exact, FlipKind,
 };
+use super::replay_dag::FlipDag;
 use super::replay_input::InputMetric;
 use crate::io::Metric;
 use crate::mesh::{Edge, Mesh};
 use crate::predicates::delaunay::{delaunay_sign_squared, enclose_p, exact_p, Quad, QuadEdges};
-use crate::predicates::delaunay_widened::{in_range, sign_p, Bounds};
+use crate::predicates::delaunay_widened::{sign_p, Bounds};
 use crate::predicates::directed::valid;
 use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
 use rug::Rational;
-use std::borrow::Cow;
-use std::collections::HashMap;
 
 /// Bit size (numerator + denominator) past which exact Ptolemy lengths are replaced by
 /// enclosures in a replay.
@@ -137,7 +136,7 @@ pub fn sign_after_f64(
 }
 
 /// The MPFR and exact rungs of [`sign`] on the five lengths `ℓ_ij, ℓ_jk, ℓ_ki, ℓ_il, ℓ_lj`.
-fn sign_of_lens(arr: [&Len; 5], bits: u32) -> Option<Sign> {
+pub(super) fn sign_of_lens(arr: [&Len; 5], bits: u32) -> Option<Sign> {
     // The enclosure first: it decides every sign away from zero, and costs less than exact
     // arithmetic on long rationals; only a straddling enclosure goes to the exact rules.
     let [a, b, c, d, e] = arr.map(|x| x.enclose(bits));
@@ -247,9 +246,9 @@ pub enum BrokenStep {
     NoLength,
 }
 
-/// The lengths of the edges flipped in a lazy replay ([`replay_lazy`]), by edge index;
-/// every other edge keeps its input length.
-pub type FlippedLens = HashMap<u32, Len>;
+/// The lengths of a lazy replay ([`replay_lazy`]): the flip DAG, each flip's length built
+/// only when a sign needs it (proof: B85); every other edge keeps its input length.
+pub type FlippedLens = FlipDag;
 
 /// The outcome of [`replay_on_input`] (lengths `L = Vec<Len>`, one per edge) or of
 /// [`replay_lazy`] (`L =` [`FlippedLens`]).
@@ -287,49 +286,40 @@ impl<L> Replayed<L> {
 }
 
 impl Replayed<FlippedLens> {
-    /// Every edge's length: the flipped ones', the input's for the others.
+    /// Every edge's length in the eager replay's form: the flipped ones' (built now), the
+    /// input's for the others.
     pub fn materialized<S: InputMetric + ?Sized>(self, input: &S) -> Replayed {
         let Replayed {
-            mesh,
-            mut lens,
-            broken,
-            ties,
-            negative,
-            undecided,
-        } = self;
-        let lens = (0..input.n_edges() as u32)
-            .map(|e| lens.remove(&e).unwrap_or_else(|| input.exact(Edge(e))))
-            .collect();
-        Replayed {
             mesh,
             lens,
             broken,
             ties,
             negative,
             undecided,
+        } = self;
+        Replayed {
+            mesh,
+            lens: lens.materialize(input),
+            broken,
+            ties,
+            negative,
+            undecided,
         }
     }
 }
 
-/// The lengths during a lazy replay: the first-rung enclosures of all edges (B83), the
-/// exact or enclosed lengths of the flipped edges, and the input for the others.
+/// The lengths during a lazy replay: the first-rung enclosures of all edges (B83, B85) and
+/// the flip DAG over the input.
 struct Lazy<'a, S: ?Sized> {
     input: &'a S,
     first: Vec<Option<Bounds>>,
-    flipped: FlippedLens,
+    dag: FlipDag,
 }
 
 impl<S: InputMetric + ?Sized> Lazy<'_, S> {
-    /// The length of `e`, built from the input when `e` was not flipped.
-    fn len(&self, e: Edge) -> Cow<'_, Len> {
-        match self.flipped.get(&e.0) {
-            Some(l) => Cow::Borrowed(l),
-            None => Cow::Owned(self.input.exact(e)),
-        }
-    }
     /// The certified sign of `D` on the quadrilateral `q`: the first rung on `f64`
-    /// enclosures (B83), then the MPFR and exact rungs of [`sign`] on the lengths.
-    fn sign(&self, q: Quad<Edge>, bits: u32) -> Option<Sign> {
+    /// enclosures (B83, B85), then the eager replay's rungs on the built lengths.
+    fn sign(&mut self, q: Quad<Edge>) -> Option<Sign> {
         if let [Some(a), Some(b), Some(c), Some(d), Some(e)] =
             q.map(|e| self.first[e.idx()]).to_array()
         {
@@ -337,12 +327,7 @@ impl<S: InputMetric + ?Sized> Lazy<'_, S> {
                 return Some(s);
             }
         }
-        let l = q.map(|e| self.len(e)).to_array();
-        sign_of_lens([&*l[0], &*l[1], &*l[2], &*l[3], &*l[4]], bits)
-    }
-    /// The lengths of the quadrilateral `q`.
-    fn quad(&self, q: Quad<Edge>) -> Quad<Cow<'_, Len>> {
-        q.map(|e| self.len(e))
+        self.dag.sign_open(self.input, q, &self.first)
     }
 }
 
@@ -359,8 +344,10 @@ pub fn replay_on_input(
 }
 
 /// [`replay_on_input`] on any [`InputMetric`], building exact lengths only for the edges
-/// a sign or a flip needs them for (the first rung decides the rest, proof: B83); the
-/// verdicts are those of [`replay_on_input`] on the same metric.
+/// a sign or a flip needs them for (the first rung decides the rest, proof: B83), and the
+/// new length of a flip as an `f64` enclosure by its formula first, exact or MPFR only
+/// when a sign stays open on the enclosures ([`FlipDag`], proof: B85); the verdicts are
+/// those of [`replay_on_input`] on the same metric.
 pub fn replay_lazy<S: InputMetric + ?Sized>(
     mesh: &Mesh,
     input: &S,
@@ -380,54 +367,44 @@ pub fn replay_lazy<S: InputMetric + ?Sized>(
     };
     if input.n_edges() != mesh.n_edges() {
         let e = Edge(0);
-        return out(mesh, HashMap::new(), Some((0, e, BrokenStep::NoLength)));
+        let dag = FlipDag::new(mesh.n_edges(), ptolemy, bits);
+        return out(mesh, dag, Some((0, e, BrokenStep::NoLength)));
     }
     let mut lens = Lazy {
         input,
         first: mesh.edges().map(|e| input.first_rung(e)).collect(),
-        flipped: HashMap::new(),
+        dag: FlipDag::new(mesh.n_edges(), ptolemy, bits),
     };
     for (n, &e) in sequence.iter().enumerate() {
         let Some(q) = (e.idx() < mesh.n_edges())
             .then(|| QuadEdges::of(&mesh, e))
             .flatten()
         else {
-            return out(mesh, lens.flipped, Some((n, e, BrokenStep::NotFlippable)));
+            return out(mesh, lens.dag, Some((n, e, BrokenStep::NotFlippable)));
         };
-        let tie = match lens.sign(q.edges, bits) {
+        let tie = match lens.sign(q.edges) {
             Some(Sign::Zero) => true,
             Some(Sign::Negative) => false,
             Some(Sign::Positive) => {
-                return out(
-                    mesh,
-                    lens.flipped,
-                    Some((n, e, BrokenStep::StrictlyDelaunay)),
-                )
+                return out(mesh, lens.dag, Some((n, e, BrokenStep::StrictlyDelaunay)))
             }
-            None => return out(mesh, lens.flipped, Some((n, e, BrokenStep::Undecided))),
+            None => return out(mesh, lens.dag, Some((n, e, BrokenStep::Undecided))),
         };
-        let quad = lens.quad(q.edges);
-        let quad = quad.as_refs().map(|l| &**l);
-        let new = if tie {
-            tie_length(quad, ptolemy, bits)
-        } else {
-            new_length(quad, ptolemy, bits)
-        };
-        let Some(new) = new else {
-            return out(mesh, lens.flipped, Some((n, e, BrokenStep::NoLength)));
+        // The new length, lazy where the f64 flip formula encloses it (proof: B85).
+        let Some(first) = lens.dag.flip(input, e, q.edges, tie, &lens.first) else {
+            return out(mesh, lens.dag, Some((n, e, BrokenStep::NoLength)));
         };
         if mesh.flip(e).is_err() {
-            return out(mesh, lens.flipped, Some((n, e, BrokenStep::NotFlippable)));
+            return out(mesh, lens.dag, Some((n, e, BrokenStep::NotFlippable)));
         }
-        lens.first[e.idx()] = f64_enclosure(&new).and_then(|x| in_range([*x.lo(), *x.hi()]));
-        lens.flipped.insert(e.0, new);
+        lens.first[e.idx()] = first;
     }
     let (mut ties, mut negative, mut undecided) = (Vec::new(), Vec::new(), Vec::new());
     for e in mesh.edges() {
         let Some(q) = QuadEdges::of(&mesh, e) else {
             continue;
         };
-        match lens.sign(q.edges, bits) {
+        match lens.sign(q.edges) {
             Some(Sign::Positive) => {}
             Some(Sign::Zero) => ties.push(e),
             Some(Sign::Negative) => negative.push(e),
@@ -436,7 +413,7 @@ pub fn replay_lazy<S: InputMetric + ?Sized>(
     }
     Replayed {
         mesh,
-        lens: lens.flipped,
+        lens: lens.dag,
         broken: None,
         ties,
         negative,

@@ -47,6 +47,7 @@ mod predicates_planar;
 mod progress;
 mod registry_extra;
 mod registry_uniformization;
+mod replay_dag;
 mod replay_lazy;
 mod scalar_dd;
 mod scalar_dd_div;
