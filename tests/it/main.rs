@@ -7,6 +7,7 @@ mod circles_harmonic;
 mod circles_maximal;
 mod circles_pack;
 mod claims;
+mod claims_circles;
 mod claims_energy;
 mod claims_lobachevsky;
 mod cli;
