@@ -237,6 +237,7 @@ fn t11_packing_is_unique_up_to_mobius_and_depends_only_on_combinatorics() {
         direction: Some(base.direction),
         start: Some(start),
         tolerance: None,
+        epsilon: None,
     };
     let other = maximal_disk::<Mpfr>(&mesh, prec(128), &opts).unwrap();
     let gap = max_circle_gap(&base.circles, &other.circles);

@@ -6,6 +6,7 @@ mod circles_flow;
 mod circles_harmonic;
 mod circles_maximal;
 mod circles_pack;
+mod circles_stopping;
 mod claims;
 mod claims_circles;
 mod claims_energy;
