@@ -274,6 +274,59 @@ pub fn cone_angles<T: Real>(mesh: &Mesh, lengths: &[T]) -> Vec<T> {
         .collect()
 }
 
+/// [`cone_angles`] and, from the same per-face quantities, the cotangent of the corner
+/// opposite every half-edge of a face (`cot[h]`, indexed by `HalfEdge::idx`; boundary
+/// half-edges keep the value they had): the direction of corner `i` is `c_i + i·r`
+/// ([`cone_angles`]' kernel, B16), so `cot α_i = c_i / r` at the cost of one division per
+/// corner. The cone angles are those of [`cone_angles`], bit for bit. Point types only:
+/// for enclosures ([`Real::is_point`] false) the cotangents come from
+/// [`halfedge_cotans`](super::cotan::halfedge_cotans) and the angles from
+/// [`cone_angles_per_corner`]. A degenerate face (`r = 0`) gives infinite or NaN
+/// cotangents, as the formula does.
+pub fn cone_angles_and_cotans<T: Real>(mesh: &Mesh, lengths: &[T], cot: &mut [T]) -> Vec<T> {
+    assert_eq!(
+        lengths.len(),
+        mesh.n_edges(),
+        "cone_angles_and_cotans: one length per edge is required"
+    );
+    assert_eq!(
+        cot.len(),
+        mesh.n_halfedges(),
+        "cone_angles_and_cotans: one cotangent slot per half-edge is required"
+    );
+    if !T::is_point() {
+        for (slot, c) in cot
+            .iter_mut()
+            .zip(super::cotan::halfedge_cotans(mesh, lengths))
+        {
+            *slot = c;
+        }
+        return cone_angles_per_corner(mesh, lengths);
+    }
+    let Some(first) = lengths.first() else {
+        return Vec::new();
+    };
+    let start = Winding {
+        re: first.one_like(),
+        im: first.zero_like(),
+        quarter: 0,
+    };
+    let mut acc = vec![start; mesh.n_vertices()];
+    let mut sc = FaceScratch::new(first);
+    for f in mesh.faces() {
+        let hs = mesh.face_halfedges(f);
+        sc.load(hs.map(|h| &lengths[h.edge().idx()]));
+        for i in 0..3 {
+            cot[hs[i].idx()] = sc.c[i].clone() / &sc.r;
+            sc.step(i, &mut acc[mesh.tail(hs[(i + 2) % 3]).idx()]);
+        }
+    }
+    let half_pi = T::pi(first.ctx()) * &first.lit(0.5);
+    acc.iter()
+        .map(|w| unwrap_quarter(&w.re, &w.im, w.quarter, &half_pi))
+        .collect()
+}
+
 /// The straightforward cone angles: one [`corner_angle`](super::triangle::corner_angle)
 /// (an arctangent) per corner, summed in `T`. Slower than [`cone_angles`]; kept as an
 /// independent reference for tests and benchmarks.

@@ -11,10 +11,17 @@
 use super::components::Components;
 use crate::geometry::laplacian::{cotan_laplacian, SparseMatrix};
 use crate::mesh::Mesh;
+use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
+use faer::linalg::cholesky::llt::factor::LltRegularization;
 use faer::linalg::solvers::Solve;
+use faer::sparse::linalg::cholesky::{
+    factorize_symbolic_cholesky, CholeskySymbolicParams, LltRef, SymbolicCholesky,
+    SymmetricOrdering,
+};
 use faer::sparse::linalg::solvers::{Llt, SymbolicLlt};
 use faer::sparse::{SparseColMat, Triplet};
-use faer::{Mat, Side};
+use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
+use faer::{Conj, Mat, Par, Side, Spec};
 
 /// The grounded Hessian `H = −L` on the free vertices, lower triangle, column-compressed.
 pub struct GroundedHessian {
@@ -106,4 +113,234 @@ pub fn newton_direction(factor: &Factor, grad: &[f64], comps: &Components) -> Ve
         d[v] = x[k];
     }
     d
+}
+
+/// The lower-triangle CSC pattern of the grounded Hessian of one triangulation, with the
+/// position of every face side's entries, built once per triangulation and reused for
+/// every Newton step on it (values are filled in place, nothing sorted per step), and its
+/// faer symbolic Cholesky factorization.
+///
+/// A side `h = i→j` of a face (`i ≠ j`) with opposite angle `α` adds `½ cot α` to `H_ii`
+/// and `H_jj` and subtracts it from `H_ij` (MATH.md §7, `H = −L`); entries at grounded
+/// vertices are dropped.
+pub struct GroundedPattern {
+    n: usize,
+    col_ptr: Vec<usize>,
+    row_idx: Vec<usize>,
+    /// Per half-edge: the positions of `H_ii`, `H_jj`, `H_ij` (lower triangle) in the
+    /// value array, `usize::MAX` where the entry is at a grounded vertex or the half-edge
+    /// adds nothing (boundary, loop).
+    slots: Vec<[usize; 3]>,
+    symbolic: Option<SymbolicCholesky<usize>>,
+    /// The numeric factor's values (reused across steps).
+    l_values: Vec<f64>,
+    /// Work space of the numeric factorization and the solves (reused).
+    scratch: MemBuffer,
+}
+
+const NO_SLOT: usize = usize::MAX;
+
+impl GroundedPattern {
+    /// The pattern of `mesh` grounded by `free_idx` (the position of each free vertex).
+    pub fn new(mesh: &Mesh, free_idx: &[Option<usize>]) -> GroundedPattern {
+        let n = free_idx.iter().filter(|x| x.is_some()).count();
+        let side = |h: crate::mesh::HalfEdge| {
+            let (i, j) = (mesh.tail(h).idx(), mesh.tip(h).idx());
+            if i == j || mesh.is_boundary_halfedge(h) {
+                None
+            } else {
+                Some((free_idx[i], free_idx[j]))
+            }
+        };
+        // Column c holds the diagonal and the rows r > c joined to it by a side.
+        let mut start = vec![1usize; n + 1];
+        start[0] = 0;
+        for h in mesh.halfedges() {
+            if let Some((Some(a), Some(b))) = side(h) {
+                start[a.min(b) + 1] += 1;
+            }
+        }
+        for c in 0..n {
+            start[c + 1] += start[c];
+        }
+        let mut rows = vec![0usize; start[n]];
+        let mut next = start.clone();
+        for (c, slot) in next.iter_mut().take(n).enumerate() {
+            rows[*slot] = c;
+            *slot += 1;
+        }
+        for h in mesh.halfedges() {
+            if let Some((Some(a), Some(b))) = side(h) {
+                let c = a.min(b);
+                rows[next[c]] = a.max(b);
+                next[c] += 1;
+            }
+        }
+        let mut col_ptr = Vec::with_capacity(n + 1);
+        col_ptr.push(0);
+        let mut len = 0;
+        for c in 0..n {
+            let (a, b) = (start[c], start[c + 1]);
+            rows[a..b].sort_unstable();
+            let mut last = usize::MAX;
+            for k in a..b {
+                let r = rows[k];
+                if r != last {
+                    rows[len] = r;
+                    len += 1;
+                    last = r;
+                }
+            }
+            col_ptr.push(len);
+        }
+        rows.truncate(len);
+        let find = |r: usize, c: usize| -> usize {
+            let (a, b) = (col_ptr[c], col_ptr[c + 1]);
+            // Present by construction: every looked-up pair was inserted above.
+            a + rows[a..b].partition_point(|&x| x < r)
+        };
+        let slots = mesh
+            .halfedges()
+            .map(|h| match side(h) {
+                None => [NO_SLOT; 3],
+                Some((a, b)) => [
+                    a.map_or(NO_SLOT, |a| find(a, a)),
+                    b.map_or(NO_SLOT, |b| find(b, b)),
+                    match (a, b) {
+                        (Some(a), Some(b)) => find(a.max(b), a.min(b)),
+                        _ => NO_SLOT,
+                    },
+                ],
+            })
+            .collect();
+        GroundedPattern {
+            n,
+            col_ptr,
+            row_idx: rows,
+            slots,
+            symbolic: None,
+            l_values: Vec::new(),
+            scratch: MemBuffer::new(StackReq::empty()),
+        }
+    }
+
+    /// The number of free vertices (the dimension).
+    pub fn dim(&self) -> usize {
+        self.n
+    }
+
+    /// The grounded Hessian's values (pattern order) from the cotangent of the corner
+    /// opposite each half-edge (`cot[h]`, as
+    /// [`cone_angles_and_cotans`](crate::geometry::cone_angles::cone_angles_and_cotans)
+    /// gives it), into `val` (resized).
+    pub fn fill(&self, cot: &[f64], val: &mut Vec<f64>) {
+        val.clear();
+        val.resize(self.row_idx.len(), 0.0);
+        for (s, &c) in self.slots.iter().zip(cot) {
+            if s[0] == NO_SLOT && s[1] == NO_SLOT {
+                continue;
+            }
+            let w = 0.5 * c;
+            if s[0] != NO_SLOT {
+                val[s[0]] += w;
+            }
+            if s[1] != NO_SLOT {
+                val[s[1]] += w;
+            }
+            if s[2] != NO_SLOT {
+                val[s[2]] -= w;
+            }
+        }
+    }
+
+    /// Factor the matrix with values `val` (pattern order) sequentially (`Par::Seq`: on a
+    /// shared machine a spinning thread pool costs more than it saves), in place of the
+    /// previous factor; the symbolic factorization (approximate minimum degree ordering,
+    /// faer's supernodal/simplicial choice) is computed on the first call and kept.
+    /// `false` when the matrix is not (numerically) positive definite. Counts into `cache`.
+    pub fn factor(&mut self, val: &[f64], cache: &mut CholeskyCache) -> bool {
+        let sym = SymbolicSparseColMatRef::new_checked(
+            self.n,
+            self.n,
+            &self.col_ptr,
+            None,
+            &self.row_idx,
+        );
+        if self.symbolic.is_none() {
+            let Ok(s) = factorize_symbolic_cholesky(
+                sym,
+                Side::Lower,
+                SymmetricOrdering::Amd,
+                CholeskySymbolicParams::default(),
+            ) else {
+                return false;
+            };
+            let req = StackReq::any_of(&[
+                s.factorize_numeric_llt_scratch::<f64>(Par::Seq, Spec::default()),
+                s.solve_in_place_scratch::<f64>(1, Par::Seq),
+            ]);
+            self.scratch = MemBuffer::new(req);
+            self.l_values = vec![0.0; s.len_val()];
+            self.symbolic = Some(s);
+            cache.symbolic_count += 1;
+        }
+        let Some(s) = &self.symbolic else {
+            return false;
+        };
+        cache.numeric_count += 1;
+        let mat = SparseColMatRef::new(sym, val);
+        s.factorize_numeric_llt(
+            &mut self.l_values,
+            mat,
+            Side::Lower,
+            LltRegularization::default(),
+            Par::Seq,
+            MemStack::new(&mut self.scratch),
+            Spec::default(),
+        )
+        .is_ok()
+    }
+
+    /// The Newton direction after a successful [`Self::factor`]: `d = −H⁻¹g` on the free
+    /// vertices `free` (in pattern order), `0` on the grounded ones.
+    pub fn newton_direction(&mut self, grad: &[f64], free: &[usize]) -> Vec<f64> {
+        let mut d = vec![0.0; grad.len()];
+        let Some(s) = &self.symbolic else {
+            return d;
+        };
+        let mut rhs = Mat::<f64>::from_fn(free.len(), 1, |k, _| -grad[free[k]]);
+        LltRef::new(s, &self.l_values).solve_in_place_with_conj(
+            Conj::No,
+            rhs.as_mut(),
+            Par::Seq,
+            MemStack::new(&mut self.scratch),
+        );
+        for (k, &v) in free.iter().enumerate() {
+            d[v] = rhs[(k, 0)];
+        }
+        d
+    }
+
+    /// The stored entries `(row, column, value)` (`row ≥ column`, free-vertex positions)
+    /// of the matrix with values `val` (pattern order).
+    pub fn entries<'a>(&'a self, val: &'a [f64]) -> impl Iterator<Item = (usize, usize, f64)> + 'a {
+        (0..self.n).flat_map(move |c| {
+            (self.col_ptr[c]..self.col_ptr[c + 1]).map(move |k| (self.row_idx[k], c, val[k]))
+        })
+    }
+
+    /// Whether `other` has the same sparsity pattern (then its symbolic factorization can
+    /// be taken over).
+    pub fn same_pattern(&self, other: &GroundedPattern) -> bool {
+        self.col_ptr == other.col_ptr && self.row_idx == other.row_idx
+    }
+
+    /// Take over the symbolic factorization of `other` (same pattern, [`Self::same_pattern`]).
+    pub fn adopt_symbolic(&mut self, other: &mut GroundedPattern) {
+        if self.same_pattern(other) {
+            self.symbolic = other.symbolic.take();
+            self.l_values = std::mem::take(&mut other.l_values);
+            self.scratch = std::mem::replace(&mut other.scratch, MemBuffer::new(StackReq::empty()));
+        }
+    }
 }

@@ -18,6 +18,7 @@ pub mod input_metric;
 pub mod krawczyk;
 pub mod newton;
 pub mod refine;
+pub mod scaling;
 pub mod targets;
 pub mod verified_cholesky;
 

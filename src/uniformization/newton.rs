@@ -17,12 +17,13 @@
 
 use super::components::Components;
 use super::error::UniformizeError;
-use super::hessian::{grounded_hessian, newton_direction, CholeskyCache};
+use super::hessian::{CholeskyCache, GroundedPattern};
+use super::scaling::scaled_fast;
 use super::targets::Targets;
-use crate::algorithms::flip_scaled::flip_to_delaunay_scaled;
+use crate::algorithms::flip_scaled::flip_to_delaunay_exp;
 use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
 use crate::algorithms::flips::flip_ptolemy;
-use crate::geometry::cone_angles::cone_angles;
+use crate::geometry::cone_angles::cone_angles_and_cotans;
 use crate::mesh::{Edge, Mesh};
 use crate::scalar::exp_length::{ExpLength, MAX_LOG_SCALE};
 
@@ -114,13 +115,14 @@ impl Uniformization {
     }
 }
 
-/// The scaled metric at one `u`, flipped to Delaunay, with its angle sums.
+/// The scaled metric at one `u`, flipped to Delaunay, with its angle sums and the
+/// cotangents of its corners (one kernel pass, [`cone_angles_and_cotans`]).
 pub(crate) struct Evaluation {
     pub mesh: Mesh,
     pub base: Vec<f64>,
-    /// Scaled lengths, shifted by a common power of two into binary64's range.
-    pub lengths: Vec<f64>,
     pub grad: Vec<f64>,
+    /// `cot` of the corner opposite each half-edge (the Hessian's weights).
+    pub cot: Vec<f64>,
     pub flips: Vec<Edge>,
 }
 
@@ -140,19 +142,30 @@ pub(crate) fn evaluate(
         record: true,
         ..FlipOptions::default()
     };
-    let (rep, scaled) = flip_to_delaunay_scaled(&mut m, base, u, FlipKind::Ptolemy, &opts)
-        .map_err(|e| e.to_string())?;
+    let start = mesh
+        .edges()
+        .map(|e| {
+            let h = e.halfedge();
+            let (i, j) = (mesh.tail(h).idx(), mesh.tip(h).idx());
+            scaled_fast(base[e.idx()], u[i], u[j])
+                .ok_or_else(|| format!("scaled length of e{} undefined", e.0))
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let (rep, scaled) =
+        flip_to_delaunay_exp(&mut m, start, FlipKind::Ptolemy, &opts).map_err(|e| e.to_string())?;
     if rep.hit_cap {
         return Err("Ptolemy flipping hit its flip cap".into());
     }
     // Base lengths on the new triangulation: the same Ptolemy flips on ℓ (T28).
-    let mut bm = mesh.clone();
     let mut b = base.to_vec();
-    for &e in &rep.sequence {
-        flip_ptolemy(&mut bm, &mut b, e).map_err(|e| e.to_string())?;
-    }
-    if let Some(e) = b.iter().position(|x| !(x.is_finite() && *x > 0.0)) {
-        return Err(format!("carried base length of e{e} is {}", b[e]));
+    if !rep.sequence.is_empty() {
+        let mut bm = mesh.clone();
+        for &e in &rep.sequence {
+            flip_ptolemy(&mut bm, &mut b, e).map_err(|e| e.to_string())?;
+        }
+        if let Some(e) = b.iter().position(|x| !(x.is_finite() && *x > 0.0)) {
+            return Err(format!("carried base length of e{e} is {}", b[e]));
+        }
     }
     // Angles are invariant under a global scale: shift by the largest exponent.
     let top = scaled.iter().map(ExpLength::exponent).max().unwrap_or(0);
@@ -162,7 +175,8 @@ pub(crate) fn evaluate(
             "scaled length of e{e} spans more than binary64's range relative to the longest"
         ));
     }
-    let theta = cone_angles(&m, &lengths);
+    let mut cot = vec![0.0; m.n_halfedges()];
+    let theta = cone_angles_and_cotans(&m, &lengths, &mut cot);
     let mut grad = Vec::with_capacity(theta.len());
     for (v, (t, th)) in theta_target.iter().zip(&theta).enumerate() {
         if !th.is_finite() {
@@ -175,8 +189,8 @@ pub(crate) fn evaluate(
     Ok(Evaluation {
         mesh: m,
         base: b,
-        lengths,
         grad,
+        cot,
         flips: rep.sequence,
     })
 }
@@ -276,7 +290,7 @@ pub fn uniformize_with_progress(
         });
     }
     let comps = Components::of(&t0);
-    let (_, free_idx) = comps.free_index();
+    let (free, free_idx) = comps.free_index();
     let theta_target = targets.radians_f64();
     let mut cache = CholeskyCache::default();
     let mut steps = Vec::new();
@@ -307,8 +321,8 @@ pub fn uniformize_with_progress(
             let ev = Evaluation {
                 mesh: t0.clone(),
                 base: l0.clone(),
-                lengths: l0.clone(),
                 grad: vec![f64::NAN; t0.n_vertices()],
+                cot: Vec::new(),
                 flips: Vec::new(),
             };
             return Ok(finish(
@@ -322,6 +336,10 @@ pub fn uniformize_with_progress(
         }
     };
     sequence.extend_from_slice(&ev.flips);
+    // The Hessian's pattern on the current triangulation and its value buffer, rebuilt
+    // only after flips (its symbolic factorization kept when the pattern is unchanged).
+    let mut pattern = GroundedPattern::new(&ev.mesh, &free_idx);
+    let mut values = Vec::new();
     for iteration in 1..=opts.max_iterations + 1 {
         if max_abs(&ev.grad) <= opts.tolerance {
             return Ok(finish(ev, u, steps, sequence, Stop::Converged, &cache));
@@ -329,8 +347,8 @@ pub fn uniformize_with_progress(
         if iteration > opts.max_iterations {
             break;
         }
-        let h = grounded_hessian(&ev.mesh, &ev.lengths, &free_idx);
-        let Some(factor) = cache.factor(&h) else {
+        pattern.fill(&ev.cot, &mut values);
+        if !pattern.factor(&values, &mut cache) {
             let reason = "the grounded Hessian is not numerically positive definite".to_string();
             return Ok(finish(
                 ev,
@@ -340,8 +358,8 @@ pub fn uniformize_with_progress(
                 Stop::DegenerateStep(reason),
                 &cache,
             ));
-        };
-        let d = newton_direction(&factor, &ev.grad, &comps);
+        }
+        let d = pattern.newton_direction(&ev.grad, &free);
         let n0 = norm2(&ev.grad);
         let mut t = 1.0;
         let mut accepted = None;
@@ -378,6 +396,11 @@ pub fn uniformize_with_progress(
         };
         u = trial;
         sequence.extend_from_slice(&new.flips);
+        if !new.flips.is_empty() {
+            let mut p = GroundedPattern::new(&new.mesh, &free_idx);
+            p.adopt_symbolic(&mut pattern);
+            pattern = p;
+        }
         let report = StepReport {
             iteration,
             residual_max: max_abs(&new.grad),

@@ -71,5 +71,6 @@ mod tie_claims;
 mod tolerance_range;
 mod tolerance_tightness;
 mod uniformization;
+mod uniformization_speed;
 mod variational;
 mod variational_fused;
