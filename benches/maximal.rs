@@ -1,6 +1,6 @@
 //! Maximal packings (T11) of random disk triangulations (`random_planar`, Delaunay of random
-//! points): the `f64` Newton solve (faer sparse Cholesky) and the whole computation refined to
-//! `max |2π − θ| ≤ 10⁻³⁰` at 128 bits (its own `f64` solve, mixed-precision refinement, MPFR
+//! points): the `f64` Newton solve (faer sparse Cholesky) and the whole computation laid out for
+//! tangency within `10⁻³⁰` at 128 bits (B99 stopping rule) (its own `f64` solve, mixed-precision refinement, MPFR
 //! layout), on 10⁴ vertices; with `PENNER_BENCH_1E5=1` also on 10⁵.
 //!
 //! `cargo bench --bench maximal`; single runs with peak memory:
@@ -23,7 +23,7 @@ fn bench(c: &mut Criterion) {
     }
     let prec = Precision::new(128).expect("128 bits");
     let refined = Options {
-        tolerance: Some(1e-30),
+        epsilon: Some(1e-30),
         ..Options::default()
     };
     for n in sizes {

@@ -1,8 +1,8 @@
 //! Maximal packings of large random disk triangulations (T11): time of the `f64` solve and of
-//! the refinement to `max |2π − θ| ≤ 10⁻³⁰` at 160 bits, and the certificate of tangency within
-//! 10⁻³⁰ (B95). The layout accumulates the angle residual along its breadth-first tree: at 10⁴
-//! vertices the largest defect is about 10⁻³⁴, at 10⁵ about 10⁻²⁴, which the certificate then
-//! proves above 10⁻³⁰ (a tighter `tolerance` is needed there).
+//! the computation (`maximal_disk_within`: at `stopping::bits_for(ε, n)` bits, once more at
+//! more bits when the layout is precision-limited) whose layout aims at tangency within `ε = 10⁻³⁰` (the refinement
+//! tightened until the measured defect is below `ε/2⁴`, B99), and the certificate of tangency
+//! within 10⁻³⁰ (B95) at 256 bits.
 //!
 //! ```sh
 //! cargo run --release --example maximal_packing -- 10000 100000
@@ -10,9 +10,8 @@
 //! ```
 
 use penner::circles::maximal::tangency::{check_packing, exact_circles, PackingVerdict};
-use penner::circles::maximal::{maximal_disk, Options};
+use penner::circles::maximal::{maximal_disk, maximal_disk_within, Options};
 use penner::mesh::builders::random_planar;
-use penner::scalar::{Mpfr, Precision};
 use rug::Rational;
 use std::time::Instant;
 
@@ -42,12 +41,7 @@ fn main() {
         };
         let f64_time = t0.elapsed().as_secs_f64();
         let t1 = Instant::now();
-        let prec = Precision::new(160).expect("160 bits");
-        let opts = Options {
-            tolerance: Some(1e-30),
-            ..Options::default()
-        };
-        let q = match maximal_disk::<Mpfr>(&mesh, prec, &opts) {
+        let q = match maximal_disk_within(&mesh, 1e-30, 128, &Options::default()) {
             Ok(q) => q,
             Err(e) => {
                 eprintln!("n = {n}: {e}");
@@ -55,6 +49,7 @@ fn main() {
             }
         };
         let mp_time = t1.elapsed().as_secs_f64();
+        let (q, bits) = q;
         let t2 = Instant::now();
         let marks: Vec<bool> = q.interior.iter().map(|b| !b).collect();
         let verdict = exact_circles(&q.circles).map(|c| {
@@ -76,10 +71,11 @@ fn main() {
             None => "no exact circles".into(),
         };
         println!(
-            "n = {n}: f64 {f64_time:.2} s ({} Newton iterations, residual {:.1e}); refined to 1e-30 at 160 bits {mp_time:.2} s ({} steps, ratio {:.1}); certificate at 256 bits {cert_time:.2} s: {verdict}",
+            "n = {n}: f64 {f64_time:.2} s ({} Newton iterations, residual {:.1e}); ε = 1e-30 at {bits} bits {mp_time:.2} s ({} steps, {} layouts, ratio {:.1}); certificate at 256 bits {cert_time:.2} s: {verdict}",
             p.newton_iterations,
             p.f64_residual,
             q.refinement_steps,
+            q.layouts,
             mp_time / f64_time
         );
     }

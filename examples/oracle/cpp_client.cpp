@@ -116,6 +116,19 @@ int main(int argc, char** argv) {
          R"({"penner_claim": 1, "kind": "lobachevsky", "x": "0.5",)"
          R"( "y": "0.506979566180384252147287169443", "epsilon": "1e-25"})",
          "holds", 0},
+        {"circle packing: radii 1, 2, 3 on the 3-4-5 triangle",
+         R"({"penner_claim": 1, "kind": "circle_packing", "surface": {"vertices": 3, "faces": [[0,1,2]]},)"
+         R"( "centres": [["0","0"],["3","0"],["0","4"]], "radii": ["1","2","3"], "epsilon": "1e-30"})",
+         "holds", 0},
+        {"circle packing with radius 3 -> 3.001",
+         R"({"penner_claim": 1, "kind": "circle_packing", "surface": {"vertices": 3, "faces": [[0,1,2]]},)"
+         R"( "centres": [["0","0"],["3","0"],["0","4"]], "radii": ["1","2","3.001"], "epsilon": "1e-9"})",
+         "refuted", 1},
+        {"circle pattern: touching unit circles on the tetrahedron",
+         std::string(R"({"penner_claim": 1, "kind": "circle_pattern", "surface": )") + kSurface +
+             R"(, "radii": ["1","1","1","1"], "phi_over_pi": ["0","0","0","0","0","0"], "angles": [)" + pi + "," +
+             pi + "," + pi + "," + pi + R"(], "epsilon": "1e-35"})",
+         "holds", 0},
     };
     int failures = 0;
     for (const auto& c : cases) {

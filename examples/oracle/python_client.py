@@ -85,6 +85,29 @@ def main():
          {"penner_claim": 1, "id": "lob-half", "kind": "lobachevsky", "x": "0.5",
           "y": "0.506979566180384252147287169443", "epsilon": "1e-25"},
          "holds", 0),
+        ("circle packing: radii 1, 2, 3 on the 3-4-5 triangle, tangent exactly",
+         {"penner_claim": 1, "id": "packing-345", "kind": "circle_packing",
+          "surface": {"vertices": 3, "faces": [[0, 1, 2]]},
+          "centres": [["0", "0"], ["3", "0"], ["0", "4"]], "radii": ["1", "2", "3"],
+          "epsilon": "1e-30"},
+         "holds", 0),
+        ("circle packing mirrored (y -> -y): tangent, but the face turns clockwise",
+         {"penner_claim": 1, "id": "packing-mirror", "kind": "circle_packing",
+          "surface": {"vertices": 3, "faces": [[0, 1, 2]]},
+          "centres": [["0", "0"], ["3", "0"], ["0", "-4"]], "radii": ["1", "2", "3"],
+          "epsilon": "1e-30"},
+         "refuted", 1),
+        ("circle pattern: unit circles touching on the tetrahedron, cone angles pi",
+         {"penner_claim": 1, "id": "pattern-tet", "kind": "circle_pattern",
+          "surface": {"vertices": 4, "faces": TETRAHEDRON["faces"]},
+          "radii": ["1"] * 4, "phi_over_pi": ["0"] * 6, "angles": [PI] * 4, "epsilon": "1e-35"},
+         "holds", 0),
+        ("circle packing with both circles and caps: refused",
+         {"penner_claim": 1, "id": "packing-both", "kind": "circle_packing",
+          "surface": {"vertices": 3, "faces": [[0, 1, 2]]},
+          "centres": [["0", "0"], ["3", "0"], ["0", "4"]], "radii": ["1", "2", "3"],
+          "caps": [{"normal": ["0", "0", "1"], "height": "0"}] * 3, "epsilon": "1e-30"},
+         "bad_input", 3),
         ("unsupported protocol version",
          {"penner_claim": 99, "kind": "cone_angles", "surface": TETRAHEDRON},
          "bad_input", 3),
@@ -101,7 +124,8 @@ def main():
               f"bits={answer.get('precision_bits')} exit={rc} -> {'ok' if ok else 'UNEXPECTED'}")
         if answer["verdict"] == "refuted":
             print(f"  first counterexample: {answer['counterexample']['element']}")
-            ok = ok and answer["counterexample"]["element"] == "v2"
+            expected = "face f0 (v0, v1, v2)" if claim["kind"] == "circle_packing" else "v2"
+            ok = ok and answer["counterexample"]["element"] == expected
         failures += not ok
     if failures:
         print(f"{failures} unexpected answer(s)", file=sys.stderr)

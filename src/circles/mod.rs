@@ -14,6 +14,9 @@
 //! - [`thurston`]: Thurston's 3- and 4-cycle conditions (T10).
 //! - [`layout`], [`svg`], [`pack`]: planar layouts, pictures, and the packing of a surface
 //!   that `penner pack` draws.
+//! - [`realize`]: enclosures and exact signs deciding whether given circles, caps or radii
+//!   realize a triangulation as a packing or pattern (the `circle_packing` and
+//!   `circle_pattern` claims of `penner certify`).
 //! - [`harmonic`]: harmonic maps of disks to convex polygons (T36).
 //! - [`rivin`]: Rivin weights of ideal polyhedra and Farkas certificates of their
 //!   infeasibility (T34).
@@ -27,6 +30,7 @@ pub mod maximal;
 pub mod metric;
 pub mod pack;
 pub mod pattern;
+pub mod realize;
 pub mod rivin;
 pub mod solve;
 pub mod svg;

@@ -6,10 +6,13 @@ use super::error::{code, CliError};
 use super::files::{create_new, emit};
 use super::input::load_case;
 use penner::circles::maximal::layout::Circle;
-use penner::circles::maximal::sphere::{check_sphere_packing, exact_caps};
+use penner::circles::maximal::sphere::{check_sphere_packing, exact_caps, ExactCap};
+use penner::circles::maximal::stopping::bits_for;
 use penner::circles::maximal::svg::render_disk_svg;
 use penner::circles::maximal::tangency::{check_packing, exact_circles, PackingVerdict};
-use penner::circles::maximal::{maximal_disk, maximal_sphere, DiskPacking, Options as Opts};
+use penner::circles::maximal::{
+    maximal_disk, maximal_disk_within, maximal_sphere, DiskPacking, Options as Opts,
+};
 use penner::scalar::{parse_rational, Mpfr, Precision, Real};
 use rug::Rational;
 use serde_json::{json, Value};
@@ -59,6 +62,45 @@ fn exact_string(q: &Rational) -> Value {
     Value::String(q.to_string())
 }
 
+type Computed = (DiskPacking<Mpfr>, Option<Vec<ExactCap>>, u32);
+
+/// The packing (and caps) at the working precision of B99, and the bits used.
+fn compute(
+    mesh: &penner::mesh::Mesh,
+    o: &Options,
+    eps_f64: Option<f64>,
+    shown: &str,
+) -> Result<Computed, CliError> {
+    let bad = |e: &penner::circles::maximal::MaximalError| CliError::Input(format!("{shown}: {e}"));
+    let mut bits = match eps_f64 {
+        Some(e) if o.bits > 53 => o.bits.max(bits_for(e, mesh.n_vertices())),
+        _ => o.bits,
+    };
+    let prec = Precision::new(u64::from(bits))
+        .map_err(|e| CliError::Input(format!("--bits {}: {e}", o.bits)))?;
+    let opts = Opts {
+        epsilon: eps_f64,
+        ..Opts::default()
+    };
+    // The sphere's caps (exact) next to the disk packing.
+    let (disk, caps): (DiskPacking<Mpfr>, Option<Vec<_>>) = if o.sphere {
+        let s = maximal_sphere::<Mpfr>(mesh, o.puncture, prec, &opts).map_err(|e| bad(&e))?;
+        let caps = exact_caps(&s.caps)
+            .ok_or_else(|| CliError::Input(format!("{shown}: a cap is not finite")))?;
+        (s.disk, Some(caps))
+    } else if let (Some(e), true) = (eps_f64, o.bits > 53) {
+        let (d, used) = maximal_disk_within(mesh, e, bits, &opts).map_err(|e| bad(&e))?;
+        bits = used;
+        (d, None)
+    } else {
+        (
+            maximal_disk::<Mpfr>(mesh, prec, &opts).map_err(|e| bad(&e))?,
+            None,
+        )
+    };
+    Ok((disk, caps, bits))
+}
+
 /// Run the maximal packing: exit 0 when tangency is certified within ε, 1 when a violation
 /// is proved, 2 when undecided, 3 on bad input or when no packing is computed, 4 when an
 /// output cannot be written.
@@ -72,26 +114,14 @@ pub fn run(o: &Options) -> Result<u8, CliError> {
             o.epsilon
         )));
     }
-    let prec = Precision::new(u64::from(o.bits))
-        .map_err(|e| CliError::Input(format!("--bits {}: {e}", o.bits)))?;
     let case = load_case(o.path)?;
-    let bad = |e: penner::circles::maximal::MaximalError| CliError::Input(format!("{shown}: {e}"));
-    let opts = Opts::default();
-    // The sphere's caps (exact) next to the disk packing.
-    let (disk, caps): (DiskPacking<Mpfr>, Option<Vec<_>>) = if o.sphere {
-        let s = maximal_sphere::<Mpfr>(&case.mesh, o.puncture, prec, &opts).map_err(bad)?;
-        let caps = exact_caps(&s.caps)
-            .ok_or_else(|| CliError::Input(format!("{shown}: a cap is not finite")))?;
-        (s.disk, Some(caps))
-    } else {
-        (
-            maximal_disk::<Mpfr>(&case.mesh, prec, &opts).map_err(bad)?,
-            None,
-        )
-    };
+    // proof: B99 — above f64 the working precision grows with n and 1/ε, and the
+    // refinement aims at defects below ε/2⁴ (ε = 0 cannot be certified: no aim).
+    let eps_f64 = (eps > 0).then(|| eps.to_f64()).filter(|e| *e > 0.0);
+    let (disk, caps, bits) = compute(&case.mesh, o, eps_f64, &shown)?;
     let circles = exact_circles(&disk.circles)
         .ok_or_else(|| CliError::Input(format!("{shown}: a circle is not finite")))?;
-    let cert_bits = 2 * o.bits.max(64);
+    let cert_bits = 2 * bits.max(64);
     let marks: Vec<bool> = disk.interior.iter().map(|b| !b).collect();
     let verdict = match &caps {
         Some(c) => check_sphere_packing(&case.mesh, c, &eps, cert_bits),
@@ -105,7 +135,7 @@ pub fn run(o: &Options) -> Result<u8, CliError> {
         disk.newton_iterations,
         disk.f64_residual,
         disk.refinement_steps,
-        o.bits
+        bits
     );
     let (status, exit) = match &verdict {
         PackingVerdict::Holds { max_defect } => {

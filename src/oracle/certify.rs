@@ -289,6 +289,9 @@ pub fn certify(claim: &Claim) -> Result<Answer, Unsupported> {
             Ok(summarize(claim, &b, &|_| "x".to_string(), "value of Л(x)"))
         }
         Assertion::Uniformization(u) => Ok(uniformization(claim, u)),
+        Assertion::CirclePacking { .. } | Assertion::CirclePattern { .. } => {
+            super::certify_circles::answer(claim).ok_or(Unsupported(claim.assertion.kind()))
+        }
     }
 }
 

@@ -89,6 +89,29 @@ pub enum Assertion {
     /// norm) of the given `u`, with the surface's lengths carried by the given Ptolemy flips
     /// (notes §1.5.3 Thm 12; certificate and re-check: `uniformization::claim_form`, B71).
     Uniformization(crate::uniformization::claim_form::UniformizationClaim),
+    /// `circle_packing`: the circles (plane) or caps (sphere) realize the surface's
+    /// triangulation as a tangency packing within `epsilon`: every edge's tangency defect
+    /// is at most ε, every face's centres are positively oriented and every interior
+    /// vertex's neighbours wind once around it ([`crate::circles::realize`], proofs/B98).
+    CirclePacking {
+        /// The claimed circles or caps, one per vertex.
+        packing: super::claim_circles::Packing,
+        /// Absolute tolerance ε ≥ 0 on each tangency defect.
+        epsilon: Rational,
+    },
+    /// `circle_pattern`: the radii and the intersection angles `Φ_e = q_e π` give, through
+    /// Eq. 9 (notes §1.4), cone angles within `epsilon` of `angles`
+    /// ([`crate::circles::realize::pattern_cone_angles`], proofs/B98).
+    CirclePattern {
+        /// One radius per vertex, positive.
+        radii: Vec<Rational>,
+        /// `Φ_e / π ∈ [0, 1/2]` per edge, in the surface's edge order.
+        phi_over_pi: Vec<Rational>,
+        /// One claimed cone angle per vertex, radians.
+        angles: Vec<Rational>,
+        /// Absolute tolerance ε ≥ 0 on each cone angle.
+        epsilon: Rational,
+    },
 }
 
 impl Assertion {
@@ -103,6 +126,8 @@ impl Assertion {
             Assertion::Energy { .. } => "energy",
             Assertion::Lobachevsky { .. } => "lobachevsky",
             Assertion::Uniformization(_) => "uniformization",
+            Assertion::CirclePacking { .. } => "circle_packing",
+            Assertion::CirclePattern { .. } => "circle_pattern",
         }
     }
 }
@@ -140,11 +165,11 @@ fn surface_at(v: &Value, key: &str, what: &str) -> Result<Surface, ClaimError> {
     from_value(s).map_err(|e| err(format!("{key}: {e}")))
 }
 
-fn err(msg: impl Into<String>) -> ClaimError {
+pub(super) fn err(msg: impl Into<String>) -> ClaimError {
     ClaimError(msg.into())
 }
 
-fn numbers(
+pub(super) fn numbers(
     v: &Value,
     path: &str,
     expected: usize,
@@ -167,7 +192,7 @@ fn numbers(
         .collect()
 }
 
-fn epsilon(v: &Value) -> Result<Rational, ClaimError> {
+pub(super) fn epsilon(v: &Value) -> Result<Rational, ClaimError> {
     let e = exact_number(
         v.get("epsilon")
             .ok_or_else(|| err("epsilon: required for this claim kind"))?,
@@ -184,7 +209,7 @@ const COMMON_FIELDS: [&str; 5] = ["penner_claim", "id", "kind", "surface", "max_
 
 /// The claim kinds and the fields each may carry besides [`COMMON_FIELDS`]
 /// (`schema/claim-v1.schema.json`).
-const KIND_FIELDS: [(&str, &[&str]); 8] = [
+const KIND_FIELDS: [(&str, &[&str]); 10] = [
     ("intrinsic_delaunay", &[]),
     ("delaunay_flip", &["flips", "result", "epsilon"]),
     ("cone_angles", &["angles", "epsilon"]),
@@ -202,6 +227,11 @@ const KIND_FIELDS: [(&str, &[&str]); 8] = [
             "final_faces",
             "residual_bound",
         ],
+    ),
+    ("circle_packing", &["centres", "radii", "caps", "epsilon"]),
+    (
+        "circle_pattern",
+        &["radii", "phi_over_pi", "angles", "epsilon"],
     ),
 ];
 
@@ -335,13 +365,23 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
     let kind = v
         .get("kind")
         .and_then(Value::as_str)
-        .ok_or_else(|| err("kind: required, one of intrinsic_delaunay, delaunay_flip, cone_angles, cotan_laplacian, conformal_equivalence, energy, lobachevsky, uniformization"))?;
+        .ok_or_else(|| err("kind: required, one of intrinsic_delaunay, delaunay_flip, cone_angles, cotan_laplacian, conformal_equivalence, energy, lobachevsky, uniformization, circle_packing, circle_pattern"))?;
     let Some((_, own)) = KIND_FIELDS.iter().find(|(k, _)| *k == kind) else {
         return Err(err(format!("kind: unknown claim kind {kind:?}")));
     };
     check_fields(obj, kind, own)?;
     if kind == "lobachevsky" {
         return lobachevsky_claim(v, id, max_bits);
+    }
+    if kind == "circle_packing" || kind == "circle_pattern" {
+        let surface = super::claim_circles::triangulation(v)?;
+        let assertion = super::claim_circles::parse(v, kind, &surface)?;
+        return Ok(Claim {
+            id,
+            surface,
+            assertion,
+            max_bits,
+        });
     }
     let surface = surface_at(v, "surface", "the surface the claim is about")?;
     let assertion = match kind {

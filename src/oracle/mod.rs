@@ -6,8 +6,10 @@
 
 pub mod case;
 pub mod certify;
+pub mod certify_circles;
 pub mod certify_energy;
 pub mod claim;
+pub mod claim_circles;
 pub mod corpus;
 pub mod failure;
 pub mod flip_claim;

@@ -16,13 +16,14 @@ pub mod hyperbolic;
 pub mod layout;
 pub mod solve;
 pub mod sphere;
+pub mod stopping;
 pub mod svg;
 pub mod tangency;
 
 use crate::mesh::{Mesh, MeshError, Vertex};
 use crate::scalar::Real;
 use layout::{layout_disk, Circle, LayoutError};
-use solve::{newton_f64, refine, MaximalSolveError};
+use solve::{newton_f64, refine, refine_from, MaximalSolveError};
 use sphere::{cap_of_disk, outer_cap, Cap};
 use std::collections::HashSet;
 
@@ -76,6 +77,11 @@ pub struct Options {
     /// Stopping residual `max |2π − θ|` of the refinement (default `2⁶·n·u` of the
     /// backend).
     pub tolerance: Option<f64>,
+    /// The tangency tolerance `ε` the layout should meet with margin: the refinement starts
+    /// at `ε/(2⁴·n)` and is tightened until the largest defect of the layout, measured in
+    /// the backend, is below `ε/2⁴` (proofs/B99; [`stopping`]). Ignored in `f64` and when
+    /// `tolerance` is given.
+    pub epsilon: Option<f64>,
 }
 
 /// A maximal packing of a disk, laid out in the unit disk.
@@ -99,6 +105,11 @@ pub struct DiskPacking<T> {
     pub refinement_steps: usize,
     /// `max |2π − θ|` of the `f64` solution.
     pub f64_residual: f64,
+    /// Layouts computed (more than one when [`Options::epsilon`] tightened the refinement).
+    pub layouts: usize,
+    /// The largest tangency defect of the final layout measured in the backend
+    /// ([`stopping::layout_defect`]; a heuristic, not a bound).
+    pub layout_defect: f64,
 }
 
 /// A packing of a sphere by caps, from a maximal packing of the sphere punctured at `puncture`.
@@ -168,16 +179,37 @@ pub fn maximal_disk<T: Real>(
     let start = opts.start.clone().unwrap_or_else(|| vec![default_u; n]);
     let tol64 = 64.0 * n as f64 * f64::EPSILON / 2.0;
     let sol = newton_f64(mesh, &interior, &start, tol64.max(1e-13), 100)?;
-    let tol = opts
-        .tolerance
-        .unwrap_or(64.0 * n as f64 * T::unit_roundoff(ctx));
-    let (u, steps) = if T::precision_bits(ctx) <= 53 {
+    let floor = 64.0 * n as f64 * T::unit_roundoff(ctx);
+    let mut tol = match (opts.tolerance, opts.epsilon) {
+        (Some(t), _) => t,
+        (None, Some(eps)) => stopping::first_tolerance(eps, n, floor),
+        (None, None) => floor,
+    };
+    let (mut u, mut steps) = if T::precision_bits(ctx) <= 53 {
         (sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect(), 0)
     } else {
         refine::<T>(mesh, &interior, &sol, ctx, tol, 40)?
     };
-    let t = hyperbolic::radii_from_u(&u, &interior);
-    let circles = layout_disk(mesh, &t, &interior, centre, direction)?;
+    let mut t = hyperbolic::radii_from_u(&u, &interior);
+    let mut circles = layout_disk(mesh, &t, &interior, centre, direction)?;
+    let mut layouts = 1;
+    // proof: B99 — tighten the residual until the layout's defects are below ε/2⁴.
+    if let (None, Some(eps), true) = (opts.tolerance, opts.epsilon, T::precision_bits(ctx) > 53) {
+        while layouts <= stopping::MAX_ROUNDS {
+            let defect = stopping::layout_defect(mesh, &circles, &interior);
+            let Some(next) = stopping::next_tolerance(tol, defect, eps, floor) else {
+                break;
+            };
+            tol = next;
+            let (v, s) = refine_from::<T>(mesh, &interior, &sol, u, ctx, tol, 40)?;
+            u = v;
+            steps += s;
+            t = hyperbolic::radii_from_u(&u, &interior);
+            circles = layout_disk(mesh, &t, &interior, centre, direction)?;
+            layouts += 1;
+        }
+    }
+    let layout_defect = stopping::layout_defect(mesh, &circles, &interior);
     Ok(DiskPacking {
         mesh: mesh.clone(),
         interior,
@@ -188,7 +220,37 @@ pub fn maximal_disk<T: Real>(
         newton_iterations: sol.iterations,
         refinement_steps: steps,
         f64_residual: sol.residual,
+        layouts,
+        layout_defect,
     })
+}
+
+/// The maximal packing of the disk `mesh` in MPFR laid out within `eps` with margin
+/// (proofs/B99): at `bits` (raised to [`stopping::bits_for`]) with [`Options::epsilon`], and
+/// when the refinement reached the floor of that precision with a measured defect still
+/// above `ε/2⁴` (rounding in the layout, amplified near the unit circle), once more at
+/// [`stopping::bits_after`] bits. Returns the packing and the bits used.
+pub fn maximal_disk_within(
+    mesh: &Mesh,
+    eps: f64,
+    bits: u32,
+    opts: &Options,
+) -> Result<(DiskPacking<crate::scalar::Mpfr>, u32), MaximalError> {
+    let bits = bits.max(stopping::bits_for(eps, mesh.n_vertices()));
+    let o = Options {
+        epsilon: Some(eps),
+        ..opts.clone()
+    };
+    let run = |bits: u32| {
+        let prec = crate::scalar::Precision::new(u64::from(bits))
+            .map_err(|_| MaximalError::Solve(MaximalSolveError::Precision(bits)))?;
+        maximal_disk::<crate::scalar::Mpfr>(mesh, prec, &o)
+    };
+    let first = run(bits)?;
+    match stopping::bits_after(bits, first.layout_defect, eps) {
+        Some(more) => Ok((run(more)?, more)),
+        None => Ok((first, bits)),
+    }
 }
 
 /// An interior vertex at the largest edge distance from the boundary (lowest index on ties).

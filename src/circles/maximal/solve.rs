@@ -38,6 +38,9 @@ pub enum MaximalSolveError {
         /// `max |2π − θ|` reached.
         residual: f64,
     },
+    /// A working precision out of MPFR's range.
+    #[error("{0} bits is not a usable MPFR precision")]
+    Precision(u32),
 }
 
 /// `H = −∂θ/∂u` on the interior vertices (`index[v]`), lower triangle, duplicates summed.
@@ -224,8 +227,22 @@ pub fn refine<T: Real>(
     tol: f64,
     max_iter: usize,
 ) -> Result<(Vec<T>, usize), MaximalSolveError> {
+    let u: Vec<T> = sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect();
+    refine_from(mesh, interior, sol, u, ctx, tol, max_iter)
+}
+
+/// [`refine`] from the point `u` of the backend instead of the `f64` solution (continuing
+/// a refinement to a tighter `tol`).
+pub fn refine_from<T: Real>(
+    mesh: &Mesh,
+    interior: &[bool],
+    sol: &F64Solution,
+    mut u: Vec<T>,
+    ctx: T::Ctx,
+    tol: f64,
+    max_iter: usize,
+) -> Result<(Vec<T>, usize), MaximalSolveError> {
     let index = interior_index(interior);
-    let mut u: Vec<T> = sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect();
     let mut g = residual(mesh, &u, interior);
     for it in 0..max_iter {
         let res = max_abs(&g);

@@ -11,6 +11,7 @@
 //! sin a')` for angular radii `a, a'` and centre angle `δ`, proofs/B96), a Möbius invariant.
 
 use super::tangency::PackingVerdict;
+use crate::circles::realize::Violation;
 use crate::mesh::{Mesh, Vertex};
 use crate::scalar::{Interval, IntervalBound, Mpfr, Precision, Real, Sign};
 use rug::Rational;
@@ -94,28 +95,21 @@ pub fn check_sphere_packing(
         )]);
     }
     let (mut fails, mut undecided) = (Vec::new(), Vec::new());
-    let mut spread = Vec::with_capacity(caps.len());
     for (v, c) in caps.iter().enumerate() {
         // |N|² − H² > 0: a proper cap (neither empty nor the whole sphere).
         let s = dot(&c.normal, &c.normal) - Rational::from(&c.height * &c.height);
         if s <= 0 {
             fails.push(format!("v{v}: not a proper cap (|N|² ≤ H²)"));
         }
-        spread.push(s);
     }
     if !fails.is_empty() {
         return PackingVerdict::Fails(fails);
     }
     let e = I::from_rational(eps, prec);
     let mut max_defect = 0.0_f64;
-    for edge in mesh.edges() {
+    for (edge, d) in mesh.edges().zip(inversive_defects(mesh, caps, prec)) {
         let h = edge.halfedge();
         let (i, j) = (mesh.tail(h).idx(), mesh.tip(h).idx());
-        let num = Rational::from(&caps[i].height * &caps[j].height)
-            - dot(&caps[i].normal, &caps[j].normal);
-        let den = Rational::from(&spread[i] * &spread[j]);
-        let inv = I::from_rational(&num, prec) / &I::from_rational(&den, prec).sqrt();
-        let d = inv - &I::from_f64(1.0, prec);
         max_defect = max_defect.max(d.abs().hi().to_f64_up());
         let up = (e.clone() - &d).sign();
         let down = (e.clone() + &d).sign();
@@ -132,26 +126,11 @@ pub fn check_sphere_packing(
             ));
         }
     }
-    for f in mesh.faces() {
-        let [a, b, c] = mesh.face_vertices(f).map(Vertex::idx);
-        if det(&caps[a].normal, &caps[b].normal, &caps[c].normal) <= 0 {
-            fails.push(format!(
-                "face f{} (v{a}, v{b}, v{c}): centres not positively oriented",
-                f.idx()
-            ));
-        }
-    }
-    if fails.is_empty() {
-        for v in mesh.vertices() {
-            let w = winding(mesh, v, caps);
-            if w != 1 {
-                fails.push(format!(
-                    "v{}: the neighbours wind {w} times around it",
-                    v.idx()
-                ));
-            }
-        }
-    }
+    fails.extend(
+        orientation_violations(mesh, caps)
+            .into_iter()
+            .map(|v| format!("{}: {}", v.element, v.detail)),
+    );
     if !fails.is_empty() {
         PackingVerdict::Fails(fails)
     } else if !undecided.is_empty() {
@@ -159,6 +138,58 @@ pub fn check_sphere_packing(
     } else {
         PackingVerdict::Holds { max_defect }
     }
+}
+
+/// Enclosures of `I_ij − 1` per edge of `mesh` (mesh edge order) at precision `p`, with
+/// `I_ij = (H_i H_j − N_i·N_j)/√((|N_i|² − H_i²)(|N_j|² − H_j²))` (module docs,
+/// proofs/B96): numerator and radicand exact in ℚ, then enclosed. An improper cap
+/// (`|N|² ≤ H²`) gives an invalid enclosure.
+pub fn inversive_defects(mesh: &Mesh, caps: &[ExactCap], p: Precision) -> Vec<I> {
+    let spread: Vec<Rational> = caps
+        .iter()
+        .map(|c| dot(&c.normal, &c.normal) - Rational::from(&c.height * &c.height))
+        .collect();
+    mesh.edges()
+        .map(|edge| {
+            let h = edge.halfedge();
+            let (i, j) = (mesh.tail(h).idx(), mesh.tip(h).idx());
+            if spread[i] <= 0 || spread[j] <= 0 {
+                return I::invalid(p);
+            }
+            let num = Rational::from(&caps[i].height * &caps[j].height)
+                - dot(&caps[i].normal, &caps[j].normal);
+            let den = Rational::from(&spread[i] * &spread[j]);
+            I::from_rational(&num, p) / &I::from_rational(&den, p).sqrt() - &I::from_f64(1.0, p)
+        })
+        .collect()
+}
+
+/// Faces whose cap centres are not positively oriented (`det(N_a, N_b, N_c) ≤ 0`, exact)
+/// and, when there is none, vertices around which the neighbours' normals do not wind
+/// exactly once ([`winding`], exact).
+pub fn orientation_violations(mesh: &Mesh, caps: &[ExactCap]) -> Vec<Violation> {
+    let mut out = Vec::new();
+    for f in mesh.faces() {
+        let [a, b, c] = mesh.face_vertices(f).map(Vertex::idx);
+        if det(&caps[a].normal, &caps[b].normal, &caps[c].normal) <= 0 {
+            out.push(Violation {
+                element: format!("face f{} (v{a}, v{b}, v{c})", f.idx()),
+                detail: "centres not positively oriented".into(),
+            });
+        }
+    }
+    if out.is_empty() {
+        for v in mesh.vertices() {
+            let w = winding(mesh, v, caps);
+            if w != 1 {
+                out.push(Violation {
+                    element: format!("v{}", v.idx()),
+                    detail: format!("the neighbours wind {w} times around it"),
+                });
+            }
+        }
+    }
+    out
 }
 
 /// Winding of the neighbours' normals around `N_v` (counter-clockwise seen from outside),

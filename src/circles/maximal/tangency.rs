@@ -16,6 +16,7 @@
 //! orientation or a wrong winding number); an enclosure straddling the bound is
 //! `Undecided`.
 
+use crate::circles::realize::Violation;
 use crate::mesh::{Mesh, Vertex};
 use crate::scalar::{Interval, IntervalBound, Mpfr, Precision, Real, Sign};
 use rug::Rational;
@@ -169,17 +170,29 @@ pub fn check_packing(
 
 /// Conditions 2 and 3 of the module docs, exactly; violations are pushed to `fails`.
 fn orientation_and_winding(mesh: &Mesh, circles: &[ExactCircle], fails: &mut Vec<String>) {
+    fails.extend(
+        orientation_violations(mesh, circles)
+            .into_iter()
+            .map(|v| format!("{}: {}", v.element, v.detail)),
+    );
+}
+
+/// Conditions 2 and 3 of the module docs, exactly: the faces whose centres are not
+/// positively oriented and, when there is none, the interior vertices whose neighbours do
+/// not wind exactly once around them.
+pub fn orientation_violations(mesh: &Mesh, circles: &[ExactCircle]) -> Vec<Violation> {
+    let mut out = Vec::new();
     for f in mesh.faces() {
         let [a, b, c] = mesh.face_vertices(f).map(Vertex::idx);
         let s = cross(&circles[a].centre, &circles[b].centre, &circles[c].centre);
         if s <= 0 {
-            fails.push(format!(
-                "face f{} (v{a}, v{b}, v{c}): centres not positively oriented",
-                f.idx()
-            ));
+            out.push(Violation {
+                element: format!("face f{} (v{a}, v{b}, v{c})", f.idx()),
+                detail: "centres not positively oriented".into(),
+            });
         }
     }
-    if fails.is_empty() {
+    if out.is_empty() {
         let boundary = mesh.boundary_vertices();
         for v in mesh.vertices() {
             if boundary[v.idx()] {
@@ -187,13 +200,14 @@ fn orientation_and_winding(mesh: &Mesh, circles: &[ExactCircle], fails: &mut Vec
             }
             let w = winding(mesh, v, circles);
             if w != 1 {
-                fails.push(format!(
-                    "v{}: the neighbours wind {w} times around it",
-                    v.idx()
-                ));
+                out.push(Violation {
+                    element: format!("v{}", v.idx()),
+                    detail: format!("the neighbours wind {w} times around it"),
+                });
             }
         }
     }
+    out
 }
 
 /// The number of turns of the neighbours of interior `v` around its centre from the lower
