@@ -220,6 +220,7 @@ pub fn solve_dirichlet(
                 base: base.to_vec(),
                 lengths: base.to_vec(),
                 grad: vec![f64::NAN; mesh.n_vertices()],
+                cot: Vec::new(),
                 flips: Vec::new(),
             };
             return Ok(finish(ev, u, steps, sequence, Stop::DegenerateStep(reason)));

@@ -120,6 +120,8 @@ impl Uniformization {
 pub(crate) struct Evaluation {
     pub mesh: Mesh,
     pub base: Vec<f64>,
+    /// The scaled lengths on `mesh`, shifted by a power of two (angles are scale-invariant).
+    pub lengths: Vec<f64>,
     pub grad: Vec<f64>,
     /// `cot` of the corner opposite each half-edge (the Hessian's weights).
     pub cot: Vec<f64>,
@@ -189,6 +191,7 @@ pub(crate) fn evaluate(
     Ok(Evaluation {
         mesh: m,
         base: b,
+        lengths,
         grad,
         cot,
         flips: rep.sequence,
@@ -321,6 +324,7 @@ pub fn uniformize_with_progress(
             let ev = Evaluation {
                 mesh: t0.clone(),
                 base: l0.clone(),
+                lengths: l0.clone(),
                 grad: vec![f64::NAN; t0.n_vertices()],
                 cot: Vec::new(),
                 flips: Vec::new(),
