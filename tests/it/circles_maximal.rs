@@ -572,5 +572,9 @@ fn t11_cli_pack_disk_and_sphere() {
         "1e-60",
     ]);
     assert_eq!(low.status.code(), Some(0), "{}", text(&low.stdout));
-    assert!(!text(&low.stdout).contains("at 64 bits"), "{}", text(&low.stdout));
+    assert!(
+        !text(&low.stdout).contains("at 64 bits"),
+        "{}",
+        text(&low.stdout)
+    );
 }
