@@ -6,15 +6,20 @@
 //!
 //! 1. the final triangulation `T` (the input `T₀` and its lengths `ℓ⁰` carried by the
 //!    recorded Ptolemy flips, enclosed) is intrinsic Delaunay (`P ≥ 0`, B60) and every face a
-//!    strict triangle for every `u' ∈ B`, so `B` lies in one Penner cell and `E = E_T` there;
+//!    strict triangle for every `u' ∈ B`, so `B` lies in one Penner cell and `E = E_T` there
+//!    — or, across cell boundaries, the hypotheses of B35 ([`super::cell_boundary`]): the
+//!    edges not Delaunay on `B` have face-disjoint quadrilaterals and every other edge is
+//!    Delaunay whichever of them flip, so some `T_S` is Delaunay at each `u'`;
 //! 2. the grounded Hessian `H(u') = −L(u')` satisfies `H(u') ⪰ μI` on `B`, with
 //!    `μ = λ_min(H_mid) − ‖H_rad‖_∞`: `H_mid ± H_rad` the interval cotan Laplacian over `B`
 //!    and `λ_min(H_mid)` bounded below by a verified Cholesky factorization (B70);
 //! 3. the residual `g = Θ − θ(u)` on the free vertices is enclosed, `‖g‖₂ ≤ γ`.
 //!
 //! If `γ < μ·r` there is a zero `u*` of `∇E` with `‖u* − u‖₂ ≤ γ/μ` (B71: strong convexity
-//! on the Euclidean ball of radius `r` inside `B`), and `T` is Delaunay for `u*`.
+//! on the Euclidean ball of radius `r` inside `B`), and `T` (across boundaries: `T` with
+//! the edges of `U` whose `P < 0` at `u*` flipped, B35) is Delaunay for `u*`.
 
+use super::cell_boundary::{cell_over_box, Boundary};
 use super::components::Components;
 use super::error::UniformizeError;
 use super::hessian::{grounded_hessian, newton_direction, CholeskyCache};
@@ -23,9 +28,8 @@ use super::refine::{carry_lengths, carry_lengths_from, scaled, RefineError};
 use super::targets::Targets;
 use super::verified_cholesky::{lambda_min_lower_bound, up, SymmetricLower};
 use crate::geometry::cone_angles::cone_angles;
-use crate::geometry::laplacian::{cotan_laplacian, SparseMatrix};
+use crate::geometry::laplacian::SparseMatrix;
 use crate::mesh::{Edge, Mesh};
-use crate::predicates::delaunay::{enclose_p, QuadEdges};
 use crate::scalar::{Interval, IntervalBound, Mpfr, Precision, Real, Sign};
 use rug::float::Round;
 use rug::Rational;
@@ -113,9 +117,14 @@ pub(crate) struct Prepared {
     /// `Θ_v − θ_v(u)` for the free vertices `v`, enclosed.
     pub residual: Vec<I>,
     pub prec: Precision,
+    /// The cell boundaries the box crosses (B35), `None` inside one Penner cell.
+    pub boundary: Option<Boundary>,
+    /// The box, as enclosures of `u'` per vertex (points at the grounded vertices).
+    pub boxed: Vec<I>,
 }
 
-/// Validate `data`, carry the lengths, and check the Penner cell on the box (B71 step 1);
+/// Validate `data`, carry the lengths, and check the Penner cell on the box (B71 step 1,
+/// across cell boundaries B35);
 /// `Ok(Err(reason))` when a step is not certified. `base0`, when given, encloses the
 /// lengths of `T₀` (e.g. an irrational input metric, flipped to `T₀` in intervals) and
 /// replaces the binary64 `data.l0` (which is still validated) in every enclosure.
@@ -173,35 +182,14 @@ pub(crate) fn prepare(
             }
         })
         .collect();
-    // 1. One Penner cell: strict triangles and Delaunay edges on the whole box.
+    // 1. One Penner cell, or cell boundaries crossed as B35 allows: strict triangles,
+    // Delaunay edges and the Laplacian over the whole box.
     let lb = scaled(&mesh, &base, &boxed);
-    for f in mesh.faces() {
-        let [a, b, c] = mesh.face_halfedges(f).map(|h| &lb[h.edge().idx()]);
-        for (x, y, z) in [(a, b, c), (b, c, a), (c, a, b)] {
-            let slack = y.clone() + z - x;
-            if slack.sign() != Some(Sign::Positive) {
-                return Ok(Err(format!(
-                    "face f{} not certified a strict triangle on the whole box",
-                    f.0
-                )));
-            }
-        }
-    }
-    for e in mesh.edges() {
-        let Some(q) = QuadEdges::of(&mesh, e) else {
-            continue;
-        };
-        let l = q.lengths(&lb).map(Clone::clone).to_array();
-        let p = enclose_p(&l);
-        let lo = p.lo().as_float();
-        if !(p.is_valid() && (lo.is_zero() || lo.is_sign_positive())) {
-            return Ok(Err(format!(
-                "edge e{} not certified Delaunay on the whole box",
-                e.0
-            )));
-        }
-    }
-    let laplacian = cotan_laplacian(&mesh, &lb);
+    let cell = match cell_over_box(&mesh, &base, &boxed, &lb) {
+        Ok(c) => c,
+        Err(reason) => return Ok(Err(reason)),
+    };
+    let laplacian = cell.laplacian;
     if let Some((i, j, _)) = laplacian.entries().find(|(_, _, w)| !w.is_valid()) {
         return Ok(Err(format!(
             "cotan Laplacian entry ({i}, {j}) not enclosed"
@@ -209,7 +197,13 @@ pub(crate) fn prepare(
     }
     // The residual at u, enclosed.
     let lp = scaled(&mesh, &base, &point);
-    let theta = cone_angles(&mesh, &lp);
+    let mut theta = cone_angles(&mesh, &lp);
+    if let Some(b) = &cell.boundary {
+        // The angle sums of a triangulation Delaunay at the centre (B35).
+        if let Err(reason) = b.correct_angle_sums(&mesh, &point, &lp, &mut theta) {
+            return Ok(Err(reason));
+        }
+    }
     let pi = I::pi(prec);
     let mut residual = Vec::with_capacity(free.len());
     for &v in &free {
@@ -228,6 +222,8 @@ pub(crate) fn prepare(
         laplacian,
         residual,
         prec,
+        boundary: cell.boundary,
+        boxed,
     }))
 }
 

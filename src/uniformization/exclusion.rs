@@ -4,7 +4,8 @@
 //!
 //! After step 1 of B71 (the final triangulation `T` is Delaunay and every face a strict
 //! triangle for every `u' ∈ B`, so the angle sums at `u'` are those of `T`), the angle sum
-//! `θ_v` of every vertex is enclosed over the whole box by interval arithmetic on the box
+//! `θ_v` of every vertex is enclosed over the whole box (across cell boundaries, B35: per
+//! edge not certified Delaunay on the box, the hull of both configurations' angles) by interval arithmetic on the box
 //! lengths. A vertex whose target `Θ_v` (enclosed) is disjoint from that enclosure has
 //! `θ_v(u') ≠ Θ_v` for every `u' ∈ B`: the box holds no solution.
 
@@ -36,7 +37,13 @@ pub fn excluded_vertices(
         Ok(p) => p,
         Err(reason) => return Ok(Err(reason)),
     };
-    let theta = cone_angles(&p.mesh, &p.box_lengths);
+    let mut theta = cone_angles(&p.mesh, &p.box_lengths);
+    if let Some(b) = &p.boundary {
+        // Across cell boundaries the angle sums are those of the Delaunay `T_S` (B35).
+        if let Err(reason) = b.correct_angle_sums(&p.mesh, &p.boxed, &p.box_lengths, &mut theta) {
+            return Ok(Err(reason));
+        }
+    }
     let pi = I::pi(p.prec);
     let mut out = Vec::new();
     for (v, th) in theta.iter().enumerate() {

@@ -8,6 +8,7 @@
 //! - [`certificate`]: an a-posteriori existence proof near a computed `u` (B70, B71);
 //! - [`targets`]: prescribed angles as exact multiples of π and Gauss–Bonnet.
 
+pub(crate) mod cell_boundary;
 pub mod certificate;
 pub mod claim_form;
 pub mod components;

@@ -76,6 +76,7 @@ mod uniformization;
 mod uniformization_layout;
 mod uniformization_speed;
 mod uniformization_sphere;
+mod uniformization_ties;
 mod variational;
 mod variational_fast;
 mod variational_fused;

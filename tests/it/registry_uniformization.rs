@@ -292,11 +292,14 @@ fn b73_convexity_admits_flips_of_convex_quadrilaterals_only() {
 }
 
 #[test]
-fn t24_delaunay_ties_at_the_solution_are_undecided_not_refuted() {
+fn b35_cube_ties_at_the_solution_are_certified() {
     use penner::theorems::t24_uniformization_exists::check_existence_on;
     use penner::uniformization::Targets;
     // The cube with even targets 3π/2: u = 0 solves it and every square's diagonal is a
-    // Delaunay tie there, so no box lies in one Penner cell (B71 Limits).
+    // Delaunay tie there, so no box lies in one Penner cell; the six tied diagonals have
+    // face-disjoint quadrilaterals and the cube's edges stay Delaunay whichever flip
+    // (B35): certified on the exact input metric (before B35: undecided, "edge … not
+    // certified Delaunay on the whole box").
     let cube = corpus::standard()
         .into_iter()
         .find(|c| c.name == "cube, diagonals one way")
@@ -308,12 +311,16 @@ fn t24_delaunay_ties_at_the_solution_are_undecided_not_refuted() {
     let input =
         |sol: &penner::uniformization::Uniformization| input_metric(&cube, &lengths, prec, sol);
     let ex = check_existence_on(&cube.mesh, &lengths, &even, 128, 1e-30, Some(&input)).unwrap();
-    let Verdict::Undecided { witnesses, .. } = &ex.verdict else {
-        panic!("{:?}", ex.verdict);
-    };
     assert!(
-        witnesses[0].detail.contains("on the whole box"),
-        "{witnesses:?}"
+        matches!(
+            ex.verdict,
+            Verdict::Holds {
+                certified: true,
+                ..
+            }
+        ),
+        "{:?}",
+        ex.verdict
     );
     // The registry's redistributed targets break the symmetry: certified.
     let v = verdict("T24", &cube, mpfr(128)).unwrap();

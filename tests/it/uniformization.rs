@@ -430,7 +430,7 @@ fn b70_lower_bound_matches_dense_eigenvalues() {
 }
 
 #[test]
-fn b71_box_leaving_the_penner_cell_is_undecided() {
+fn b71_box_beyond_the_cell_boundaries_is_undecided() {
     // The flat grid torus: every diagonal is (up to the rounding of √2) a cocircular tie,
     // so on a box of radius 1e-3 the Delaunay sign of the diagonals is not constant.
     let flat = penner::mesh::builders::flat_torus(4, 4).unwrap();
@@ -455,11 +455,19 @@ fn b71_box_leaving_the_penner_cell_is_undecided() {
         check_certificate(&small, 256).unwrap(),
         CertificateOutcome::Holds { .. }
     ));
-    // … a box of radius 1e-3 leaves the cell: undecided, naming an edge.
-    let big = certificate_data(&sol, u, tiny(3));
+    // … a box of radius 1e-6 crosses the diagonals' cell boundaries, which B35 covers …
+    let crossing = certificate_data(&sol, u.clone(), tiny(6));
+    let o = check_certificate(&crossing, 256).unwrap();
+    assert!(matches!(o, CertificateOutcome::Holds { .. }), "{o:?}");
+    // … a box of radius 1 is no proof (its faces are not certified strict triangles):
+    // undecided, naming a face.
+    let big = certificate_data(&sol, u, Rational::from(1));
     match check_certificate(&big, 256).unwrap() {
         CertificateOutcome::Undecided { reason } => {
-            assert!(reason.contains("not certified Delaunay"), "{reason}");
+            assert!(
+                reason.contains("not certified a strict triangle"),
+                "{reason}"
+            );
         }
         h @ CertificateOutcome::Holds { .. } => panic!("{h:?}"),
     }

@@ -1,0 +1,385 @@
+//! Step 1 of the uniformization certificate (B71) on a box that may cross Penner-cell
+//! boundaries. proof: B35
+//!
+//! Let `T` be the final triangulation and `U` the edges of `T` not certified Delaunay
+//! (`P ≥ 0`, B60) on the whole box `B`. When `U` is empty, `B` lies in one Penner cell and
+//! the Hessian of `E` on `B` is the cotan Laplacian of `T` over the box (B71). Otherwise,
+//! when no face touches two edges of `U`, the quadrilaterals of the `U`-edges are disjoint
+//! and their Ptolemy flips commute; for `S ⊆ U` let `T_S` be `T` with the edges of `S`
+//! flipped. If
+//!
+//! 1. every face of `T` and of `T_U` is a strict triangle on `B`, and
+//! 2. every edge `f ∉ U` is Delaunay on `B` in each of the (at most four) configurations of
+//!    the `U`-edges of its two faces,
+//!
+//! then for every `u' ∈ B` the triangulation `T_S` with `S = {e ∈ U : P_e(u') < 0}` is
+//! Delaunay at `u'` (a flipped edge has `P' = −(ℓ_il ℓ_jk + ℓ_ki ℓ_lj)·P/ℓ_ij² > 0`, B35),
+//! so `E` is `C²` on `B` (T32) with Hessian the cotan Laplacian of `T_S` at `u'`. That
+//! Laplacian is enclosed by the Laplacian of `T` over the box with the two faces of each
+//! `U`-edge replaced by the entrywise hull of the two configurations' local blocks
+//! ([`CellOverBox::laplacian`]). The angle sums at a point or over the box take, per
+//! `U`-edge, the configuration certified Delaunay there, or the hull of both
+//! ([`Boundary::correct_angle_sums`]).
+
+use super::certificate::I;
+use crate::algorithms::flips::ptolemy_length_enclosure;
+use crate::geometry::laplacian::{cotan_laplacian, SparseMatrix};
+use crate::geometry::triangle::{corner_angle, cot_opposite};
+use crate::mesh::{Edge, HalfEdge, Mesh};
+use crate::predicates::delaunay::{enclose_p, QuadEdges};
+use crate::scalar::{Real, Sign};
+
+/// No index (an edge not in `U`, a half-edge in no `U`-quadrilateral).
+const NONE: u32 = u32::MAX;
+
+/// The result of step 1 over the box: the enclosed Hessian (as `L`) and, when the box
+/// crosses cell boundaries, what the angle sums need to know about them.
+pub(crate) struct CellOverBox {
+    /// `L` over the box: an entrywise enclosure of the cotan Laplacian of the Delaunay
+    /// triangulation `T_S` at every `u'` of the box.
+    pub laplacian: SparseMatrix<I>,
+    /// The cell boundaries met (`None`: the box lies in one Penner cell).
+    pub boundary: Option<Boundary>,
+}
+
+/// The edges `U` not certified Delaunay on the box and their flips (B35).
+pub(crate) struct Boundary {
+    /// `U`, in edge order.
+    pub edges: Vec<Edge>,
+    /// `T_U`: `T` with every edge of `U` Ptolemy-flipped.
+    flipped: Mesh,
+    /// The base (unscaled) Ptolemy lengths of the flipped `U`-edges, in the order of `edges`.
+    flipped_base: Vec<I>,
+}
+
+/// Whether `p` is certified `≥ 0`.
+fn nonnegative(p: &I) -> bool {
+    let lo = p.lo().as_float();
+    p.is_valid() && (lo.is_zero() || lo.is_sign_positive())
+}
+
+/// The smallest interval holding `a` and `b` (both valid).
+fn hull(a: &I, b: &I) -> I {
+    let lo = if a.lo().as_float() <= b.lo().as_float() {
+        a.lo()
+    } else {
+        b.lo()
+    };
+    let hi = if a.hi().as_float() >= b.hi().as_float() {
+        a.hi()
+    } else {
+        b.hi()
+    };
+    I::new(lo.clone(), hi.clone())
+}
+
+/// The three half-edges of the face of `h` in `mesh`.
+fn face_of(mesh: &Mesh, h: HalfEdge) -> [HalfEdge; 3] {
+    let n = mesh.next(h);
+    [h, n, mesh.next(n)]
+}
+
+/// `e^{(u_a+u_b)/2}·ℓ` for the ends `a, b` of `h`.
+fn scale(mesh: &Mesh, h: HalfEdge, base: &I, u: &[I]) -> I {
+    let s = (u[mesh.tail(h).idx()].clone() + &u[mesh.tip(h).idx()]) * &base.lit(0.5);
+    s.exp() * base
+}
+
+/// Every face of `faces` a strict triangle for the lengths `len`.
+fn strict<'a>(
+    mesh: &Mesh,
+    faces: impl Iterator<Item = HalfEdge>,
+    len: impl Fn(Edge) -> &'a I,
+    what: &str,
+) -> Result<(), String> {
+    for h in faces {
+        let [a, b, c] = face_of(mesh, h).map(|x| len(x.edge()));
+        for (x, y, z) in [(a, b, c), (b, c, a), (c, a, b)] {
+            let slack = y.clone() + z - x;
+            if slack.sign() != Some(Sign::Positive) {
+                return Err(format!(
+                    "face {what} not certified a strict triangle on the whole box"
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Step 1 of B71 over the box, across cell boundaries (B35): `lb` are the lengths of `T`
+/// over the box `boxed` (`base` unscaled). `Err(reason)` when a hypothesis is not certified.
+pub(crate) fn cell_over_box(
+    mesh: &Mesh,
+    base: &[I],
+    boxed: &[I],
+    lb: &[I],
+) -> Result<CellOverBox, String> {
+    for f in mesh.faces() {
+        strict(
+            mesh,
+            std::iter::once(mesh.face_halfedge(f)),
+            |e| &lb[e.idx()],
+            &format!("f{}", f.0),
+        )?;
+    }
+    let edges: Vec<Edge> = mesh
+        .edges()
+        .filter(|&e| {
+            QuadEdges::of(mesh, e).is_some_and(|q| {
+                !nonnegative(&enclose_p(&q.lengths(lb).map(Clone::clone).to_array()))
+            })
+        })
+        .collect();
+    if edges.is_empty() {
+        return Ok(CellOverBox {
+            laplacian: cotan_laplacian(mesh, lb),
+            boundary: None,
+        });
+    }
+    // Hypothesis: the quadrilaterals of U are face-disjoint.
+    let mut quad_of = vec![NONE; mesh.n_halfedges()];
+    for (k, &e) in edges.iter().enumerate() {
+        for h in face_of(mesh, e.side(0))
+            .into_iter()
+            .chain(face_of(mesh, e.side(1)))
+        {
+            let other = quad_of[h.idx()];
+            if other != NONE {
+                return Err(format!(
+                    "edge e{} not certified Delaunay on the whole box, and it shares a face \
+                     with e{}, also not certified (B35 needs the two faces of each such edge \
+                     apart from the others')",
+                    e.0, edges[other as usize].0
+                ));
+            }
+            quad_of[h.idx()] = k as u32;
+        }
+    }
+    // T_U and the Ptolemy lengths of the flipped edges (the quadrilaterals are disjoint:
+    // each flip sees the lengths of T).
+    let mut flipped = mesh.clone();
+    let mut flipped_base = Vec::with_capacity(edges.len());
+    for &e in &edges {
+        let Some(q) = QuadEdges::of(mesh, e) else {
+            return Err(format!("edge e{e} has no quadrilateral", e = e.0));
+        };
+        let Some(l) = ptolemy_length_enclosure(q.lengths(base)) else {
+            return Err(format!("Ptolemy length of e{} not enclosed", e.0));
+        };
+        if flipped.flip(e).is_err() {
+            return Err(format!("edge e{} does not flip", e.0));
+        }
+        flipped_base.push(l);
+    }
+    let mut u_index = vec![NONE; mesh.n_edges()];
+    for (k, e) in edges.iter().enumerate() {
+        u_index[e.idx()] = k as u32;
+    }
+    let flipped_box: Vec<I> = edges
+        .iter()
+        .zip(&flipped_base)
+        .map(|(&e, l)| scale(&flipped, e.side(0), l, boxed))
+        .collect();
+    let lengths = Lengths {
+        lb,
+        u_index: &u_index,
+        flipped_box: &flipped_box,
+    };
+    let len_u = |e: Edge| lengths.get(e, true);
+    // 1. Strict triangles in the flipped configuration too.
+    for &e in &edges {
+        strict(
+            &flipped,
+            [e.side(0), e.side(1)].into_iter(),
+            len_u,
+            &format!("beside the flipped e{}", e.0),
+        )?;
+    }
+    // 2. Every other edge with a face in a U-quadrilateral: Delaunay in every configuration.
+    for f in mesh.edges() {
+        if u_index[f.idx()] != NONE || QuadEdges::of(mesh, f).is_none() {
+            continue;
+        }
+        let sides = [f.side(0), f.side(1)];
+        let marked = sides.map(|h| quad_of[h.idx()] != NONE);
+        if !marked[0] && !marked[1] {
+            continue;
+        }
+        for combo in 0..4u8 {
+            let cfg = [combo & 1 == 1, combo & 2 == 2];
+            if (cfg[0] && !marked[0]) || (cfg[1] && !marked[1]) {
+                continue;
+            }
+            let mut l = vec![lb[f.idx()].clone()];
+            for (s, &h) in sides.iter().enumerate() {
+                let m = if cfg[s] { &flipped } else { mesh };
+                let n1 = m.next(h);
+                l.push(lengths.get(n1.edge(), cfg[s]).clone());
+                l.push(lengths.get(m.next(n1).edge(), cfg[s]).clone());
+            }
+            let l: [I; 5] = l.try_into().map_err(|_| "five lengths".to_string())?;
+            if !nonnegative(&enclose_p(&l)) {
+                let near: Vec<String> = sides
+                    .iter()
+                    .filter(|h| quad_of[h.idx()] != NONE)
+                    .map(|h| format!("e{}", edges[quad_of[h.idx()] as usize].0))
+                    .collect();
+                return Err(format!(
+                    "edge e{} not certified Delaunay on the whole box once {} flip",
+                    f.0,
+                    near.join(" and ")
+                ));
+            }
+        }
+    }
+    // The Laplacian: T's, with each U-quadrilateral's block replaced by the hull of the two.
+    let mut laplacian = cotan_laplacian(mesh, lb);
+    let mut extra = Vec::new();
+    for &e in &edges {
+        let mut block: Vec<((usize, usize), [Option<I>; 2])> = Vec::new();
+        for (c, m) in [mesh, &flipped].into_iter().enumerate() {
+            let len = |x: Edge| lengths.get(x, c == 1);
+            for h in face_of(m, e.side(0))
+                .into_iter()
+                .chain(face_of(m, e.side(1)))
+            {
+                let (i, j) = (m.tail(h).idx(), m.tip(h).idx());
+                if i == j {
+                    continue;
+                }
+                let (a, b, d) = (len(h.edge()), len(m.next(h).edge()), len(m.prev(h).edge()));
+                let w = cot_opposite(a, b, d) * &a.lit(0.5);
+                for (pos, v) in [((i, j), &w), ((j, i), &w)] {
+                    add(&mut block, pos, c, v.clone());
+                }
+                for pos in [(i, i), (j, j)] {
+                    add(&mut block, pos, c, -w.clone());
+                }
+            }
+        }
+        for ((i, j), [a, b]) in block {
+            let zero = || lb[0].zero_like();
+            let a = a.unwrap_or_else(zero);
+            let b = b.unwrap_or_else(zero);
+            let delta = hull(&a, &b) - &a;
+            match laplacian.get_mut(i, j) {
+                Some(x) => *x += &delta,
+                None => extra.push((i, j, delta)),
+            }
+        }
+    }
+    if !extra.is_empty() {
+        let mut triplets: Vec<(usize, usize, I)> = laplacian
+            .entries()
+            .map(|(i, j, w)| (i, j, w.clone()))
+            .collect();
+        triplets.append(&mut extra);
+        laplacian = SparseMatrix::from_triplets(mesh.n_vertices(), &triplets);
+    }
+    Ok(CellOverBox {
+        laplacian,
+        boundary: Some(Boundary {
+            edges,
+            flipped,
+            flipped_base,
+        }),
+    })
+}
+
+/// The lengths of `T` (`lb`) or of `T_U` (`lb` with the flipped `U`-edges' lengths).
+struct Lengths<'a> {
+    lb: &'a [I],
+    u_index: &'a [u32],
+    flipped_box: &'a [I],
+}
+
+impl<'a> Lengths<'a> {
+    /// The length of `e` in `T_U` (`flipped`) or in `T`.
+    fn get(&self, e: Edge, flipped: bool) -> &'a I {
+        match self.u_index[e.idx()] {
+            k if flipped && k != NONE => &self.flipped_box[k as usize],
+            _ => &self.lb[e.idx()],
+        }
+    }
+}
+
+/// Add `v` to the configuration `c` of position `pos` of a local block.
+fn add(block: &mut Vec<((usize, usize), [Option<I>; 2])>, pos: (usize, usize), c: usize, v: I) {
+    let k = match block.iter().position(|(p, _)| *p == pos) {
+        Some(k) => k,
+        None => {
+            block.push((pos, [None, None]));
+            block.len() - 1
+        }
+    };
+    let slot = &mut block[k].1[c];
+    *slot = Some(match slot.take() {
+        None => v,
+        Some(x) => x + &v,
+    });
+}
+
+impl Boundary {
+    /// Correct angle sums `theta` computed on `T` with the lengths `lengths` of `T` at `u`
+    /// (a point or the box) to enclose the angle sums of the Delaunay triangulation: per
+    /// `U`-edge, `T`'s two faces where `P ≥ 0` is certified, the flipped faces where `P < 0`
+    /// is, else the hull of both (B35). `Err(reason)` when an angle is not enclosed.
+    pub(crate) fn correct_angle_sums(
+        &self,
+        mesh: &Mesh,
+        u: &[I],
+        lengths: &[I],
+        theta: &mut [I],
+    ) -> Result<(), String> {
+        for (&e, fb) in self.edges.iter().zip(&self.flipped_base) {
+            let Some(q) = QuadEdges::of(mesh, e) else {
+                continue;
+            };
+            let p = enclose_p(&q.lengths(lengths).map(Clone::clone).to_array());
+            if nonnegative(&p) {
+                continue;
+            }
+            let new = scale(&self.flipped, e.side(0), fb, u);
+            let len_u = |x: Edge| if x == e { &new } else { &lengths[x.idx()] };
+            let len_t = |x: Edge| &lengths[x.idx()];
+            let a = corner_sums(mesh, e, &len_t);
+            let b = corner_sums(&self.flipped, e, &len_u);
+            let flip = p.sign() == Some(Sign::Negative);
+            let mut verts: Vec<usize> = a.iter().chain(&b).map(|(v, _)| *v).collect();
+            verts.sort_unstable();
+            verts.dedup();
+            for v in verts {
+                let get = |s: &[(usize, I)]| {
+                    s.iter()
+                        .find(|(w, _)| *w == v)
+                        .map_or_else(|| lengths[0].zero_like(), |(_, x)| x.clone())
+                };
+                let (av, bv) = (get(&a), get(&b));
+                if !(av.is_valid() && bv.is_valid()) {
+                    return Err(format!("angles beside e{} not enclosed", e.0));
+                }
+                let delta = if flip { bv - &av } else { hull(&av, &bv) - &av };
+                theta[v] += &delta;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The angles of the two faces of `e` in `m`, summed per vertex.
+fn corner_sums<'a>(m: &Mesh, e: Edge, len: &dyn Fn(Edge) -> &'a I) -> Vec<(usize, I)> {
+    let mut out: Vec<(usize, I)> = Vec::new();
+    for h in face_of(m, e.side(0))
+        .into_iter()
+        .chain(face_of(m, e.side(1)))
+    {
+        // The corner opposite h is at the tip of next(h).
+        let v = m.tip(m.next(h)).idx();
+        let angle = corner_angle(len(h.edge()), len(m.next(h).edge()), len(m.prev(h).edge()));
+        match out.iter_mut().find(|(w, _)| *w == v) {
+            Some((_, s)) => *s += &angle,
+            None => out.push((v, angle)),
+        }
+    }
+    out
+}
