@@ -67,10 +67,12 @@ fn b78_mirror_is_an_orientation_reversing_involution_fixing_the_seam() {
         }
         assert!(d.pull_back_edges(&lengths[1..]).is_none(), "{name}");
 
-        // Negative controls: the identity fixes the copies too; a mirror sending a face
+        // Negative controls: the identity (it fixes every face); a mirror sending a face
         // to a face other than its reversed copy; two swapped vertex images.
         let mut identity = d.clone();
         identity.vertex_mirror = d.mesh.vertices().collect();
+        identity.edge_mirror = d.mesh.edges().collect();
+        identity.face_mirror = d.mesh.faces().collect();
         assert!(identity.check_mirror().is_err(), "{name}: identity");
         if m.n_faces() > 1 {
             let mut shifted = d.clone();
