@@ -6,6 +6,7 @@
 use super::error::{code, CliError};
 use super::files::create_new;
 use penner::mesh::Face;
+use penner::scalar::{Certified, Sign};
 use penner::uniformization::boundary::{
     flat_with_even_boundary, uniformize_with_boundary, BoundaryUniformization,
 };
@@ -14,7 +15,6 @@ use penner::uniformization::claim_form::to_claim;
 use penner::uniformization::layout::{face_orientations, unfold, unfold_within};
 use penner::uniformization::svg::{render_layout_svg, scaled_lengths_f64};
 use penner::uniformization::UniformizeOptions;
-use penner::scalar::{Certified, Sign};
 use std::fmt::Write as _;
 use std::io::Write;
 use std::path::Path;

@@ -105,11 +105,7 @@ impl Double {
                 extra_edges.push(e.0);
             }
         }
-        let (dv, de, df) = (
-            nv + extra_vertices.len(),
-            ne + extra_edges.len(),
-            2 * nf,
-        );
+        let (dv, de, df) = (nv + extra_vertices.len(), ne + extra_edges.len(), 2 * nf);
         if 2 * de >= (u32::MAX / 2) as usize || dv >= u32::MAX as usize {
             return Err(DoubleError::TooLarge {
                 halfedges: mesh.n_halfedges(),
@@ -136,11 +132,7 @@ impl Double {
         let mut face_halfedge: Vec<u32> = mesh.faces().map(|f| mesh.face_halfedge(f).0).collect();
         face_halfedge.extend(mesh.faces().map(|f| sigma(mesh.face_halfedge(f).twin())));
         let mut out: Vec<u32> = mesh.vertices().map(|v| mesh.out[v.idx()].0).collect();
-        out.extend(
-            extra_vertices
-                .iter()
-                .map(|&v| sigma(mesh.out[v as usize])),
-        );
+        out.extend(extra_vertices.iter().map(|&v| sigma(mesh.out[v as usize])));
         let raw = RawMesh {
             next,
             tail,
@@ -160,7 +152,8 @@ impl Double {
                 _ => Sheet::Original,
             })
             .collect();
-        let mut full_vertex_mirror: Vec<Vertex> = vertex_mirror.iter().map(|&v| Vertex(v)).collect();
+        let mut full_vertex_mirror: Vec<Vertex> =
+            vertex_mirror.iter().map(|&v| Vertex(v)).collect();
         full_vertex_mirror.extend(extra_vertices.iter().map(|&v| Vertex(v)));
         let mut edge_origin: Vec<Edge> = mesh.edges().collect();
         edge_origin.extend(extra_edges.iter().map(|&e| Edge(e)));
@@ -229,7 +222,9 @@ impl Double {
     pub fn check_mirror(&self) -> Result<(), String> {
         let m = &self.mesh;
         let (nv, ne, nf) = (m.n_vertices(), m.n_edges(), m.n_faces());
-        if self.vertex_mirror.len() != nv || self.edge_mirror.len() != ne || self.face_mirror.len() != nf
+        if self.vertex_mirror.len() != nv
+            || self.edge_mirror.len() != ne
+            || self.face_mirror.len() != nf
         {
             return Err("mirror arrays have the wrong lengths".into());
         }
@@ -260,7 +255,9 @@ impl Double {
             let ends = [m.tail(h), m.tip(h)].map(|v| self.vertex_mirror[v.idx()]);
             let mirrored = [m.tail(k), m.tip(k)];
             if ends != mirrored {
-                return Err(format!("ι maps the ends of {e} to other ends than those of {g}"));
+                return Err(format!(
+                    "ι maps the ends of {e} to other ends than those of {g}"
+                ));
             }
         }
         for f in m.faces() {
@@ -277,9 +274,13 @@ impl Double {
                 [reversed[2], reversed[0], reversed[1]],
             ];
             if !rotations.contains(&target) {
-                return Err(format!("ι maps {f} to {g} without reversing its orientation"));
+                return Err(format!(
+                    "ι maps {f} to {g} without reversing its orientation"
+                ));
             }
-            let fe = m.face_halfedges(f).map(|h| self.edge_mirror[h.edge().idx()]);
+            let fe = m
+                .face_halfedges(f)
+                .map(|h| self.edge_mirror[h.edge().idx()]);
             let ge = m.face_halfedges(g).map(|h| h.edge());
             if !fe.iter().all(|e| ge.contains(e)) {
                 return Err(format!("ι maps the edges of {f} outside {g}"));

@@ -37,7 +37,9 @@ pub enum BoundaryError {
         root: u32,
     },
     /// Wrong number of targets.
-    #[error("{expected} targets expected (Θ_v/π at interior, φ_v/π at boundary vertices), got {got}")]
+    #[error(
+        "{expected} targets expected (Θ_v/π at interior, φ_v/π at boundary vertices), got {got}"
+    )]
     TargetCount {
         /// Vertices.
         expected: usize,
@@ -96,7 +98,11 @@ pub fn validate_boundary_targets(mesh: &Mesh, targets: &Targets) -> Result<(), B
         if *x <= 0 {
             return Err(BoundaryError::NonPositiveTarget {
                 vertex: v as u32,
-                kind: if on_boundary[v] { "boundary" } else { "interior" },
+                kind: if on_boundary[v] {
+                    "boundary"
+                } else {
+                    "interior"
+                },
                 over_pi: x.to_string(),
             });
         }
@@ -283,7 +289,11 @@ impl BoundaryUniformization {
         let seam = |e: Edge| d.edge_sheet[e.idx()] == Sheet::Seam;
         let mut inside = vec![false; m.n_faces()];
         let mut queue = VecDeque::new();
-        let n_m_faces = d.face_sheet.iter().filter(|s| **s == Sheet::Original).count();
+        let n_m_faces = d
+            .face_sheet
+            .iter()
+            .filter(|s| **s == Sheet::Original)
+            .count();
         for e in m.edges().filter(|&e| seam(e)) {
             for h in [e.side(0), e.side(1)] {
                 // In D, copy 1 keeps the face of the side that had one in M: face id < F.

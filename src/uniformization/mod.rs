@@ -9,9 +9,9 @@
 //! - [`targets`]: prescribed angles as exact multiples of π and Gauss–Bonnet.
 //! - [`boundary`]: surfaces with boundary (cone and boundary angles) by the double (B79).
 
+pub mod boundary;
 pub mod certificate;
 pub mod claim_form;
-pub mod boundary;
 pub mod components;
 pub mod dirichlet;
 pub mod dirichlet_certificate;

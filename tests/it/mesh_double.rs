@@ -41,7 +41,11 @@ fn b78_double_is_closed_with_twice_the_euler_characteristic() {
         );
         assert_eq!(
             (dm.n_vertices(), dm.n_edges(), dm.n_faces()),
-            (2 * m.n_vertices() - vb, 2 * m.n_edges() - eb, 2 * m.n_faces()),
+            (
+                2 * m.n_vertices() - vb,
+                2 * m.n_edges() - eb,
+                2 * m.n_faces()
+            ),
             "{name}"
         );
         // Copy 1 is M itself: same faces, same ids.
@@ -63,7 +67,11 @@ fn b78_mirror_is_an_orientation_reversing_involution_fixing_the_seam() {
         let lengths: Vec<usize> = (0..m.n_edges()).collect();
         let pulled = d.pull_back_edges(&lengths).unwrap();
         for e in d.mesh.edges() {
-            assert_eq!(pulled[e.idx()], pulled[d.edge_mirror[e.idx()].idx()], "{name}");
+            assert_eq!(
+                pulled[e.idx()],
+                pulled[d.edge_mirror[e.idx()].idx()],
+                "{name}"
+            );
         }
         assert!(d.pull_back_edges(&lengths[1..]).is_none(), "{name}");
 

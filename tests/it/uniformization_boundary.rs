@@ -112,7 +112,11 @@ fn b79_convex_polygon_with_its_own_angles_has_u_zero_certified() {
         // B79 (closed form): the binary64 lengths are within 2⁻⁵³ relative of the planar
         // ones, for which u = 0 is exact; 1e-12 bounds the resulting distance here.
         assert!(distance <= 1e-12, "seed {seed}: {distance:e}");
-        assert!(b.u.iter().all(|x| x.abs() <= 1e-9), "seed {seed}: {:?}", b.u);
+        assert!(
+            b.u.iter().all(|x| x.abs() <= 1e-9),
+            "seed {seed}: {:?}",
+            b.u
+        );
         // Negative control: the same u = 0 does not certify the targets π/3, 2π/3.
         let wrong = targets(&m, c, [(1, 3), (2, 3), (1, 3), (2, 3)]);
         let bw = solve(&m, &l, &wrong);
@@ -135,7 +139,11 @@ fn b79_grid_disk_to_other_corner_angles_moves_and_is_certified_symmetric() {
         panic!("{:?}", proof.outcome);
     };
     let bound = b79_asymmetry_bound(&b, &proof.data, distance);
-    assert!(b.mirror_asymmetry <= bound, "{:e} > {bound:e}", b.mirror_asymmetry);
+    assert!(
+        b.mirror_asymmetry <= bound,
+        "{:e} > {bound:e}",
+        b.mirror_asymmetry
+    );
     let umax = b.u.iter().fold(0.0f64, |a, x| a.max(x.abs()));
     assert!(umax > 0.05, "u = {:?}", b.u);
     // The boundary angle sums on copy 1 alone (numerical): the double's Θ = 2φ split
@@ -144,7 +152,11 @@ fn b79_grid_disk_to_other_corner_angles_moves_and_is_certified_symmetric() {
         let on_b = m.boundary_vertices();
         for (v, s) in sums.iter().enumerate() {
             let want = t.over_pi()[v].to_f64() * std::f64::consts::PI;
-            assert!((s - want).abs() <= 1e-8, "v{v}: {s} vs {want} ({})", on_b[v]);
+            assert!(
+                (s - want).abs() <= 1e-8,
+                "v{v}: {s} vs {want} ({})",
+                on_b[v]
+            );
         }
     }
     // Negative control: the same certified u does not certify the right-angle targets.
@@ -187,7 +199,9 @@ fn b79_asymmetric_targets_on_the_double_break_the_symmetry() {
 fn b79_gauss_bonnet_with_boundary_is_decided_exactly() {
     let (m, _, c) = jittered_grid(3, 3, 1);
     assert!(validate_boundary_targets(&m, &targets(&m, c, [(1, 2); 4])).is_ok());
-    assert!(validate_boundary_targets(&m, &targets(&m, c, [(1, 3), (2, 3), (1, 3), (2, 3)])).is_ok());
+    assert!(
+        validate_boundary_targets(&m, &targets(&m, c, [(1, 3), (2, 3), (1, 3), (2, 3)])).is_ok()
+    );
     // Violations: one corner off by 1/1000 of π; a boundary vertex given 2π as if interior.
     let off = targets(&m, c, [(1, 2), (1, 2), (1, 2), (501, 1000)]);
     assert!(matches!(
@@ -204,7 +218,10 @@ fn b79_gauss_bonnet_with_boundary_is_decided_exactly() {
     q[bv] = Rational::from(0);
     assert!(matches!(
         validate_boundary_targets(&m, &Targets::from_multiples_of_pi(q)),
-        Err(BoundaryError::NonPositiveTarget { kind: "boundary", .. })
+        Err(BoundaryError::NonPositiveTarget {
+            kind: "boundary",
+            ..
+        })
     ));
     assert!(matches!(
         validate_boundary_targets(&m, &Targets::flat(3)),
@@ -260,13 +277,23 @@ fn b79_cli_uniformize_a_disk_certifies_the_double() {
     let svg = d.join("disk.svg").display().to_string();
     let tfs = tf.display().to_string();
     let out = penner(&[
-        "uniformize", &surf, "--targets", &tfs, "--svg", &svg, "-o", &cert,
+        "uniformize",
+        &surf,
+        "--targets",
+        &tfs,
+        "--svg",
+        &svg,
+        "-o",
+        &cert,
     ]);
     let so = text(&out.stdout);
     assert_eq!(out.status.code(), Some(0), "{so}{}", text(&out.stderr));
     assert!(so.contains("certified on the double"), "{so}");
     assert!(so.contains("seam intact"), "{so}");
-    assert!(so.contains("0 faces not certified counterclockwise"), "{so}");
+    assert!(
+        so.contains("0 faces not certified counterclockwise"),
+        "{so}"
+    );
     let out = penner(&["certify", &cert]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stdout));
     // --flat: 2π inside, the curvature spread over the boundary.
@@ -295,7 +322,11 @@ fn b79_cli_uniformize_a_disk_certifies_the_double() {
     );
     assert!(!cert3.exists());
     // Wrong count of targets.
-    std::fs::write(&bad.with_extension("short.json"), format!("[{}]", list[..n - 1].join(","))).unwrap();
+    std::fs::write(
+        &bad.with_extension("short.json"),
+        format!("[{}]", list[..n - 1].join(",")),
+    )
+    .unwrap();
     let out = penner(&[
         "uniformize",
         &surf,
