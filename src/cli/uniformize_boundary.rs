@@ -220,7 +220,7 @@ fn write_svg(path: &Path, b: &BoundaryUniformization) -> Result<String, CliError
     let folds = orientations
         .iter()
         .enumerate()
-        .filter(|(f, _)| region.as_ref().map_or(true, |k| k[*f]))
+        .filter(|(f, _)| region.as_ref().is_none_or(|k| k[*f]))
         .filter(|(_, o)| o.as_ref().and_then(Certified::value) != Some(Sign::Positive))
         .count();
     let picture = render_layout_svg(&sol.mesh, &layout);

@@ -81,14 +81,15 @@ impl Double {
     /// assert!(d.mesh.is_closed());
     /// assert_eq!(d.mesh.euler_characteristic(), 2 * disk.euler_characteristic());
     /// ```
+    #[allow(clippy::too_many_lines)] // the glued arrays, then the maps, in order
     pub fn of(mesh: &Mesh) -> Result<Double, DoubleError> {
         let (nv, ne, nf) = (mesh.n_vertices(), mesh.n_edges(), mesh.n_faces());
         let on_boundary = mesh.boundary_vertices();
         // Mirror ids.
         let mut vertex_mirror: Vec<u32> = Vec::with_capacity(2 * nv);
         let mut extra_vertices = Vec::new();
-        for v in 0..nv {
-            if on_boundary[v] {
+        for (v, &on) in on_boundary.iter().enumerate() {
+            if on {
                 vertex_mirror.push(v as u32);
             } else {
                 vertex_mirror.push((nv + extra_vertices.len()) as u32);
@@ -281,7 +282,7 @@ impl Double {
             let fe = m
                 .face_halfedges(f)
                 .map(|h| self.edge_mirror[h.edge().idx()]);
-            let ge = m.face_halfedges(g).map(|h| h.edge());
+            let ge = m.face_halfedges(g).map(HalfEdge::edge);
             if !fe.iter().all(|e| ge.contains(e)) {
                 return Err(format!("ι maps the edges of {f} outside {g}"));
             }

@@ -147,7 +147,7 @@ pub fn flat_with_even_boundary(mesh: &Mesh) -> Targets {
         let phi = Rational::from(1) - Rational::from((2 * chi, n_b as i64));
         for v in comps.vertices_of(c) {
             if on_boundary[v] {
-                q[v] = phi.clone();
+                q[v].clone_from(&phi);
             }
         }
     }

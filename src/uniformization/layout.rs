@@ -83,7 +83,7 @@ pub fn unfold(mesh: &Mesh, lengths: &[f64], root: Face) -> Layout {
 /// [`unfold`] over the faces with `keep[f]` only (all faces for `None`): the layout of a
 /// region, never crossing into a face outside it (e.g. copy 1 of a double, B79).
 pub fn unfold_within(mesh: &Mesh, lengths: &[f64], root: Face, keep: Option<&[bool]>) -> Layout {
-    let kept = |f: Face| keep.map_or(true, |k| k.get(f.idx()).copied().unwrap_or(false));
+    let kept = |f: Face| keep.is_none_or(|k| k.get(f.idx()).copied().unwrap_or(false));
     let mut corner: Vec<Option<[f64; 2]>> = vec![None; mesh.n_halfedges()];
     let mut parent = vec![None; mesh.n_faces()];
     let mut seen = vec![false; mesh.n_faces()];

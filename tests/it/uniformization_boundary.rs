@@ -323,7 +323,7 @@ fn b79_cli_uniformize_a_disk_certifies_the_double() {
     assert!(!cert3.exists());
     // Wrong count of targets.
     std::fs::write(
-        &bad.with_extension("short.json"),
+        bad.with_extension("short.json"),
         format!("[{}]", list[..n - 1].join(",")),
     )
     .unwrap();
