@@ -91,12 +91,14 @@ pub enum Command {
     /// Discrete uniformization with Ptolemy flips: solve θ(u) = Θ, refine, certify (T24, B71)
     /// and write the certificate as a `uniformization` claim for `penner certify`.
     Uniformize {
-        /// The surface file (closed; JSON, OBJ or OFF).
+        /// The surface file (JSON, OBJ or OFF); with boundary it is solved on its double.
         surface: PathBuf,
-        /// Target cone angles: a JSON array with Θ_i/π per vertex (exact strings or numbers).
+        /// Target cone angles: a JSON array with Θ_i/π per vertex (exact strings or numbers);
+        /// on a surface with boundary, φ_v/π (the boundary angle sum) at boundary vertices.
         #[arg(long, value_name = "FILE")]
         targets: Option<PathBuf>,
-        /// Flat targets (Θ_i = 2π; tori).
+        /// Flat targets (Θ_i = 2π; tori); with boundary, 2π inside and the boundary
+        /// curvature 2πχ spread evenly over the boundary vertices of each component.
         #[arg(long)]
         flat: bool,
         /// Refinement and certificate precision: f64, dd, or MPFR bits.

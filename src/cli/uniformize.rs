@@ -48,7 +48,7 @@ fn bits_and_tolerance(p: &str) -> Result<(u32, f64), CliError> {
     }
 }
 
-fn read_targets(path: &Path, n: usize) -> Result<Targets, CliError> {
+pub(super) fn read_targets(path: &Path, n: usize) -> Result<Targets, CliError> {
     let shown = path.display().to_string();
     let text = read_text(path)?;
     let v: serde_json::Value = serde_json::from_str(&text)
@@ -101,7 +101,7 @@ fn scaled_input(case: FlipCase) -> (penner::mesh::Mesh, Vec<f64>, i64) {
 /// `--precision dd`: refine in double-double (residuals in `Dd`, the `f64` factor), then
 /// certify the double-double `u` (taken exactly) at `bits` of MPFR interval arithmetic:
 /// double-double has no directed rounding, so it cannot carry the proof itself.
-fn prove_dd(
+pub(super) fn prove_dd(
     sol: &penner::uniformization::Uniformization,
     bits: u32,
     tolerance: f64,
@@ -123,6 +123,17 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     let (mesh, lengths, shift) = scaled_input(case);
     if o.extra.sphere {
         return super::uniformize_sphere::run(&shown, &mesh, &lengths, o.output, o.extra);
+    }
+    if !mesh.is_closed() {
+        let input = super::uniformize_boundary::Input {
+            shown: &shown,
+            mesh: &mesh,
+            lengths: &lengths,
+            shift,
+            bits,
+            tolerance,
+        };
+        return super::uniformize_boundary::run(&input, o);
     }
     let targets =
         match (o.targets, o.flat) {

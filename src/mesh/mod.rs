@@ -11,6 +11,7 @@
 mod build;
 pub mod builders;
 mod circulate;
+pub mod double;
 mod flip;
 mod ids;
 mod invariants;

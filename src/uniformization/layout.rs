@@ -77,10 +77,17 @@ impl Layout {
 /// Unfold `mesh` with edge `lengths` from face `root` (its first half-edge on the positive
 /// x-axis from the origin), breadth first over the dual graph.
 pub fn unfold(mesh: &Mesh, lengths: &[f64], root: Face) -> Layout {
+    unfold_within(mesh, lengths, root, None)
+}
+
+/// [`unfold`] over the faces with `keep[f]` only (all faces for `None`): the layout of a
+/// region, never crossing into a face outside it (e.g. copy 1 of a double, B79).
+pub fn unfold_within(mesh: &Mesh, lengths: &[f64], root: Face, keep: Option<&[bool]>) -> Layout {
+    let kept = |f: Face| keep.is_none_or(|k| k.get(f.idx()).copied().unwrap_or(false));
     let mut corner: Vec<Option<[f64; 2]>> = vec![None; mesh.n_halfedges()];
     let mut parent = vec![None; mesh.n_faces()];
     let mut seen = vec![false; mesh.n_faces()];
-    if root.idx() >= mesh.n_faces() || lengths.len() != mesh.n_edges() {
+    if root.idx() >= mesh.n_faces() || lengths.len() != mesh.n_edges() || !kept(root) {
         return Layout { corner, parent };
     }
     let len = |h: HalfEdge| lengths[h.edge().idx()];
@@ -98,7 +105,7 @@ pub fn unfold(mesh: &Mesh, lengths: &[f64], root: Face) -> Layout {
         for h in mesh.face_halfedges(f) {
             let t = h.twin();
             let Some(g) = mesh.face(t) else { continue };
-            if seen[g.idx()] {
+            if seen[g.idx()] || !kept(g) {
                 continue;
             }
             let (Some(p), Some(q)) = (corner[mesh.next(h).idx()], corner[h.idx()]) else {

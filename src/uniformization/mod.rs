@@ -7,8 +7,10 @@
 //! - [`refine`]: mixed-precision refinement (residuals in `Dd` or MPFR, `f64` factor);
 //! - [`certificate`]: an a-posteriori existence proof near a computed `u` (B70, B71);
 //! - [`targets`]: prescribed angles as exact multiples of π and Gauss–Bonnet.
+//! - [`boundary`]: surfaces with boundary (cone and boundary angles) by the double (B79).
 
 pub(crate) mod cell_boundary;
+pub mod boundary;
 pub mod certificate;
 pub mod claim_form;
 pub mod components;
