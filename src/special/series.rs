@@ -331,7 +331,7 @@ mod tests {
 
     #[test]
     fn b28_graded_beta_is_a_lower_bound_of_log2_one_over_theta() {
-        for th in [0.117, 0.1, 0.0625, 0.03, 1e-5, 1e-300] {
+        for th in [0.117_f64, 0.1, 0.0625, 0.03, 1e-5, 1e-300] {
             let theta = Float::with_val(64, th);
             let beta = graded_beta(&theta);
             assert!(f64::from(beta) <= -th.log2(), "θ = {th}: β = {beta}");
