@@ -6,7 +6,12 @@
 //! lengths `λ̃` (computed once, outside the timing, as a Newton step would keep them);
 //! `pattern_reused` times the same with the Hessian's sparsity pattern built once, and
 //! `gradient_hessian` without `E` (no Lobachevsky function), `fast_f64` the binary64 pass
-//! of `variational::fast_f64` (each corner angle once, proofs/B88).
+//! of `variational::fast_f64` (each corner angle once, proofs/B88), `fast_mpfr` its MPFR
+//! counterpart `variational::fast_mpfr` (proofs/B29) at 128 and 256 bits.
+//!
+//! After the group, the ratios Dd/f64 and MPFR-256/f64 of `energy_gradient_hessian` (and
+//! of the one-pass kernels) are printed from criterion's estimates of this run (the mean
+//! of each id, read from `target/criterion`; an id filtered out is skipped).
 //!
 //! Run: `cargo bench --bench energy -- --measurement-time 5 --warm-up-time 1`.
 //! `PENNER_BENCH_FACES_GRID=NU,NV` picks another grid (2·NU·NV faces).
@@ -27,6 +32,7 @@ use penner::variational::energy::{
     energy_gradient_hessian_at, energy_gradient_hessian_with, gradient_at, hessian_at, log_lengths,
 };
 use penner::variational::fast_f64::energy_gradient_hessian_f64;
+use penner::variational::fast_mpfr::energy_gradient_hessian_mpfr;
 use penner::variational::pattern::HessianPattern;
 use penner::variational::triangle::angles_from_log_lengths;
 use std::hint::black_box;
@@ -65,6 +71,18 @@ fn run<T: Real + 'static>(
         g.bench_function(BenchmarkId::new("fast_f64", name), |b| {
             b.iter(|| {
                 let p = energy_gradient_hessian_f64(&pattern, mesh, black_box(lt64), &u64, &t64);
+                black_box(p.energy)
+            });
+        });
+    }
+    if let (Some(ltm), Some(um), Some(tm)) = (
+        (&lt as &dyn std::any::Any).downcast_ref::<Vec<Mpfr>>(),
+        (&u as &dyn std::any::Any).downcast_ref::<Vec<Mpfr>>(),
+        (&t as &dyn std::any::Any).downcast_ref::<Vec<Mpfr>>(),
+    ) {
+        g.bench_function(BenchmarkId::new("fast_mpfr", name), |b| {
+            b.iter(|| {
+                let p = energy_gradient_hessian_mpfr(&pattern, mesh, black_box(ltm), um, tm);
                 black_box(p.energy)
             });
         });
@@ -121,9 +139,52 @@ fn bench_energy(c: &mut Criterion) {
     });
     run::<f64>(&mut g, "f64", &mesh, &len, ());
     run::<Dd>(&mut g, "dd", &mesh, &len, ());
-    let p = Precision::new(256).expect("valid precision");
-    run::<Mpfr>(&mut g, "mpfr-256", &mesh, &len, p);
+    for bits in [128u64, 256] {
+        let p = Precision::new(bits).expect("valid precision");
+        run::<Mpfr>(&mut g, &format!("mpfr-{bits}"), &mesh, &len, p);
+    }
+    let group = format!("energy_{}_faces", mesh.n_faces());
     g.finish();
+    print_ratios(&group);
+}
+
+/// The mean time of `group/function/value` in this run, from criterion's
+/// `new/estimates.json` (nanoseconds), or `None` when it was not measured.
+fn mean_ns(group: &str, function: &str, value: &str) -> Option<f64> {
+    let target = std::env::var("CARGO_TARGET_DIR").unwrap_or_else(|_| "target".into());
+    let path = std::path::Path::new(&target)
+        .join("criterion")
+        .join(group)
+        .join(function)
+        .join(value)
+        .join("new/estimates.json");
+    let text = std::fs::read_to_string(path).ok()?;
+    let json: serde_json::Value = serde_json::from_str(&text).ok()?;
+    json["mean"]["point_estimate"].as_f64()
+}
+
+/// Prints the ratios of issue 13: each backend's `E + ∇E + H` over `f64`'s.
+fn print_ratios(group: &str) {
+    let Some(base) = mean_ns(group, "energy_gradient_hessian", "f64") else {
+        return;
+    };
+    println!(
+        "ratios over energy_gradient_hessian/f64 ({:.3} ms):",
+        base / 1e6
+    );
+    for (function, value) in [
+        ("cone_angles", "f64"),
+        ("fast_f64", "f64"),
+        ("energy_gradient_hessian", "dd"),
+        ("energy_gradient_hessian", "mpfr-128"),
+        ("energy_gradient_hessian", "mpfr-256"),
+        ("fast_mpfr", "mpfr-128"),
+        ("fast_mpfr", "mpfr-256"),
+    ] {
+        if let Some(t) = mean_ns(group, function, value) {
+            println!("  {function}/{value}: {:.3} ms, {:.1}×", t / 1e6, t / base);
+        }
+    }
 }
 
 fn benches() {

@@ -32,6 +32,26 @@ pub(crate) struct Table {
     pub pi: (Float, Float),
     /// log 2 rounded down and up.
     pub ln2: (Float, Float),
+    /// The point-evaluation coefficients (`a_lo`, `b_hi`) rounded to nearest at each
+    /// precision of [`NEAR_TIERS`] below `prec` (proofs/B28), for MPFR's one- to
+    /// three-limb fast paths.
+    pub near_tiers: Vec<NearTier>,
+}
+
+/// Precisions of the graded Horner levels below the working precision: one bit below one,
+/// two and three limbs, where MPFR multiplies and adds operands of equal precision without
+/// its general code path (proofs/B28).
+pub(crate) const NEAR_TIERS: [u32; 3] = [63, 127, 191];
+
+/// The point-evaluation coefficients at one precision of [`NEAR_TIERS`].
+#[derive(Debug)]
+pub(crate) struct NearTier {
+    /// Bits of every entry.
+    pub prec: u32,
+    /// `a_lo` rounded to nearest at `prec`.
+    pub a: Vec<Float>,
+    /// `b_hi` rounded to nearest at `prec`.
+    pub b: Vec<Float>,
 }
 
 /// Working precisions are rounded up to a multiple of this, so that tables are shared.
@@ -63,6 +83,7 @@ fn build(prec: u32) -> Table {
             Float::with_val_round(prec, Constant::Log2, Round::Up).0,
         ),
         pi: (pi_lo, pi_hi),
+        near_tiers: Vec::new(),
     };
     for n in 1..=len as u32 {
         pow_lo = Float::with_val_round(prec, &pow_lo * &pi2_lo, Round::Down).0;
@@ -83,6 +104,23 @@ fn build(prec: u32) -> Table {
         table.b_lo.push(b_lo);
         table.b_hi.push(b_hi);
     }
+    table.near_tiers = NEAR_TIERS
+        .iter()
+        .filter(|&&bits| bits < prec)
+        .map(|&bits| NearTier {
+            prec: bits,
+            a: table
+                .a_lo
+                .iter()
+                .map(|c| Float::with_val(bits, c))
+                .collect(),
+            b: table
+                .b_hi
+                .iter()
+                .map(|c| Float::with_val(bits, c))
+                .collect(),
+        })
+        .collect();
     table
 }
 

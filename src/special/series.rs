@@ -12,7 +12,8 @@
 
 use super::coefficients::Table;
 use rug::float::Round;
-use rug::Float;
+use rug::ops::{AddAssignRound, MulAssignRound};
+use rug::{Assign, Float};
 
 /// A rounding direction of one bound: down, up, or to nearest (point evaluation).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -102,15 +103,103 @@ pub(crate) fn tail_bound(h: &Float, e: Expansion, t: &Table, n: usize) -> Option
     Some(Float::with_val_round(p, &tau * h, Round::Up).0)
 }
 
-/// `Σ_{n=1}^{N} c_n sⁿ` by Horner, every coefficient and `s` positive, rounded `dir`.
+/// `Σ_{n=1}^{N} c_n sⁿ` by Horner, every coefficient and `s` positive, rounded `dir`, in
+/// place (one accumulator, no allocation per operation).
 fn horner(coeffs: &[Float], s: &Float, dir: Dir, p: u32) -> Float {
     let r = dir.round();
-    let mut acc = coeffs[coeffs.len() - 1].clone();
+    let mut acc = Float::with_val_round(p, &coeffs[coeffs.len() - 1], r).0;
     for c in coeffs[..coeffs.len() - 1].iter().rev() {
-        let prod = Float::with_val_round(p, &acc * s, r).0;
-        acc = Float::with_val_round(p, &prod + c, r).0;
+        acc.mul_assign_round(s, r);
+        acc.add_assign_round(c, r);
     }
-    Float::with_val_round(p, &acc * s, r).0
+    acc.mul_assign_round(s, r);
+    acc
+}
+
+/// Guard bits of the graded Horner evaluation: level `k` runs at `p + G − ⌊kβ⌋` bits
+/// (proof: B28).
+pub(crate) const GRADED_GUARD_BITS: u32 = 8;
+
+/// `β = ⌊log₂(1/θ)⌋` for the graded evaluation, from `θ` rounded up: `2^(−β) ≥ θ`, so
+/// `θ^k·2^(kβ) ≤ 1` (proof: B28). 0 when `θ` is not below 1/2.
+fn graded_beta(theta: &Float) -> u32 {
+    // θ = m·2ᵉ, m ∈ [1/2, 1): θ < 2ᵉ, so log₂(1/θ) > −e; ⌊·⌋ ≥ −e. The exponent alone is
+    // a lower bound off by less than one bit per level; the f64 logarithm refines it with
+    // a margin of 2⁻²⁰ for its own rounding.
+    let Some(e) = theta.get_exp() else {
+        return 0;
+    };
+    let from_exp = (-i64::from(e)).max(0);
+    let refined = -theta.to_f64_round(Round::Up).log2() - 1.0 / 1048576.0;
+    let beta = if refined.is_finite() && refined >= from_exp as f64 {
+        refined.floor() as i64
+    } else {
+        from_exp
+    };
+    beta.clamp(0, 1 << 20) as u32
+}
+
+/// `Σ_{n=1}^{N} c_n sⁿ` to nearest by Horner with graded precision (proofs/B28): the
+/// accumulator of level `k` (`c_k + s·acc_{k+1}`, weighted by `s^k ≤ θ^k`-sized terms in
+/// the sum) needs `p_k = p + G − ⌊kβ⌋` bits and runs at the smallest tier of `tiers`
+/// (precisions below `p`, with `c_k` and `s` rounded to it) holding `p_k`, or at `p` with
+/// the exact `c_k` and `s`; precision only grows outward (levels are evaluated from `N`
+/// down to 1), so one allocation of `p` bits serves all levels.
+fn horner_graded(
+    coeffs: &[Float],
+    tiers: &[(u32, &[Float])],
+    s: &Float,
+    beta: u32,
+    p: u32,
+) -> Float {
+    let needed = |k: usize| -> u64 {
+        let drop = (k as u64).saturating_mul(u64::from(beta));
+        (u64::from(p) + u64::from(GRADED_GUARD_BITS)).saturating_sub(drop)
+    };
+    // The tier of level k: an index into `tiers`, or None for full precision.
+    let tier_of = |k: usize| -> Option<usize> {
+        tiers
+            .iter()
+            .position(|&(bits, _)| u64::from(bits) >= needed(k))
+    };
+    let s_tiers: Vec<Float> = tiers
+        .iter()
+        .map(|&(bits, _)| Float::with_val(bits, s))
+        .collect();
+    let n = coeffs.len();
+    let mut acc = Float::new(p);
+    let mut current = tier_of(n);
+    match current {
+        Some(i) => {
+            acc.set_prec(tiers[i].0);
+            acc.assign(&tiers[i].1[n - 1]);
+        }
+        None => acc.assign(&coeffs[n - 1]),
+    }
+    for k in (1..n).rev() {
+        let tier = tier_of(k);
+        if tier != current {
+            // Raising the precision is exact (mpfr_prec_round to more bits); the
+            // allocation of `p` bits made above is kept, so no level reallocates.
+            acc.set_prec(tier.map_or(p, |i| tiers[i].0));
+            current = tier;
+        }
+        match tier {
+            Some(i) => {
+                acc.mul_assign_round(&s_tiers[i], Round::Nearest);
+                acc.add_assign_round(&tiers[i].1[k - 1], Round::Nearest);
+            }
+            None => {
+                acc.mul_assign_round(s, Round::Nearest);
+                acc.add_assign_round(&coeffs[k - 1], Round::Nearest);
+            }
+        }
+    }
+    if current.is_some() {
+        acc.set_prec(p);
+    }
+    acc.mul_assign_round(s, Round::Nearest);
+    acc
 }
 
 /// One bound (`dir`) of the truncated series (`N` terms, no tail) over `0 < l ≤ t ≤ h`:
@@ -123,7 +212,19 @@ pub(crate) fn bound(l: &Float, h: &Float, e: Expansion, dir: Dir, t: &Table, n: 
         Expansion::AtZero => {
             let s = Float::with_val_round(p, tt.square_ref(), dir.round()).0;
             let coeffs = if dir == Dir::Up { &t.a_hi } else { &t.a_lo };
-            let poly = horner(&coeffs[..n], &s, dir, p);
+            let poly = if dir == Dir::Near {
+                let tiers: Vec<(u32, &[Float])> =
+                    t.near_tiers.iter().map(|x| (x.prec, &x.a[..n])).collect();
+                horner_graded(
+                    &coeffs[..n],
+                    &tiers,
+                    &s,
+                    graded_beta(&theta_up(tt, e, t)),
+                    p,
+                )
+            } else {
+                horner(&coeffs[..n], &s, dir, p)
+            };
             let two = Float::with_val(other.prec(), other << 1u32);
             let lg = Float::with_val_round(p, two.ln_ref(), dir.opposite().round()).0;
             let one_minus = Float::with_val_round(p, 1 - &lg, dir.round()).0;
@@ -134,7 +235,19 @@ pub(crate) fn bound(l: &Float, h: &Float, e: Expansion, dir: Dir, t: &Table, n: 
             // The lower bound of g takes Q at the high end and log 2 rounded down.
             let s_q = Float::with_val_round(p, other.square_ref(), dir.opposite().round()).0;
             let coeffs = if dir == Dir::Up { &t.b_lo } else { &t.b_hi };
-            let poly = horner(&coeffs[..n], &s_q, dir.opposite(), p);
+            let poly = if dir == Dir::Near {
+                let tiers: Vec<(u32, &[Float])> =
+                    t.near_tiers.iter().map(|x| (x.prec, &x.b[..n])).collect();
+                horner_graded(
+                    &coeffs[..n],
+                    &tiers,
+                    &s_q,
+                    graded_beta(&theta_up(other, e, t)),
+                    p,
+                )
+            } else {
+                horner(&coeffs[..n], &s_q, dir.opposite(), p)
+            };
             let ln2 = if dir == Dir::Up { &t.ln2.1 } else { &t.ln2.0 };
             let inner = Float::with_val_round(p, ln2 - &poly, dir.round()).0;
             Float::with_val_round(p, &inner * tt, dir.round()).0
@@ -145,4 +258,89 @@ pub(crate) fn bound(l: &Float, h: &Float, e: Expansion, dir: Dir, t: &Table, n: 
 /// The number of terms for `t ≤ h` in expansion `e`.
 pub(crate) fn terms_for_bound(h: &Float, e: Expansion, t: &Table) -> usize {
     terms(&theta_up(h, e, t), t)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::coefficients::table;
+    use super::*;
+
+    /// `|graded − ref|` and B28's bound `2^(−q)·(4S + 6·2^(−G))` for the polynomial of
+    /// expansion `e` at `t` (`S` the reference sum, evaluated at `q + 128` bits on the same
+    /// `q`-bit coefficients and the same `s`, so only rounding is measured).
+    fn graded_error(t_f: f64, e: Expansion, q: u32, beta_extra: u32) -> (Float, Float) {
+        let tab = table(q);
+        let t = Float::with_val(q, t_f);
+        let s = Float::with_val(q, t.square_ref());
+        let n = terms_for_bound(&t, e, &tab);
+        let (coeffs, tiers): (&[Float], Vec<(u32, &[Float])>) = match e {
+            Expansion::AtZero => (
+                &tab.a_lo[..n],
+                tab.near_tiers.iter().map(|x| (x.prec, &x.a[..n])).collect(),
+            ),
+            Expansion::AtHalfPi => (
+                &tab.b_hi[..n],
+                tab.near_tiers.iter().map(|x| (x.prec, &x.b[..n])).collect(),
+            ),
+        };
+        let beta = graded_beta(&theta_up(&t, e, &tab)) + beta_extra;
+        let graded = horner_graded(coeffs, &tiers, &s, beta, q);
+        let wide = q + 128;
+        let s_wide = Float::with_val(wide, &s);
+        let reference = horner(coeffs, &s_wide, Dir::Near, wide);
+        let err = Float::with_val(wide, &graded - &reference).abs();
+        // proof: B28 — (2·1.306 + 1)·S at q bits, 5.62·2^(−G) for the graded levels.
+        let graded_part = 6.0 * (-f64::from(GRADED_GUARD_BITS)).exp2();
+        let bound = Float::with_val(wide, &reference * 4u32) + graded_part;
+        (err, bound >> q)
+    }
+
+    fn samples(e: Expansion) -> Vec<f64> {
+        let r = e.radius();
+        let mut v: Vec<f64> = (1..=60).map(|i| r * f64::from(i) / 60.0).collect();
+        v.extend([1e-3, 1e-9, 1e-30, 2f64.powi(-200), r]);
+        v
+    }
+
+    #[test]
+    fn b28_graded_horner_within_bound_of_wide_evaluation() {
+        for q in [128, 320, 576, 1088] {
+            for e in [Expansion::AtZero, Expansion::AtHalfPi] {
+                for t in samples(e) {
+                    let (err, bound) = graded_error(t, e, q, 0);
+                    assert!(err <= bound, "q = {q}, {e:?}, t = {t:e}: {err} > {bound}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn b28_negative_control_overstated_beta_is_rejected() {
+        // β two bits per level too large drops precision faster than the terms shrink: the
+        // same bound rejects it somewhere on each grid.
+        for q in [320, 576] {
+            for e in [Expansion::AtZero, Expansion::AtHalfPi] {
+                let rejected = samples(e).into_iter().any(|t| {
+                    let (err, bound) = graded_error(t, e, q, 2);
+                    err > bound
+                });
+                assert!(rejected, "q = {q}, {e:?}: an overstated β went unnoticed");
+            }
+        }
+    }
+
+    #[test]
+    fn b28_graded_beta_is_a_lower_bound_of_log2_one_over_theta() {
+        for th in [0.117_f64, 0.1, 0.0625, 0.03, 1e-5, 1e-300] {
+            let theta = Float::with_val(64, th);
+            let beta = graded_beta(&theta);
+            assert!(f64::from(beta) <= -th.log2(), "θ = {th}: β = {beta}");
+            assert!(
+                f64::from(beta) > -th.log2() - 1.0,
+                "θ = {th}: β = {beta} too small"
+            );
+        }
+        // Negative control: θ ≥ 1/2 gives no drop at all.
+        assert_eq!(graded_beta(&Float::with_val(64, 0.75)), 0);
+    }
 }

@@ -13,6 +13,7 @@
 
 pub mod energy;
 pub mod fast_f64;
+pub mod fast_mpfr;
 pub mod hyperbolic;
 pub mod pattern;
 pub mod triangle;

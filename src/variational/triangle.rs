@@ -29,7 +29,7 @@
 
 use crate::geometry::triangle::{corner_angle, cot_opposite, kahan_area};
 use crate::predicates::tolerance::sign_exact;
-use crate::scalar::{Dd, Real, Sign};
+use crate::scalar::{Dd, Mpfr, Real, Sign};
 use crate::special::lobachevsky;
 use std::any::Any;
 
@@ -46,8 +46,8 @@ pub enum Shape {
 }
 
 /// The sign of a computed value: exactly on the stored number for point backends
-/// ([`sign_exact`]; for `f64` and `Dd` read from the leading word, the same answer without
-/// forming the rational); for enclosures ([`Real::is_point`] false) from the validity of the
+/// ([`sign_exact`]; for `f64` and `Dd` read from the leading word, for `Mpfr` from the
+/// float, the same answer without forming the rational); for enclosures ([`Real::is_point`] false) from the validity of the
 /// enclosure's square roots, which is decided on its bounds (`√x` is a valid enclosure iff
 /// its lower bound is `≥ 0`): positive when `√x` is valid and `√(−x)` is not, negative in
 /// the mirror case, `None` otherwise.
@@ -59,6 +59,15 @@ fn sign_of<T: Real>(x: &T) -> Option<Sign> {
     if let Some(v) = any.downcast_ref::<Dd>() {
         // Normalized: `hi = RN(hi + lo)` has the sign of the value, and is 0 only for 0.
         return sign_of_word(v.hi);
+    }
+    if let Some(v) = any.downcast_ref::<Mpfr>() {
+        // The stored float's own sign: exact, without forming the rational (`None` for
+        // NaN and ±∞, as `sign_exact`).
+        return if v.0.is_finite() {
+            v.0.cmp0().map(Sign::of_ordering)
+        } else {
+            None
+        };
     }
     if T::is_point() {
         return sign_exact(x);
