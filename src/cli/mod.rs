@@ -13,6 +13,7 @@ mod pack_maximal;
 mod replay;
 mod report;
 mod uniformize;
+mod uniformize_hyperbolic;
 mod uniformize_sphere;
 mod uniformize_svg;
 

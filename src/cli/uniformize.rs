@@ -48,7 +48,7 @@ fn bits_and_tolerance(p: &str) -> Result<(u32, f64), CliError> {
     }
 }
 
-fn read_targets(path: &Path, n: usize) -> Result<Targets, CliError> {
+pub(super) fn read_targets(path: &Path, n: usize) -> Result<Targets, CliError> {
     let shown = path.display().to_string();
     let text = read_text(path)?;
     let v: serde_json::Value = serde_json::from_str(&text)
@@ -120,6 +120,9 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     let (bits, tolerance) = bits_and_tolerance(o.precision)?;
     let shown = o.path.display().to_string();
     let case = load_flip_case(o.path)?;
+    if o.extra.hyperbolic {
+        return super::uniformize_hyperbolic::run(&shown, &case, o, bits, tolerance);
+    }
     let (mesh, lengths, shift) = scaled_input(case);
     if o.extra.sphere {
         return super::uniformize_sphere::run(&shown, &mesh, &lengths, o.output, o.extra);

@@ -73,6 +73,7 @@ mod tie_claims;
 mod tolerance_range;
 mod tolerance_tightness;
 mod uniformization;
+mod uniformization_hyperbolic;
 mod uniformization_layout;
 mod uniformization_speed;
 mod uniformization_sphere;
