@@ -60,7 +60,10 @@ pub fn run(
     };
     let (u, refined): (Vec<Rational>, f64) = match o.precision {
         "f64" => (
-            sol.u.iter().filter_map(|&x| Rational::from_f64(x)).collect(),
+            sol.u
+                .iter()
+                .filter_map(|&x| Rational::from_f64(x))
+                .collect(),
             sol.residual_max,
         ),
         "dd" => {
@@ -76,11 +79,7 @@ pub fn run(
             (u, r.residual_max())
         }
     };
-    let _ = writeln!(
-        out,
-        "refined ({}): max |Θ − θ| = {refined:e}",
-        o.precision
-    );
+    let _ = writeln!(out, "refined ({}): max |Θ − θ| = {refined:e}", o.precision);
     let cert = certify_hyperbolic(&sol, &u, bits).map_err(bad)?;
     let _ = writeln!(
         out,

@@ -307,7 +307,8 @@ fn evaluate(mesh: &Mesh, lambda0: &[f64], u: &[f64], theta: &[f64]) -> Result<Ev
     let mut t2 = vec![0.0; mesh.n_halfedges()];
     for f in mesh.faces() {
         let hs = mesh.face_halfedges(f);
-        let lam = hs.map(|h| lambda0[h.edge().idx()] + u[mesh.tail(h).idx()] + u[mesh.tip(h).idx()]);
+        let lam =
+            hs.map(|h| lambda0[h.edge().idx()] + u[mesh.tail(h).idx()] + u[mesh.tip(h).idx()]);
         let terms = face_terms(lam).ok_or(f.0)?;
         for m in 0..3 {
             sum[mesh.tail(hs[(m + 2) % 3]).idx()] += terms.angles[m];
@@ -365,8 +366,8 @@ pub fn uniformize_hyperbolic(
     let assembly = Assembly::new(mesh);
     let mut cache = CholeskyCache::default();
     let mut steps = Vec::new();
-    let finish = |u: Vec<f64>, grad: &[f64], steps, stop, cache: &CholeskyCache| {
-        HyperbolicUniformization {
+    let finish =
+        |u: Vec<f64>, grad: &[f64], steps, stop, cache: &CholeskyCache| HyperbolicUniformization {
             mesh: mesh.clone(),
             lengths: lengths.to_vec(),
             u,
@@ -375,11 +376,16 @@ pub fn uniformize_hyperbolic(
             stop,
             residual_max: max_abs(grad),
             factorizations: (cache.symbolic_count, cache.numeric_count),
-        }
-    };
+        };
     for iteration in 1..=opts.max_iterations + 1 {
         if max_abs(&ev.grad) <= opts.tolerance {
-            return Ok(finish(u, &ev.grad, steps, HyperbolicStop::Converged, &cache));
+            return Ok(finish(
+                u,
+                &ev.grad,
+                steps,
+                HyperbolicStop::Converged,
+                &cache,
+            ));
         }
         if iteration > opts.max_iterations {
             break;
@@ -435,7 +441,13 @@ pub fn uniformize_hyperbolic(
         });
         ev = new;
     }
-    Ok(finish(u, &ev.grad, steps, HyperbolicStop::IterationCap, &cache))
+    Ok(finish(
+        u,
+        &ev.grad,
+        steps,
+        HyperbolicStop::IterationCap,
+        &cache,
+    ))
 }
 
 /// The binary64 Hessian of `E_hyp` at `u` as a dense matrix (B38; for tests and small

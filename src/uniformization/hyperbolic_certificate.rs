@@ -54,11 +54,12 @@ pub fn refine_hyperbolic<T: Real>(
     max_iterations: usize,
 ) -> Result<Refinement<T>, HyperbolicError> {
     let mesh = &sol.mesh;
-    let factor = super::hyperbolic::hessian_factor(mesh, &sol.lengths, &sol.u).ok_or_else(|| {
-        HyperbolicError::NotATriangle {
-            face: first_bad_face(mesh, &sol.lengths, &sol.u),
-        }
-    })?;
+    let factor =
+        super::hyperbolic::hessian_factor(mesh, &sol.lengths, &sol.u).ok_or_else(|| {
+            HyperbolicError::NotATriangle {
+                face: first_bad_face(mesh, &sol.lengths, &sol.u),
+            }
+        })?;
     let lengths: Vec<T> = sol.lengths.iter().map(|&x| T::from_f64(x, ctx)).collect();
     let theta_target = targets_in::<T>(sol, ctx);
     let mut u: Vec<T> = sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect();
@@ -229,9 +230,12 @@ pub fn certify_hyperbolic(
         }
         residual.push(g);
     }
+    // ‖g‖₂ from the upper ends of |g_i| (a product g·g of an interval around 0 would
+    // have a negative lower end).
     let mut sq = I::from_f64(0.0, prec);
     for g in &residual {
-        sq += &(g.clone() * g);
+        let a = I::from_f64(abs_up(g), prec);
+        sq += &(a.clone() * &a);
     }
     let residual_norm2 = to_f64_up(sq.sqrt().hi());
     let residual_max = residual.iter().map(abs_up).fold(0.0, f64::max);
@@ -254,8 +258,7 @@ fn existence(
     let und = |reason: String| Existence::Undecided { reason };
     let mesh = &sol.mesh;
     let uf: Vec<f64> = u.iter().map(Rational::to_f64).collect();
-    let Some(mu_estimate) = super::hyperbolic::gershgorin_estimate(mesh, &sol.lengths, &uf)
-    else {
+    let Some(mu_estimate) = super::hyperbolic::gershgorin_estimate(mesh, &sol.lengths, &uf) else {
         return und("a face is not a triangle at u".into());
     };
     if mu_estimate.is_nan() || mu_estimate <= 0.0 || !norm2.is_finite() {
@@ -355,7 +358,9 @@ pub fn total_area_lhuilier<T: Real>(mesh: &Mesh, lengths: &[T]) -> Option<T> {
     let (half, four) = (z.lit(0.5), z.lit(4.0));
     let mut total = z.zero_like();
     for f in mesh.faces() {
-        let l = mesh.face_halfedges(f).map(|h| lengths[h.edge().idx()].clone());
+        let l = mesh
+            .face_halfedges(f)
+            .map(|h| lengths[h.edge().idx()].clone());
         let s = (l[0].clone() + &l[1] + &l[2]) * &half;
         let mut p = tanh(&(s.clone() * &half));
         for m in &l {

@@ -78,7 +78,11 @@ pub fn face_terms(lambda: [f64; 3]) -> Option<FaceTerms> {
         0.5 / beta.tan()
     });
     let t2 = lambda.map(tanh_half_squared);
-    let finite = angles.iter().chain(&weight).chain(&t2).all(|x| x.is_finite());
+    let finite = angles
+        .iter()
+        .chain(&weight)
+        .chain(&t2)
+        .all(|x| x.is_finite());
     finite.then_some(FaceTerms { angles, weight, t2 })
 }
 
