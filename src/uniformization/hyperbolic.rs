@@ -332,6 +332,7 @@ fn max_abs(x: &[f64]) -> f64 {
 /// `lengths` (module doc: convention, line search, no flips). Bad input is a typed error;
 /// a solve that does not reach `opts.tolerance` returns `Ok` with the reason
 /// ([`HyperbolicStop`]), never a panic. proof: B38
+#[allow(clippy::too_many_lines)] // one Newton loop with its line search, read top to bottom
 pub fn uniformize_hyperbolic(
     mesh: &Mesh,
     lengths: &[f64],

@@ -43,6 +43,7 @@ fn gap(a: &[Vec<f64>], b: &[Vec<f64>]) -> f64 {
 
 /// `∂(Θ − θ)_i/∂u_j` by central differences of the generic gradient in double-double,
 /// step `h = 10⁻⁶`: truncation `h²/6·max|θ'''|`, rounding `2⁻¹⁰⁴/h` (B38, "Checks").
+#[allow(clippy::needless_range_loop)] // (i, j) index the matrix
 fn hessian_fd_dd(m: &Mesh, l: &[f64], u: &[f64]) -> Vec<Vec<f64>> {
     let n = m.n_vertices();
     let ld: Vec<Dd> = l.iter().map(|&x| Dd::from_f64(x)).collect();
@@ -52,19 +53,20 @@ fn hessian_fd_dd(m: &Mesh, l: &[f64], u: &[f64]) -> Vec<Vec<f64>> {
     for j in 0..n {
         let at = |s: f64| {
             let uu: Vec<Dd> = (0..n)
-                .map(|k| Dd::from_f64(u[k]) + &Dd::from_f64(if k == j { s } else { 0.0 }))
+                .map(|k| Dd::from_f64(u[k]) + Dd::from_f64(if k == j { s } else { 0.0 }))
                 .collect();
             gradient(m, &ld, &uu, &zero)
         };
         let (p, q) = (at(h), at(-h));
         for i in 0..n {
-            out[i][j] = ((p[i].clone() - &q[i]) / &Dd::from_f64(2.0 * h)).approx_f64();
+            out[i][j] = ((p[i] - q[i]) / Dd::from_f64(2.0 * h)).approx_f64();
         }
     }
     out
 }
 
 /// The same derivative by forward-mode dual numbers over binary64.
+#[allow(clippy::needless_range_loop)] // (i, j) index the matrix
 fn hessian_dual(m: &Mesh, l: &[f64], u: &[f64]) -> Vec<Vec<f64>> {
     let n = m.n_vertices();
     let ld: Vec<Dual<f64>> = l.iter().map(|&x| Dual::constant(x)).collect();
