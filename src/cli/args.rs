@@ -167,6 +167,11 @@ pub struct UniformizeExtra {
     /// The sphere target (Thm 9): the convex polyhedron inscribed in the unit sphere.
     #[arg(long, conflicts_with_all = ["targets", "flat"])]
     pub sphere: bool,
+    /// The hyperbolic target (Thm 11, genus ≥ 2): the input lengths read as hyperbolic
+    /// lengths, all cone angles 2π (or `--targets` with Σ(2π − Θ) > 2πχ), fixed
+    /// triangulation, sinh scaling; residual and existence certified (B38, B39).
+    #[arg(long, conflicts_with_all = ["flat", "sphere"])]
+    pub hyperbolic: bool,
     /// The pole v∞ of `--sphere` (default: the vertex of largest degree that works).
     #[arg(long, value_name = "V", requires = "sphere")]
     pub pole: Option<u32>,

@@ -14,6 +14,7 @@ mod replay;
 mod report;
 mod uniformize;
 mod uniformize_boundary;
+mod uniformize_hyperbolic;
 mod uniformize_sphere;
 mod uniformize_svg;
 

@@ -120,6 +120,9 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     let (bits, tolerance) = bits_and_tolerance(o.precision)?;
     let shown = o.path.display().to_string();
     let case = load_flip_case(o.path)?;
+    if o.extra.hyperbolic {
+        return super::uniformize_hyperbolic::run(&shown, &case, o, bits, tolerance);
+    }
     let (mesh, lengths, shift) = scaled_input(case);
     if o.extra.sphere {
         return super::uniformize_sphere::run(&shown, &mesh, &lengths, o.output, o.extra);

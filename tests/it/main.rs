@@ -75,6 +75,7 @@ mod tolerance_range;
 mod tolerance_tightness;
 mod uniformization;
 mod uniformization_boundary;
+mod uniformization_hyperbolic;
 mod uniformization_layout;
 mod uniformization_speed;
 mod uniformization_sphere;

@@ -1,0 +1,159 @@
+//! `penner uniformize SURFACE --hyperbolic [--targets FILE] [--precision P] [-o RESULT.json]`:
+//! the hyperbolic target (notes Thm 11; B38, B39). The input lengths (rounded to binary64)
+//! are read as hyperbolic lengths of the same triangulation; Newton on the fixed
+//! triangulation, refinement, the residual enclosed in MPFR intervals and an existence
+//! radius (certified); the Gauss–Bonnet area by L'Huilier is numerical and says so.
+
+use super::error::{code, CliError};
+use super::files::{create_new, emit};
+use super::input::FlipCase;
+use penner::scalar::{Dd, Mpfr, Precision, Real};
+use penner::uniformization::hyperbolic::{
+    uniformize_hyperbolic, HyperbolicOptions, HyperbolicStop,
+};
+use penner::uniformization::hyperbolic_certificate::{
+    certify_hyperbolic, refine_hyperbolic, total_area_lhuilier, Existence,
+};
+use penner::uniformization::Targets;
+use rug::Rational;
+use std::fmt::Write as _;
+use std::io::Write;
+
+/// Run `penner uniformize --hyperbolic` on the loaded surface; `bits` and `tolerance` are
+/// those of `--precision` (f64: no refinement; dd: double-double; N: MPFR at N bits).
+#[allow(clippy::too_many_lines)] // solve, refine, certify, check and write, in order
+pub fn run(
+    shown: &str,
+    case: &FlipCase,
+    o: &super::uniformize::Options<'_>,
+    bits: u32,
+    tolerance: f64,
+) -> Result<u8, CliError> {
+    let mesh = case.mesh().clone();
+    let lengths: Vec<f64> = case.lengths::<f64>(());
+    let targets = match o.targets {
+        Some(p) => super::uniformize::read_targets(p, mesh.n_vertices())?,
+        None => Targets::flat(mesh.n_vertices()),
+    };
+    let sol = uniformize_hyperbolic(&mesh, &lengths, &targets, &HyperbolicOptions::default())
+        .map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "{shown}: hyperbolic target (lengths read as hyperbolic lengths, fixed triangulation): {} Newton steps, max |Θ − θ| = {:e} (f64)",
+        sol.steps.len(),
+        sol.residual_max
+    );
+    if !sol.converged() {
+        let why = match &sol.stop {
+            HyperbolicStop::NeedsFlips { face } => format!(
+                "face f{face} degenerates along the Newton path: this triangulation needs flips (not implemented for the hyperbolic target)"
+            ),
+            other => format!("{other:?}"),
+        };
+        let _ = writeln!(out, "not converged: {why}; no certificate");
+        emit(&out)?;
+        return Ok(code::UNDECIDED);
+    }
+    let bad = |e: penner::uniformization::hyperbolic::HyperbolicError| {
+        CliError::Input(format!("{shown}: {e}"))
+    };
+    let (u, refined): (Vec<Rational>, f64) = match o.precision {
+        "f64" => (
+            sol.u
+                .iter()
+                .filter_map(|&x| Rational::from_f64(x))
+                .collect(),
+            sol.residual_max,
+        ),
+        "dd" => {
+            let r = refine_hyperbolic::<Dd>(&sol, (), tolerance, 30).map_err(bad)?;
+            let u = r.u.iter().filter_map(Real::to_rational).collect();
+            (u, r.residual_max())
+        }
+        _ => {
+            let prec = Precision::new(u64::from(bits))
+                .map_err(|_| CliError::Input(format!("--precision: {bits} bits out of range")))?;
+            let r = refine_hyperbolic::<Mpfr>(&sol, prec, tolerance, 60).map_err(bad)?;
+            let u = r.u.iter().filter_map(Real::to_rational).collect();
+            (u, r.residual_max())
+        }
+    };
+    let _ = writeln!(out, "refined ({}): max |Θ − θ| = {refined:e}", o.precision);
+    let cert = certify_hyperbolic(&sol, &u, bits).map_err(bad)?;
+    let _ = writeln!(
+        out,
+        "certified ({bits}-bit intervals): max |Θ − θ(u)| ≤ {:e}, ‖Θ − θ(u)‖₂ ≤ {:e}",
+        cert.residual_max, cert.residual_norm2
+    );
+    let status = match &cert.existence {
+        Existence::Holds {
+            distance,
+            mu,
+            radius,
+        } => {
+            let _ = writeln!(
+                out,
+                "certified: an exact solution lies within {distance:e} (2-norm) of u (Hessian ≥ {mu:e} on the box of radius {radius:e}, B39)"
+            );
+            code::HOLDS
+        }
+        Existence::Undecided { reason } => {
+            let _ = writeln!(out, "existence not certified: {reason}");
+            code::UNDECIDED
+        }
+    };
+    let scaled = sol.scaled_lengths();
+    let area = total_area_lhuilier(&mesh, &scaled);
+    let gauss_bonnet = {
+        let k: f64 = targets
+            .over_pi()
+            .iter()
+            .map(|q| (2.0 - q.to_f64()) * std::f64::consts::PI)
+            .sum();
+        let chi = mesh.n_vertices() as f64 - mesh.n_edges() as f64 + mesh.n_faces() as f64;
+        k - 2.0 * std::f64::consts::PI * chi
+    };
+    let _ = writeln!(
+        out,
+        "numerical: total area by L'Huilier = {}, Gauss–Bonnet Σ(2π − Θ) − 2πχ = {gauss_bonnet}",
+        area.map_or("undefined".to_string(), |a| a.to_string())
+    );
+    if let Some(path) = o.output {
+        let (certified, distance, reason) = match &cert.existence {
+            Existence::Holds { distance, .. } => (true, Some(*distance), None),
+            Existence::Undecided { reason } => (false, None, Some(reason.clone())),
+        };
+        let doc = serde_json::json!({
+            "kind": "hyperbolic_uniformization",
+            "surface": shown,
+            "faces": mesh.face_list(),
+            "lengths": lengths,
+            "u": u.iter().map(Rational::to_f64).collect::<Vec<_>>(),
+            "u_exact": u.iter().map(ToString::to_string).collect::<Vec<_>>(),
+            "scaled_lengths": scaled,
+            "certificate": {
+                "bits": bits,
+                "residual_max": cert.residual_max,
+                "residual_norm2": cert.residual_norm2,
+                "existence_certified": certified,
+                "distance": distance,
+                "reason": reason,
+            },
+            "numerical": {
+                "residual_max_f64": sol.residual_max,
+                "area_lhuilier": area,
+                "area_gauss_bonnet": gauss_bonnet,
+            },
+        });
+        let text = serde_json::to_string_pretty(&doc).unwrap_or_default() + "\n";
+        let mut f = create_new(path)?;
+        f.write_all(text.as_bytes()).map_err(|e| CliError::Write {
+            path: path.to_path_buf(),
+            reason: e.to_string(),
+        })?;
+        let _ = writeln!(out, "result written to {}", path.display());
+    }
+    emit(&out)?;
+    Ok(status)
+}

@@ -1,0 +1,503 @@
+//! The hyperbolic target (notes Thm 11; BPS15 §6; MATH.md §7; T33, proofs/B38): log scale
+//! factors `u` with `sinh(ℓ̃_ij/2) = e^{(u_i+u_j)/2} sinh(ℓ_ij/2)` whose hyperbolic cone
+//! angles are the targets `Θ` (all `2π` for [`Targets::flat`] on genus ≥ 2).
+//!
+//! **Convention.** The input lengths `ℓ` are read as *hyperbolic* lengths of the same
+//! triangulation (any lengths with strict triangle inequalities are: the hyperbolic and
+//! Euclidean triangle inequalities are the same inequality). Unlike the Euclidean target
+//! the problem is not scale invariant: `2ℓ` is a different hyperbolic metric.
+//!
+//! **Solver.** Newton on `E_hyp` (T33) on the *fixed* input triangulation: gradient
+//! `Θ − θ_hyp(u)`, Hessian from [`face_terms`] (B38: per side `½ cot β[(du_i − du_j)² +
+//! tanh²(ℓ̃/2)(du_i + du_j)²]`). `E_hyp` is strictly convex with no gauge (the
+//! `(du_i + du_j)²` terms), so no vertex is grounded. Sparse `LLᵀ` by faer, the symbolic
+//! factorization kept ([`CholeskyCache`]); the line search of [`super::newton`] (decrease
+//! of `|∇E|` with the projected gradient `∇E(u + td)·d ≤ 0`, or a halved residual).
+//! No flips: when a face stops being a triangle and the line search cannot get around it,
+//! the solve stops with [`HyperbolicStop::NeedsFlips`] naming the face, never a wrong `u`.
+//!
+//! **Gauss–Bonnet.** `Σ_i (2π − Θ_i) − Area = 2πχ` with `Area > 0`: the targets must have
+//! `Σ_i (2π − Θ_i) > 2πχ` on every component (decided exactly, `Θ_i/π` rational); for
+//! `Θ ≡ 2π` this is `χ < 0`, genus ≥ 2.
+
+use super::components::Components;
+use super::error::UniformizeError;
+use super::hessian::{CholeskyCache, GroundedHessian};
+use super::hyperbolic_kernel::{face_terms, log_length};
+use super::newton::StepReport;
+use super::targets::Targets;
+use crate::mesh::Mesh;
+use faer::sparse::{SparseColMat, Triplet};
+use rug::Rational;
+use std::collections::HashMap;
+
+/// Why a hyperbolic uniformization problem was refused.
+#[derive(Debug, thiserror::Error)]
+pub enum HyperbolicError {
+    /// Input shared with the Euclidean solver (closed, counts, lengths, targets > 0).
+    #[error(transparent)]
+    Input(#[from] UniformizeError),
+    /// Gauss–Bonnet leaves no positive area: `Σ(2π − Θ_i) ≤ 2πχ` on a component.
+    #[error(
+        "hyperbolic Gauss–Bonnet: on the component of v{root}, Σ(2π − Θ_i) = {sum_over_pi}·π must exceed 2πχ = {}·π (χ = {chi}; with Θ = 2π everywhere: genus ≥ 2)",
+        2 * chi
+    )]
+    NoArea {
+        /// The smallest vertex of the component.
+        root: u32,
+        /// `Σ(2 − Θ_i/π)` exactly.
+        sum_over_pi: String,
+        /// The Euler characteristic of the component.
+        chi: i64,
+    },
+    /// A face of the input (or of the starting `u`) is not a strict triangle.
+    #[error("face f{face} is not a strict hyperbolic triangle at the starting u")]
+    NotATriangle {
+        /// The face.
+        face: u32,
+    },
+    /// The precision is out of range.
+    #[error("precision of {0} bits out of range")]
+    Bits(u32),
+}
+
+/// Solver options (as [`super::UniformizeOptions`]).
+#[derive(Clone, Debug)]
+pub struct HyperbolicOptions {
+    /// Stop when `max_i |Θ_i − θ_i| ≤ tolerance` (radians).
+    pub tolerance: f64,
+    /// At most this many Newton steps.
+    pub max_iterations: usize,
+    /// At most this many halvings of the step in one line search.
+    pub max_halvings: usize,
+    /// A starting `u` (default 0).
+    pub start: Option<Vec<f64>>,
+}
+
+impl Default for HyperbolicOptions {
+    fn default() -> Self {
+        HyperbolicOptions {
+            tolerance: 1e-10,
+            max_iterations: 100,
+            max_halvings: 40,
+            start: None,
+        }
+    }
+}
+
+/// Why the hyperbolic solver stopped.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub enum HyperbolicStop {
+    /// `max |Θ − θ| ≤ tolerance`.
+    Converged,
+    /// The iteration cap was reached first.
+    IterationCap,
+    /// The line search found no acceptable step and met a face that is no longer a
+    /// triangle: on this fixed triangulation the solution may not exist; flips (not
+    /// implemented for the hyperbolic target) would be needed.
+    NeedsFlips {
+        /// A face that degenerated in the last line search.
+        face: u32,
+    },
+    /// No acceptable step for another reason (Hessian not factored, no decrease).
+    DegenerateStep(String),
+}
+
+/// The result of [`uniformize_hyperbolic`]; `u` is a solution only when
+/// [`HyperbolicUniformization::converged`].
+#[derive(Clone, Debug)]
+pub struct HyperbolicUniformization {
+    /// The triangulation (the input's; no flips).
+    pub mesh: Mesh,
+    /// The input hyperbolic lengths `ℓ`.
+    pub lengths: Vec<f64>,
+    /// The log scale factors.
+    pub u: Vec<f64>,
+    /// The targets.
+    pub targets: Targets,
+    /// Accepted steps (`flips` always 0).
+    pub steps: Vec<StepReport>,
+    /// Why the solver stopped.
+    pub stop: HyperbolicStop,
+    /// `max_i |Θ_i − θ_i(u)|` at the returned `u` (`f64`).
+    pub residual_max: f64,
+    /// Symbolic and numeric factorizations computed.
+    pub factorizations: (usize, usize),
+}
+
+impl HyperbolicUniformization {
+    /// Whether the residual reached the tolerance.
+    pub fn converged(&self) -> bool {
+        self.stop == HyperbolicStop::Converged
+    }
+
+    /// The scaled hyperbolic lengths `ℓ̃` at `u` (binary64).
+    pub fn scaled_lengths(&self) -> Vec<f64> {
+        scaled_log_lengths(&self.mesh, &self.lengths, &self.u)
+            .into_iter()
+            .map(super::hyperbolic_kernel::length_from_log)
+            .collect()
+    }
+}
+
+/// `λ̃_ij = 2 log sinh(ℓ_ij/2) + u_i + u_j` (binary64).
+pub fn scaled_log_lengths(mesh: &Mesh, lengths: &[f64], u: &[f64]) -> Vec<f64> {
+    mesh.edges()
+        .map(|e| {
+            let h = e.halfedge();
+            log_length(lengths[e.idx()]) + u[mesh.tail(h).idx()] + u[mesh.tip(h).idx()]
+        })
+        .collect()
+}
+
+/// Check the input: a closed surface with one positive finite length per edge, one positive
+/// target per vertex, and `Σ(2π − Θ_i) > 2πχ` on every component (exact).
+pub fn validate_hyperbolic(
+    mesh: &Mesh,
+    lengths: &[f64],
+    targets: &Targets,
+) -> Result<(), HyperbolicError> {
+    if mesh.n_faces() == 0 {
+        return Err(UniformizeError::Empty.into());
+    }
+    if !mesh.is_closed() {
+        return Err(UniformizeError::NotClosed {
+            edges: mesh.n_boundary_edges(),
+        }
+        .into());
+    }
+    if lengths.len() != mesh.n_edges() {
+        return Err(UniformizeError::LengthCount {
+            expected: mesh.n_edges(),
+            got: lengths.len(),
+        }
+        .into());
+    }
+    if let Some(e) = lengths.iter().position(|x| !(x.is_finite() && *x > 0.0)) {
+        return Err(UniformizeError::BadLength {
+            edge: e as u32,
+            value: lengths[e],
+        }
+        .into());
+    }
+    if targets.len() != mesh.n_vertices() {
+        return Err(UniformizeError::TargetCount {
+            expected: mesh.n_vertices(),
+            got: targets.len(),
+        }
+        .into());
+    }
+    for (v, q) in targets.over_pi().iter().enumerate() {
+        if *q <= 0 {
+            return Err(UniformizeError::NonPositiveTarget {
+                vertex: v as u32,
+                over_pi: q.to_string(),
+            }
+            .into());
+        }
+    }
+    let comps = Components::of(mesh);
+    for (c, &root) in comps.roots.iter().enumerate() {
+        let mut sum = Rational::new();
+        for v in comps.vertices_of(c) {
+            sum += Rational::from(2) - &targets.over_pi()[v];
+        }
+        let chi = comps.euler_characteristic(mesh, c);
+        if sum <= 2 * chi {
+            return Err(HyperbolicError::NoArea {
+                root: root as u32,
+                sum_over_pi: sum.to_string(),
+                chi,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// The Hessian's lower-triangle pattern on a fixed triangulation: per half-edge the
+/// positions of its `H_ii`, `H_jj`, `H_ij` entries (a loop: `H_ii` only).
+struct Assembly {
+    n: usize,
+    pairs: Vec<(usize, usize)>,
+    slots: Vec<Slot>,
+}
+
+#[derive(Clone, Copy)]
+enum Slot {
+    Loop(usize),
+    Side { ii: usize, jj: usize, ij: usize },
+}
+
+impl Assembly {
+    fn new(mesh: &Mesh) -> Assembly {
+        let mut index: HashMap<(usize, usize), usize> = HashMap::new();
+        let mut pairs = Vec::new();
+        let mut at = |r: usize, c: usize| -> usize {
+            let key = (r.max(c), r.min(c));
+            *index.entry(key).or_insert_with(|| {
+                pairs.push(key);
+                pairs.len() - 1
+            })
+        };
+        let slots = mesh
+            .halfedges()
+            .map(|h| {
+                let (i, j) = (mesh.tail(h).idx(), mesh.tip(h).idx());
+                if i == j {
+                    Slot::Loop(at(i, i))
+                } else {
+                    Slot::Side {
+                        ii: at(i, i),
+                        jj: at(j, j),
+                        ij: at(i, j),
+                    }
+                }
+            })
+            .collect();
+        Assembly {
+            n: mesh.n_vertices(),
+            pairs,
+            slots,
+        }
+    }
+
+    /// The Hessian's values (order of `pairs`) from `½ cot β` and `t²` per half-edge (B38).
+    fn values(&self, weight: &[f64], t2: &[f64]) -> Vec<f64> {
+        let mut val = vec![0.0; self.pairs.len()];
+        for ((s, &w), &t) in self.slots.iter().zip(weight).zip(t2) {
+            match *s {
+                Slot::Loop(ii) => val[ii] += 4.0 * w * t,
+                Slot::Side { ii, jj, ij } => {
+                    val[ii] += w * (1.0 + t);
+                    val[jj] += w * (1.0 + t);
+                    val[ij] += w * (t - 1.0);
+                }
+            }
+        }
+        val
+    }
+
+    /// The Hessian from `½ cot β` and `t²` per half-edge (B38), lower triangle.
+    fn matrix(&self, weight: &[f64], t2: &[f64]) -> Option<GroundedHessian> {
+        let val = self.values(weight, t2);
+        let trip: Vec<Triplet<usize, usize, f64>> = self
+            .pairs
+            .iter()
+            .zip(&val)
+            .map(|(&(r, c), &v)| Triplet::new(r, c, v))
+            .collect();
+        let matrix = SparseColMat::try_new_from_triplets(self.n, self.n, &trip).ok()?;
+        Some(GroundedHessian { matrix })
+    }
+}
+
+/// The hyperbolic angle sums and Hessian terms at one `u`.
+struct Evaluation {
+    grad: Vec<f64>,
+    /// `½ cot β` of the side of each half-edge in its face.
+    weight: Vec<f64>,
+    /// `tanh²(ℓ̃/2)` of the edge of each half-edge.
+    t2: Vec<f64>,
+}
+
+/// Evaluate at `u`; `Err(face)` when a face is not a strict triangle (or a term overflows).
+fn evaluate(mesh: &Mesh, lambda0: &[f64], u: &[f64], theta: &[f64]) -> Result<Evaluation, u32> {
+    let mut sum = vec![0.0; mesh.n_vertices()];
+    let mut weight = vec![0.0; mesh.n_halfedges()];
+    let mut t2 = vec![0.0; mesh.n_halfedges()];
+    for f in mesh.faces() {
+        let hs = mesh.face_halfedges(f);
+        let lam =
+            hs.map(|h| lambda0[h.edge().idx()] + u[mesh.tail(h).idx()] + u[mesh.tip(h).idx()]);
+        let terms = face_terms(lam).ok_or(f.0)?;
+        for m in 0..3 {
+            sum[mesh.tail(hs[(m + 2) % 3]).idx()] += terms.angles[m];
+            weight[hs[m].idx()] = terms.weight[m];
+            t2[hs[m].idx()] = terms.t2[m];
+        }
+    }
+    let grad = theta.iter().zip(&sum).map(|(t, s)| t - s).collect();
+    Ok(Evaluation { grad, weight, t2 })
+}
+
+fn norm2(x: &[f64]) -> f64 {
+    x.iter().map(|a| a * a).sum::<f64>().sqrt()
+}
+
+fn max_abs(x: &[f64]) -> f64 {
+    x.iter().fold(0.0, |m, a| m.max(a.abs()))
+}
+
+/// Solve `θ_hyp(u) = Θ` on the fixed triangulation `mesh` with hyperbolic edge lengths
+/// `lengths` (module doc: convention, line search, no flips). Bad input is a typed error;
+/// a solve that does not reach `opts.tolerance` returns `Ok` with the reason
+/// ([`HyperbolicStop`]), never a panic. proof: B38
+#[allow(clippy::too_many_lines)] // one Newton loop with its line search, read top to bottom
+pub fn uniformize_hyperbolic(
+    mesh: &Mesh,
+    lengths: &[f64],
+    targets: &Targets,
+    opts: &HyperbolicOptions,
+) -> Result<HyperbolicUniformization, HyperbolicError> {
+    validate_hyperbolic(mesh, lengths, targets)?;
+    let mut u = match &opts.start {
+        None => vec![0.0; mesh.n_vertices()],
+        Some(s) if s.len() != mesh.n_vertices() => {
+            return Err(UniformizeError::TargetCount {
+                expected: mesh.n_vertices(),
+                got: s.len(),
+            }
+            .into())
+        }
+        Some(s) => {
+            if let Some(v) = s.iter().position(|x| !x.is_finite()) {
+                return Err(UniformizeError::BadStart {
+                    vertex: v as u32,
+                    value: s[v],
+                }
+                .into());
+            }
+            s.clone()
+        }
+    };
+    let lambda0: Vec<f64> = lengths.iter().map(|&l| log_length(l)).collect();
+    let theta = targets.radians_f64();
+    let mut ev = evaluate(mesh, &lambda0, &u, &theta)
+        .map_err(|face| HyperbolicError::NotATriangle { face })?;
+    let assembly = Assembly::new(mesh);
+    let mut cache = CholeskyCache::default();
+    let mut steps = Vec::new();
+    let finish =
+        |u: Vec<f64>, grad: &[f64], steps, stop, cache: &CholeskyCache| HyperbolicUniformization {
+            mesh: mesh.clone(),
+            lengths: lengths.to_vec(),
+            u,
+            targets: targets.clone(),
+            steps,
+            stop,
+            residual_max: max_abs(grad),
+            factorizations: (cache.symbolic_count, cache.numeric_count),
+        };
+    for iteration in 1..=opts.max_iterations + 1 {
+        if max_abs(&ev.grad) <= opts.tolerance {
+            return Ok(finish(
+                u,
+                &ev.grad,
+                steps,
+                HyperbolicStop::Converged,
+                &cache,
+            ));
+        }
+        if iteration > opts.max_iterations {
+            break;
+        }
+        let factor = assembly
+            .matrix(&ev.weight, &ev.t2)
+            .and_then(|h| cache.factor(&h));
+        let Some(factor) = factor else {
+            let stop = HyperbolicStop::DegenerateStep(
+                "the hyperbolic Hessian is not numerically positive definite".into(),
+            );
+            return Ok(finish(u, &ev.grad, steps, stop, &cache));
+        };
+        let minus_g: Vec<f64> = ev.grad.iter().map(|g| -g).collect();
+        let d = factor.solve(&minus_g);
+        let n0 = norm2(&ev.grad);
+        let mut t = 1.0;
+        let mut accepted = None;
+        let mut degenerate = None;
+        for halvings in 0..=opts.max_halvings {
+            let trial: Vec<f64> = u.iter().zip(&d).map(|(a, b)| a + t * b).collect();
+            match evaluate(mesh, &lambda0, &trial, &theta) {
+                Ok(new) => {
+                    let n1 = norm2(&new.grad);
+                    let slope: f64 = new.grad.iter().zip(&d).map(|(g, x)| g * x).sum();
+                    if n1 < n0 && (slope <= 0.0 || n1 <= 0.5 * n0) {
+                        accepted = Some((trial, new, halvings));
+                        break;
+                    }
+                }
+                Err(face) => degenerate = Some(face),
+            }
+            t *= 0.5;
+        }
+        let Some((trial, new, halvings)) = accepted else {
+            let stop = match degenerate {
+                Some(face) => HyperbolicStop::NeedsFlips { face },
+                None => HyperbolicStop::DegenerateStep(format!(
+                    "line search: no decrease of |∇E| after {} halvings at max residual {:e}",
+                    opts.max_halvings,
+                    max_abs(&ev.grad)
+                )),
+            };
+            return Ok(finish(u, &ev.grad, steps, stop, &cache));
+        };
+        u = trial;
+        steps.push(StepReport {
+            iteration,
+            residual_max: max_abs(&new.grad),
+            step: t,
+            halvings,
+            flips: 0,
+        });
+        ev = new;
+    }
+    Ok(finish(
+        u,
+        &ev.grad,
+        steps,
+        HyperbolicStop::IterationCap,
+        &cache,
+    ))
+}
+
+/// The binary64 Hessian of `E_hyp` at `u` as a dense matrix (B38; for tests and small
+/// surfaces); `None` when a face is not a strict triangle.
+pub fn hessian_dense(mesh: &Mesh, lengths: &[f64], u: &[f64]) -> Option<Vec<Vec<f64>>> {
+    let lambda0: Vec<f64> = lengths.iter().map(|&l| log_length(l)).collect();
+    let zero = vec![0.0; mesh.n_vertices()];
+    let ev = evaluate(mesh, &lambda0, u, &zero).ok()?;
+    let n = mesh.n_vertices();
+    let mut h = vec![vec![0.0; n]; n];
+    for (hh, (&w, &t)) in mesh.halfedges().zip(ev.weight.iter().zip(&ev.t2)) {
+        let (i, j) = (mesh.tail(hh).idx(), mesh.tip(hh).idx());
+        if i == j {
+            h[i][i] += 4.0 * w * t;
+        } else {
+            h[i][i] += w * (1.0 + t);
+            h[j][j] += w * (1.0 + t);
+            h[i][j] += w * (t - 1.0);
+            h[j][i] += w * (t - 1.0);
+        }
+    }
+    Some(h)
+}
+
+/// The binary64 Hessian of `E_hyp` at `u`, factored (sparse `LLᵀ`); `None` when a face
+/// is not a strict triangle or the matrix is not numerically positive definite. proof: B38
+pub fn hessian_factor(mesh: &Mesh, lengths: &[f64], u: &[f64]) -> Option<super::hessian::Factor> {
+    let lambda0: Vec<f64> = lengths.iter().map(|&l| log_length(l)).collect();
+    let zero = vec![0.0; mesh.n_vertices()];
+    let ev = evaluate(mesh, &lambda0, u, &zero).ok()?;
+    let h = Assembly::new(mesh).matrix(&ev.weight, &ev.t2)?;
+    CholeskyCache::default().factor(&h)
+}
+
+/// Gershgorin's bound `min_i (H_ii − Σ_{j≠i} |H_ij|)` of the binary64 Hessian at `u`
+/// (an estimate, rounded to nearest); `None` when a face is not a strict triangle.
+pub fn gershgorin_estimate(mesh: &Mesh, lengths: &[f64], u: &[f64]) -> Option<f64> {
+    let lambda0: Vec<f64> = lengths.iter().map(|&l| log_length(l)).collect();
+    let zero = vec![0.0; mesh.n_vertices()];
+    let ev = evaluate(mesh, &lambda0, u, &zero).ok()?;
+    let a = Assembly::new(mesh);
+    let mut row = vec![0.0; a.n];
+    for (&(r, c), v) in a.pairs.iter().zip(a.values(&ev.weight, &ev.t2)) {
+        if r == c {
+            row[r] += v;
+        } else {
+            row[r] -= v.abs();
+            row[c] -= v.abs();
+        }
+    }
+    Some(row.into_iter().fold(f64::INFINITY, f64::min))
+}

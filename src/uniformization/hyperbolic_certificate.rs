@@ -1,0 +1,383 @@
+//! Refinement and certificate of a hyperbolic uniformization (proofs/B39).
+//!
+//! - [`refine_hyperbolic`]: residuals `Θ − θ_hyp(u)` in `Dd` or MPFR with `u` kept in that
+//!   precision, corrections from the binary64 Hessian factored once (as [`super::refine`]);
+//! - [`certify_hyperbolic`]: the residual enclosed in `Interval<Mpfr>` at the given `u`
+//!   (certified: directed rounding), and an existence radius: on the box `|v − u|_∞ ≤ r`
+//!   every face is certified a strict triangle and the Hessian (B38) enclosed; Gershgorin
+//!   gives `λ_min(H(v)) ≥ μ > 0` for every `v` in the box, and then (the argument of B71)
+//!   an exact solution lies within `‖Θ − θ(u)‖₂/μ` of `u` when that is `≤ r`.
+//! - [`total_area_lhuilier`]: the total hyperbolic area by the hyperbolic L'Huilier
+//!   formula, an oracle independent of the angles (Gauss–Bonnet: `4π(g − 1)` at `Θ ≡ 2π`).
+
+use super::certificate::to_f64_up;
+use super::hyperbolic::{HyperbolicError, HyperbolicUniformization};
+use super::hyperbolic_kernel::{face_terms_generic, log_length};
+use super::refine::Refinement;
+use crate::mesh::Mesh;
+use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
+use crate::variational::hyperbolic::{cone_angles, hyperbolic_log_length, length_from_log};
+use rug::Rational;
+
+type I = Interval<Mpfr>;
+
+/// `Θ_i = q_i·π` in `T`.
+fn targets_in<T: Real>(sol: &HyperbolicUniformization, ctx: T::Ctx) -> Vec<T> {
+    let pi = T::pi(ctx);
+    sol.targets
+        .over_pi()
+        .iter()
+        .map(|q| T::from_rational(q, ctx) * &pi)
+        .collect()
+}
+
+/// The hyperbolic lengths of `mesh` at `u` in `T` (`ℓ` taken exactly from binary64).
+fn scaled_in<T: Real>(mesh: &Mesh, lengths: &[T], u: &[T]) -> Vec<T> {
+    mesh.edges()
+        .map(|e| {
+            let h = e.halfedge();
+            let lam = hyperbolic_log_length(&lengths[e.idx()])
+                + &u[mesh.tail(h).idx()]
+                + &u[mesh.tip(h).idx()];
+            length_from_log(&lam)
+        })
+        .collect()
+}
+
+/// Refine `sol.u` in precision `ctx` (residuals in `T`, the binary64 Hessian at `sol.u`
+/// factored once) until `max |Θ − θ| ≤ tolerance`, `max_iterations`, or two iterations in
+/// a row that fail to halve the residual. `Err` when the Hessian cannot be factored.
+pub fn refine_hyperbolic<T: Real>(
+    sol: &HyperbolicUniformization,
+    ctx: T::Ctx,
+    tolerance: f64,
+    max_iterations: usize,
+) -> Result<Refinement<T>, HyperbolicError> {
+    let mesh = &sol.mesh;
+    let factor =
+        super::hyperbolic::hessian_factor(mesh, &sol.lengths, &sol.u).ok_or_else(|| {
+            HyperbolicError::NotATriangle {
+                face: first_bad_face(mesh, &sol.lengths, &sol.u),
+            }
+        })?;
+    let lengths: Vec<T> = sol.lengths.iter().map(|&x| T::from_f64(x, ctx)).collect();
+    let theta_target = targets_in::<T>(sol, ctx);
+    let mut u: Vec<T> = sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect();
+    let mut history = Vec::new();
+    let mut stalls = 0;
+    let mut iteration = 0;
+    loop {
+        let theta = cone_angles(mesh, &scaled_in(mesh, &lengths, &u), false);
+        let r: Vec<T> = theta_target
+            .iter()
+            .zip(&theta)
+            .map(|(t, th)| t.clone() - th)
+            .collect();
+        let rf: Vec<f64> = r.iter().map(Real::approx_f64).collect();
+        let rmax = rf.iter().fold(0.0, |m: f64, x| m.max(x.abs()));
+        if !rmax.is_finite() {
+            history.push(f64::INFINITY);
+            return Ok(Refinement {
+                u,
+                residual: r,
+                history,
+                reached: false,
+            });
+        }
+        if let Some(&prev) = history.last() {
+            stalls = if rmax > 0.5 * prev { stalls + 1 } else { 0 };
+        }
+        history.push(rmax);
+        let reached = rmax <= tolerance;
+        if reached || iteration >= max_iterations || stalls >= 2 {
+            return Ok(Refinement {
+                u,
+                residual: r,
+                history,
+                reached,
+            });
+        }
+        // H d = −∇E = −(Θ − θ).
+        let minus: Vec<f64> = rf.iter().map(|x| -x).collect();
+        let d = factor.solve(&minus);
+        for (ui, di) in u.iter_mut().zip(&d) {
+            *ui += &T::from_f64(*di, ctx);
+        }
+        iteration += 1;
+    }
+}
+
+/// The first face that is not a strict triangle at `u` (`u32::MAX` if none).
+fn first_bad_face(mesh: &Mesh, lengths: &[f64], u: &[f64]) -> u32 {
+    mesh.faces()
+        .find(|&f| {
+            let lam = mesh.face_halfedges(f).map(|h| {
+                log_length(lengths[h.edge().idx()]) + u[mesh.tail(h).idx()] + u[mesh.tip(h).idx()]
+            });
+            super::hyperbolic_kernel::face_terms(lam).is_none()
+        })
+        .map_or(u32::MAX, |f| f.0)
+}
+
+/// The existence part of [`certify_hyperbolic`].
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub enum Existence {
+    /// An exact solution `u*` with `‖u* − u‖₂ ≤ distance` exists (B39).
+    Holds {
+        /// `‖Θ − θ(u)‖₂/μ`, rounded up.
+        distance: f64,
+        /// The Gershgorin lower bound of the Hessian on the box, rounded down.
+        mu: f64,
+        /// The box radius `r` (sup norm).
+        radius: f64,
+    },
+    /// Not certified, with the reason.
+    Undecided {
+        /// Why.
+        reason: String,
+    },
+}
+
+/// The certified residual and the existence radius at one `u` (B39).
+#[derive(Clone, Debug)]
+pub struct HyperbolicCertificate {
+    /// `Θ_i − θ_i(u)` enclosed (`Interval<Mpfr>`); empty when a face is not certified a
+    /// strict triangle at `u`.
+    pub residual: Vec<I>,
+    /// An upper bound of `max_i |Θ_i − θ_i(u)|` (`+∞` when not enclosed).
+    pub residual_max: f64,
+    /// An upper bound of `‖Θ − θ(u)‖₂` (`+∞` when not enclosed).
+    pub residual_norm2: f64,
+    /// The existence radius.
+    pub existence: Existence,
+}
+
+/// `λ̃` over intervals of `u`.
+fn log_lengths_i(mesh: &Mesh, lengths: &[f64], u: &[I], prec: Precision) -> Vec<I> {
+    mesh.edges()
+        .map(|e| {
+            let h = e.halfedge();
+            hyperbolic_log_length(&I::from_f64(lengths[e.idx()], prec))
+                + &u[mesh.tail(h).idx()]
+                + &u[mesh.tip(h).idx()]
+        })
+        .collect()
+}
+
+/// Whether every face is certified a strict triangle for the lengths `l`.
+fn strict_triangles(mesh: &Mesh, l: &[I]) -> Result<(), u32> {
+    for f in mesh.faces() {
+        let [a, b, c] = mesh.face_halfedges(f).map(|h| &l[h.edge().idx()]);
+        for (x, y, z) in [(a, b, c), (b, c, a), (c, a, b)] {
+            if (y.clone() + z - x).sign() != Some(Sign::Positive) {
+                return Err(f.0);
+            }
+        }
+    }
+    Ok(())
+}
+
+fn abs_up(x: &I) -> f64 {
+    to_f64_up(x.hi()).max(-to_f64_down(x.lo()))
+}
+
+fn to_f64_down(x: &Mpfr) -> f64 {
+    x.as_float().to_f64_round(rug::float::Round::Down)
+}
+
+/// Enclose `Θ − θ_hyp(u)` at the exact `u` (`bits` of MPFR intervals) and try an existence
+/// radius (module doc, B39). Bad input is a typed error; anything not certified is
+/// reported in the result, never as a failure.
+pub fn certify_hyperbolic(
+    sol: &HyperbolicUniformization,
+    u: &[Rational],
+    bits: u32,
+) -> Result<HyperbolicCertificate, HyperbolicError> {
+    let mesh = &sol.mesh;
+    super::hyperbolic::validate_hyperbolic(mesh, &sol.lengths, &sol.targets)?;
+    let n = mesh.n_vertices();
+    if u.len() != n {
+        return Err(super::error::UniformizeError::TargetCount {
+            expected: n,
+            got: u.len(),
+        }
+        .into());
+    }
+    let prec = Precision::new(u64::from(bits)).map_err(|_| HyperbolicError::Bits(bits))?;
+    let undecided = |reason: String| HyperbolicCertificate {
+        residual: Vec::new(),
+        residual_max: f64::INFINITY,
+        residual_norm2: f64::INFINITY,
+        existence: Existence::Undecided { reason },
+    };
+    let point: Vec<I> = u.iter().map(|q| I::from_rational(q, prec)).collect();
+    let lp: Vec<I> = log_lengths_i(mesh, &sol.lengths, &point, prec)
+        .iter()
+        .map(length_from_log)
+        .collect();
+    if let Err(f) = strict_triangles(mesh, &lp) {
+        return Ok(undecided(format!(
+            "face f{f} not certified a strict triangle at u"
+        )));
+    }
+    let pi = I::pi(prec);
+    let theta = cone_angles(mesh, &lp, false);
+    let mut residual = Vec::with_capacity(n);
+    for (v, th) in theta.iter().enumerate() {
+        let g = I::from_rational(&sol.targets.over_pi()[v], prec) * &pi - th;
+        if !g.is_valid() {
+            return Ok(undecided(format!("angle sum at v{v} not enclosed")));
+        }
+        residual.push(g);
+    }
+    // ‖g‖₂ from the upper ends of |g_i| (a product g·g of an interval around 0 would
+    // have a negative lower end).
+    let mut sq = I::from_f64(0.0, prec);
+    for g in &residual {
+        let a = I::from_f64(abs_up(g), prec);
+        sq += &(a.clone() * &a);
+    }
+    let residual_norm2 = to_f64_up(sq.sqrt().hi());
+    let residual_max = residual.iter().map(abs_up).fold(0.0, f64::max);
+    let existence = existence(sol, u, prec, residual_norm2);
+    Ok(HyperbolicCertificate {
+        residual,
+        residual_max,
+        residual_norm2,
+        existence,
+    })
+}
+
+/// The existence radius of B39 (module doc).
+fn existence(
+    sol: &HyperbolicUniformization,
+    u: &[Rational],
+    prec: Precision,
+    norm2: f64,
+) -> Existence {
+    let und = |reason: String| Existence::Undecided { reason };
+    let mesh = &sol.mesh;
+    let uf: Vec<f64> = u.iter().map(Rational::to_f64).collect();
+    let Some(mu_estimate) = super::hyperbolic::gershgorin_estimate(mesh, &sol.lengths, &uf) else {
+        return und("a face is not a triangle at u".into());
+    };
+    if mu_estimate.is_nan() || mu_estimate <= 0.0 || !norm2.is_finite() {
+        return und(format!(
+            "the Hessian is not diagonally dominant at u (Gershgorin bound {mu_estimate:e})"
+        ));
+    }
+    // The box radius: twice the distance the estimate predicts, at least 2⁻⁽ᵇⁱᵗˢ⁻⁸⁾.
+    let floor = 2f64.powi(-(prec.bits() as i32 - 8));
+    let radius = (2.0 * norm2 / mu_estimate).max(floor);
+    let Some(r) = Rational::from_f64(radius) else {
+        return und(format!("box radius {radius:e} not finite"));
+    };
+    let boxed: Vec<I> = u
+        .iter()
+        .map(|q| {
+            let lo = I::from_rational(&Rational::from(q - &r), prec);
+            let hi = I::from_rational(&Rational::from(q + &r), prec);
+            I::new(lo.lo().clone(), hi.hi().clone())
+        })
+        .collect();
+    let lam = log_lengths_i(mesh, &sol.lengths, &boxed, prec);
+    let lb: Vec<I> = lam.iter().map(length_from_log).collect();
+    if let Err(f) = strict_triangles(mesh, &lb) {
+        return und(format!(
+            "face f{f} not certified a strict triangle on the box of radius {radius:e}"
+        ));
+    }
+    let n = mesh.n_vertices();
+    let zero = I::from_f64(0.0, prec);
+    let mut diag = vec![zero.clone(); n];
+    let mut off: std::collections::HashMap<(usize, usize), I> = std::collections::HashMap::new();
+    for f in mesh.faces() {
+        let hs = mesh.face_halfedges(f);
+        let x = hs.map(|h| lam[h.edge().idx()].clone());
+        let (_, w, t2) = face_terms_generic(&x);
+        for m in 0..3 {
+            let (i, j) = (mesh.tail(hs[m]).idx(), mesh.tip(hs[m]).idx());
+            let one = zero.one_like();
+            if i == j {
+                diag[i] += &(w[m].clone() * &t2[m] * &zero.lit(4.0));
+            } else {
+                let d = w[m].clone() * &(one.clone() + &t2[m]);
+                diag[i] += &d;
+                diag[j] += &d;
+                let o = off
+                    .entry((i.max(j), i.min(j)))
+                    .or_insert_with(|| zero.clone());
+                *o += &(w[m].clone() * &(t2[m].clone() - &one));
+            }
+        }
+    }
+    let mut row: Vec<I> = diag;
+    for (&(i, j), o) in &off {
+        if !o.is_valid() {
+            return und(format!("Hessian entry ({i}, {j}) not enclosed on the box"));
+        }
+        let a = I::from_f64(abs_up(o), prec);
+        row[i] -= &a;
+        row[j] -= &a;
+    }
+    let mut mu = f64::INFINITY;
+    for (i, r) in row.iter().enumerate() {
+        if !r.is_valid() {
+            return und(format!("Hessian row {i} not enclosed on the box"));
+        }
+        mu = mu.min(to_f64_down(r.lo()));
+    }
+    if mu.is_nan() || mu <= 0.0 {
+        return und(format!(
+            "Gershgorin bound of the Hessian on the box not positive ({mu:e})"
+        ));
+    }
+    let distance = {
+        let q = I::from_f64(norm2, prec) / &I::from_f64(mu, prec);
+        to_f64_up(q.hi())
+    };
+    if distance <= radius {
+        Existence::Holds {
+            distance,
+            mu,
+            radius,
+        }
+    } else {
+        und(format!(
+            "‖Θ − θ(u)‖₂/μ = {distance:e} exceeds the box radius {radius:e}"
+        ))
+    }
+}
+
+/// The total area `Σ_t Area(t)` of the hyperbolic metric `lengths` on `mesh` by the
+/// hyperbolic L'Huilier formula `tan(A/4) = √(tanh(s/2) Π_m tanh((s − ℓ_m)/2))` (a second
+/// formula, independent of the corner angles; Gauss–Bonnet: `Σ_i(2π − θ_i) − A = 2πχ`).
+/// `None` when a face is not a strict triangle.
+pub fn total_area_lhuilier<T: Real>(mesh: &Mesh, lengths: &[T]) -> Option<T> {
+    let z = lengths.first()?;
+    let (half, four) = (z.lit(0.5), z.lit(4.0));
+    let mut total = z.zero_like();
+    for f in mesh.faces() {
+        let l = mesh
+            .face_halfedges(f)
+            .map(|h| lengths[h.edge().idx()].clone());
+        let s = (l[0].clone() + &l[1] + &l[2]) * &half;
+        let mut p = tanh(&(s.clone() * &half));
+        for m in &l {
+            let d = s.clone() - m;
+            let slack = d.approx_f64();
+            if slack.is_nan() || slack <= 0.0 {
+                return None;
+            }
+            p *= &tanh(&(d * &half));
+        }
+        total += &(p.sqrt().atan() * &four);
+    }
+    Some(total)
+}
+
+/// `tanh x = (1 − e^{−2x})/(1 + e^{−2x})` for `x ≥ 0`.
+fn tanh<T: Real>(x: &T) -> T {
+    let e = (x.clone() * &x.lit(-2.0)).exp();
+    (x.one_like() - &e) / &(x.one_like() + &e)
+}
