@@ -100,7 +100,9 @@ pub fn cap_ellipse(cap: &super::sphere::Cap<f64>) -> CapEllipse {
 /// [`VIEW_ELEVATION_DEG`] (module docs of [`super::sphere`]): the sphere's outline, every
 /// front-facing cap as a filled ellipse (`class="front"`, [`cap_ellipse`]) and every
 /// back-facing cap as a faint dashed outline (`class="back"`). A front cap that reaches over
-/// the limb is drawn whole, its hidden arc included.
+/// the limb is drawn whole, its hidden arc included; the visible band of a large back-facing
+/// cap (the southern hemisphere of a punctured packing, between the dashed equator and the
+/// limb) is left unfilled.
 pub fn render_sphere_svg(caps: &[super::sphere::Cap<f64>]) -> String {
     let stroke = 0.003;
     let mut s = String::new();
