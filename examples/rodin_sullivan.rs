@@ -4,7 +4,7 @@
 //! convergence without a rate).
 //!
 //! ```sh
-//! cargo run --release --example rodin_sullivan -- 6    # ε = 1/4 … 1/128
+//! cargo run --release --example rodin_sullivan -- 5    # ε = 1/4 … 1/64 (1/128: proofs/T12, Limits)
 //! ```
 
 use penner::theorems::t12_rodin_sullivan::{
