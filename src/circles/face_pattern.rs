@@ -113,7 +113,7 @@ fn check_input(mesh: &Mesh, phi: &[f64]) -> Result<(), FacePatternError> {
     if let Some((edge, &p)) = phi
         .iter()
         .enumerate()
-        .find(|(_, p)| !(p.is_finite() && **p > 0.0 && **p < PI))
+        .find(|(_, p)| !p.is_finite() || **p <= 0.0 || **p >= PI)
     {
         return Err(FacePatternError::AngleOutOfRange { edge, phi: p });
     }
@@ -334,7 +334,7 @@ pub fn edge_lengths(mesh: &Mesh, pattern: &FacePattern) -> Vec<f64> {
         .map(|e| {
             let h = e.halfedge();
             let h = if mesh.face(h).is_some() { h } else { h.twin() };
-            let f = mesh.face(h).map_or(0, |f| f.idx());
+            let f = mesh.face(h).map_or(0, crate::mesh::Face::idx);
             2.0 * pattern.rho[f].exp() * pattern.opposite[h.idx()].sin()
         })
         .collect()

@@ -136,6 +136,7 @@ pub fn hex_complex(
 }
 
 type Tri = [(i64, i64); 3];
+type LatticeEdge = ((i64, i64), (i64, i64));
 
 /// The edge-connected component of the triangles at `(0, 0)`, pinches removed (module
 /// docs), repeated until stable.
@@ -201,7 +202,7 @@ fn fans(around: &[Tri]) -> Vec<Vec<Tri>> {
 
 /// The triangles edge-connected to one with corner `(0, 0)`.
 fn component_at_origin(tris: &[Tri]) -> Vec<Tri> {
-    let mut by_edge: HashMap<((i64, i64), (i64, i64)), Vec<usize>> = HashMap::new();
+    let mut by_edge: HashMap<LatticeEdge, Vec<usize>> = HashMap::new();
     for (k, t) in tris.iter().enumerate() {
         for e in 0..3 {
             let (a, b) = (t[e], t[(e + 1) % 3]);

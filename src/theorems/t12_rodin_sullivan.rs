@@ -192,7 +192,7 @@ pub fn check_refinement(levels: &[Level]) -> Verdict {
     let witnesses: Vec<Witness> = levels
         .windows(2)
         .zip(local_rates(levels))
-        .filter(|(_, r)| !(*r >= MIN_LOCAL_RATE))
+        .filter(|(_, r)| r.is_nan() || *r < MIN_LOCAL_RATE)
         .map(|(w, r)| Witness {
             element: format!("ε = {}", w[1].spacing),
             detail: format!(

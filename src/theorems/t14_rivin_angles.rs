@@ -107,7 +107,7 @@ pub fn check_rivin_angles(mesh: &Mesh, points: &[[f64; 2]]) -> RivinReport {
     let ladder = Ladder::default();
     let (mut refused, mut undecided) = (Vec::new(), Vec::new());
     for f in mesh.faces() {
-        let [a, b, c] = mesh.face_vertices(f).map(|v| v.idx());
+        let [a, b, c] = mesh.face_vertices(f).map(crate::mesh::Vertex::idx);
         match orient2d(&exact[a], &exact[b], &exact[c], &ladder).value() {
             Some(Sign::Positive) => {}
             Some(_) => refused.push(format!("f{}: not positively oriented", f.idx())),
@@ -266,17 +266,14 @@ pub fn angle_error_bounds(mesh: &Mesh, phi: &[f64], pattern: &FacePattern) -> Op
     for h in mesh.halfedges() {
         let Some(f) = mesh.face(h) else { continue };
         let p = phi[h.edge().idx()];
-        match mesh.face(h.twin()) {
-            Some(g) => {
-                let x = pattern.rho[f.idx()] - pattern.rho[g.idx()];
-                w[h.idx()] = face_weight(x, p);
-                d[h.idx()] = face_angle_dphi(x, p).abs();
-                eval[h.idx()] = U * (4.5 + 8.0 * PI + 8.0 * (1.0 + (-x).exp()) * w[h.idx()]);
-            }
-            None => {
-                d[h.idx()] = 1.0;
-                eval[h.idx()] = 1.4 * U * PI;
-            }
+        if let Some(g) = mesh.face(h.twin()) {
+            let x = pattern.rho[f.idx()] - pattern.rho[g.idx()];
+            w[h.idx()] = face_weight(x, p);
+            d[h.idx()] = face_angle_dphi(x, p).abs();
+            eval[h.idx()] = U * (4.5 + 8.0 * PI + 8.0 * (1.0 + (-x).exp()) * w[h.idx()]);
+        } else {
+            d[h.idx()] = 1.0;
+            eval[h.idx()] = 1.4 * U * PI;
         }
     }
     let mut true_residual = 0.0_f64;
