@@ -18,11 +18,16 @@
 //!   realize a triangulation as a packing or pattern (the `circle_packing` and
 //!   `circle_pattern` claims of `penner certify`).
 //! - [`harmonic`]: harmonic maps of disks to convex polygons (T36).
+//! - [`hexagonal`]: hexagonal lattice complexes of planar domains (Rodin–Sullivan, T12).
+//! - [`face_pattern`]: circle patterns with one circle per face from intersection angles
+//!   (Rivin angle systems, T14).
 //! - [`rivin`]: Rivin weights of ideal polyhedra and Farkas certificates of their
 //!   infeasibility (T34).
 
 pub mod certify;
+pub mod face_pattern;
 pub mod harmonic;
+pub mod hexagonal;
 pub mod jacobian;
 pub mod layout;
 pub mod linalg;

@@ -116,7 +116,8 @@ pub enum Command {
     Pack {
         /// The surface file.
         surface: PathBuf,
-        /// Write an SVG picture of the laid-out packing to this new file.
+        /// Write an SVG picture of the laid-out packing to this new file (`--sphere`: the caps
+        /// on the unit sphere, seen orthographically).
         #[arg(long, value_name = "FILE")]
         svg: Option<PathBuf>,
         /// The maximal packing of a disk: horocycles on the boundary, laid out in the unit

@@ -1,14 +1,15 @@
 //! `penner pack SURFACE (--disk | --sphere)`: the Koebe–Andreev–Thurston maximal packing
 //! (`penner::circles::maximal`, proofs/T11), refined at `--bits`, tangency certified within
-//! `--epsilon` (B95, B96), written as JSON (`-o`) and drawn as SVG (`--svg`).
+//! `--epsilon` (B95, B96), written as JSON (`-o`) and drawn as SVG (`--svg`: the unit disk,
+//! or for `--sphere` the caps on the sphere in an orthographic view).
 
 use super::error::{code, CliError};
 use super::files::{create_new, emit};
 use super::input::load_case;
 use penner::circles::maximal::layout::Circle;
-use penner::circles::maximal::sphere::{check_sphere_packing, exact_caps, ExactCap};
+use penner::circles::maximal::sphere::{check_sphere_packing, exact_caps, Cap, ExactCap};
 use penner::circles::maximal::stopping::bits_for;
-use penner::circles::maximal::svg::render_disk_svg;
+use penner::circles::maximal::svg::{render_disk_svg, render_sphere_svg};
 use penner::circles::maximal::tangency::{check_packing, exact_circles, PackingVerdict};
 use penner::circles::maximal::{
     maximal_disk, maximal_disk_within, maximal_sphere, DiskPacking, Options as Opts,
@@ -54,6 +55,24 @@ fn to_f64<T: Real>(circles: &[Circle<T>]) -> Vec<Circle<f64>> {
         .map(|c| Circle {
             centre: [c.centre[0].approx_f64(), c.centre[1].approx_f64()],
             radius: c.radius.approx_f64(),
+        })
+        .collect()
+}
+
+/// The caps as `f64` for the picture, normals rescaled to unit length.
+fn caps_f64(caps: &[ExactCap]) -> Vec<Cap<f64>> {
+    caps.iter()
+        .map(|c| {
+            let n = [
+                c.normal[0].to_f64(),
+                c.normal[1].to_f64(),
+                c.normal[2].to_f64(),
+            ];
+            let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+            Cap {
+                normal: n.map(|x| x / len),
+                height: c.height.to_f64() / len,
+            }
         })
         .collect()
 }
@@ -183,7 +202,11 @@ pub fn run(o: &Options) -> Result<u8, CliError> {
         let _ = writeln!(text, "wrote {}", out.display());
     }
     if let Some(out) = o.svg {
-        write_new(out, &render_disk_svg(&disk.mesh, &to_f64(&disk.circles)))?;
+        let doc = match &caps {
+            Some(c) => render_sphere_svg(&caps_f64(c)),
+            None => render_disk_svg(&disk.mesh, &to_f64(&disk.circles)),
+        };
+        write_new(out, &doc)?;
         let _ = writeln!(text, "wrote {}", out.display());
     }
     emit(&text)?;
