@@ -4,6 +4,7 @@
 //! API:
 //! - `pub fn check_weights_determine_metric<T: Real>(mesh: &Mesh, lengths: &[T], settings: &Settings) -> Verdict`
 //! - `pub fn verify_weights_determine_metric<T: Real>(mesh: &Mesh, lengths: &[T], weights: &[T], settings: &Settings) -> Verdict`
+//! - `pub fn verify_weight_boxes<T: Real>(mesh: &Mesh, lengths: &[T], boxes: &[Interval<Mpfr>], settings: &Settings) -> Verdict`
 //! - `pub fn weight_enclosures<T: Real>(mesh: &Mesh, lengths: &[T]) -> Option<Vec<Interval<Mpfr>>>`
 //!
 //! The metric is recovered from the weights by the convex solve of
@@ -20,17 +21,18 @@ use crate::predicates::tolerance::abs_at_most_scaled;
 use crate::scalar::{Interval, Mpfr, Precision, Real};
 use crate::variational::weights::metric_from_weights;
 
-/// Extra bits of the weight enclosures over the working precision (proof: B31): the
-/// enclosures are rigorous at any precision; more bits only make them narrower.
-pub const ENCLOSURE_EXTRA_BITS: u32 = 32;
+/// The weight enclosures run at `4p + ENCLOSURE_EXTRA_BITS` bits for working precision
+/// `p ≥ 53` (proof: B31): rigorous at any precision, more bits only make them narrower —
+/// needed on needles, where `b² + c² − a²` cancels to `10⁻⁴⁸` of its terms at sides `10⁻²⁴`.
+pub const ENCLOSURE_EXTRA_BITS: u32 = 64;
 
 /// Rigorous enclosures of the cotan weights `w_e = ½(cot α + cot β)` of the exact metric
 /// `lengths` (each length read as the exact rational it stores), on `Interval<Mpfr>` at
-/// the working precision plus [`ENCLOSURE_EXTRA_BITS`] (proof: B31, B20). `None` when a
-/// length has no exact value (NaN, ±∞).
+/// four times the working precision plus [`ENCLOSURE_EXTRA_BITS`] (proof: B31, B20).
+/// `None` when a length has no exact value (NaN, ±∞).
 pub fn weight_enclosures<T: Real>(mesh: &Mesh, lengths: &[T]) -> Option<Vec<Interval<Mpfr>>> {
     let z = lengths.first()?;
-    let bits = T::precision_bits(z.ctx()).max(53) + ENCLOSURE_EXTRA_BITS;
+    let bits = 4 * T::precision_bits(z.ctx()).max(53) + ENCLOSURE_EXTRA_BITS;
     let p = Precision::new(u64::from(bits)).ok()?;
     let l: Vec<Interval<Mpfr>> = lengths
         .iter()
@@ -39,23 +41,23 @@ pub fn weight_enclosures<T: Real>(mesh: &Mesh, lengths: &[T]) -> Option<Vec<Inte
     Some(cotan_weights(mesh, &l))
 }
 
-/// proofs/B31: the edges whose given weight lies outside the enclosure of the metric's own
-/// weight, as certified witnesses. Weights are invariant under scaling, so each such edge
-/// proves that no scaling of `lengths` has the weights `weights`: the metric they
-/// determine (if any) is another one. `None` when no edge is proven different.
+/// proofs/B31: the edges whose given weight box is disjoint from the enclosure of the
+/// metric's own weight, as certified witnesses. Weights are invariant under scaling, so
+/// each such edge proves that no scaling of `lengths` has weights in the boxes: the metric
+/// they determine (if any) is another one. `None` when no edge is proven different.
 fn weights_proven_different<T: Real>(
     mesh: &Mesh,
     lengths: &[T],
-    weights: &[T],
+    boxes: &[Interval<Mpfr>],
 ) -> Option<Verdict> {
     let enc = weight_enclosures(mesh, lengths)?;
     let bits = T::precision_bits(lengths.first()?.ctx());
     let mut tally = Tally::new(true, bits);
-    for (e, (w, given)) in enc.iter().zip(weights).enumerate() {
-        let Some(q) = given.to_rational() else {
-            continue;
-        };
-        if w.is_valid() && !w.contains_rational(&q) {
+    for (e, (w, given)) in enc.iter().zip(boxes).enumerate() {
+        let apart = w.is_valid()
+            && given.is_valid()
+            && (given.hi().0 < w.lo().0 || given.lo().0 > w.hi().0);
+        if apart {
             let (lo, hi) = (w.lo().approx_f64(), w.hi().approx_f64());
             tally.fail(
                 format!("e{e}"),
@@ -113,11 +115,58 @@ pub fn verify_weights_determine_metric<T: Real>(
             reason: format!("{} weights for {} edges", weights.len(), mesh.n_edges()),
         };
     }
+    let boxes: Option<Vec<Interval<Mpfr>>> = weight_enclosures(mesh, lengths).and_then(|enc| {
+        let p = enc.first()?.ctx();
+        weights
+            .iter()
+            .map(|w| Some(Interval::from_rational(&w.to_rational()?, p)))
+            .collect()
+    });
     // proof: B31
-    if let Some(v) = weights_proven_different(mesh, lengths, weights) {
+    if let Some(v) = boxes.and_then(|b| weights_proven_different(mesh, lengths, &b)) {
         return v;
     }
     recover_and_compare(mesh, lengths, weights, settings)
+}
+
+/// [`verify_weights_determine_metric`] for weights known as boxes (one enclosure per
+/// edge, e.g. of weights computed from another metric): `fails`, certified, when a box is
+/// disjoint from the enclosure of the metric's own weight (proofs/B31); otherwise the
+/// recovery from the boxes' midpoints (rounded to `T`) compared as there (`holds`
+/// numerical or `undecided`).
+pub fn verify_weight_boxes<T: Real>(
+    mesh: &Mesh,
+    lengths: &[T],
+    boxes: &[Interval<Mpfr>],
+    settings: &Settings,
+) -> Verdict {
+    if let Some(v) = check_lengths(mesh, lengths).or_else(|| lengths_out_of_range(lengths)) {
+        return v;
+    }
+    if boxes.len() != mesh.n_edges() {
+        return Verdict::NotApplicable {
+            reason: format!("{} weights for {} edges", boxes.len(), mesh.n_edges()),
+        };
+    }
+    // proof: B31
+    if let Some(v) = weights_proven_different(mesh, lengths, boxes) {
+        return v;
+    }
+    let ctx = lengths[0].ctx();
+    let mid: Option<Vec<T>> = boxes
+        .iter()
+        .map(|b| {
+            let m = (b.lo().0.to_rational()? + b.hi().0.to_rational()?) / 2u32;
+            Some(T::from_rational(&m, ctx))
+        })
+        .collect();
+    match mid {
+        Some(w) => recover_and_compare(mesh, lengths, &w, settings),
+        None => Verdict::Undecided {
+            bits_tried: T::precision_bits(ctx),
+            witnesses: Vec::new(),
+        },
+    }
 }
 
 /// The recovery and the B59 comparison of [`verify_weights_determine_metric`]: `holds`

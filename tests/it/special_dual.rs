@@ -68,7 +68,10 @@ fn b30_dual_fast_path_matches_the_mpfr_derivative() {
         };
         let diff = (exact - &reference).approx_f64();
         let tol = 18.0 * udd + 18.0 * udd * l + f64::MIN_POSITIVE;
-        assert!(diff.abs() <= tol, "Dd {x}: Л′ off by {diff:e} (tol {tol:e}), {r}");
+        assert!(
+            diff.abs() <= tol,
+            "Dd {x}: Л′ off by {diff:e} (tol {tol:e}), {r}"
+        );
         assert!((diff + 3.0 * tol).abs() > tol && (diff - 3.0 * tol).abs() > tol);
     }
 }

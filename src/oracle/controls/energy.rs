@@ -6,7 +6,6 @@
 // The `at_precision!` bodies are generic code that is also instantiated at `f64`.
 #![allow(clippy::clone_on_copy, clippy::op_ref, clippy::let_unit_value)]
 
-use crate::geometry::cotan::cotan_weights;
 use crate::io::Surface;
 use crate::oracle::checks_energy::{
     beyond_caps, beyond_limits, energy_probe, T06_MAX_EDGES, T31_CAPS, T32_CAPS, T33_CAPS,
@@ -14,17 +13,18 @@ use crate::oracle::checks_energy::{
 use crate::oracle::precision::Prec;
 use crate::oracle::registry::Check;
 use crate::scalar::Real;
-use crate::theorems::t06_cotan_weights_metric::verify_weights_determine_metric;
+use crate::theorems::t06_cotan_weights_metric::{verify_weight_boxes, weight_enclosures};
 use crate::theorems::t31_schlafli::{half_angles, verify_schlafli};
 use crate::theorems::t32_energy::{verify_gradient, EnergyInput};
 use crate::theorems::t33_hyperbolic::verify_hyperbolic_gradient;
 use crate::theorems::{Settings, Verdict};
 use crate::variational::{energy, hyperbolic};
 
-/// T06-NC: the case's own cotan weights with `w_1` raised by `10⁻³·(1 + |w_1|)`, far
-/// beyond the width of its enclosure at every precision (proofs/B31), whichever its sign.
-/// No scaling of the case's metric has these weights, which the exact comparison of
-/// [`verify_weights_determine_metric`] proves (`fails`, certified, witness `e1`).
+/// T06-NC: enclosures of the case's own cotan weights (which contain the exact weights,
+/// so without the raise nothing can be refuted) with the box of `w_1` moved up by
+/// `10⁻³·(1 + |w_1|)`, far beyond its width (proofs/B31), whichever the sign of `w_1`.
+/// No scaling of the case's metric has such weights, which the comparison of
+/// [`verify_weight_boxes`] proves (`fails`, certified, witness `e1`).
 fn t06_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
     if case.mesh.n_edges() > T06_MAX_EDGES || case.mesh.n_edges() < 2 {
         return Some(super::not_applicable(
@@ -35,10 +35,10 @@ fn t06_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
         return Some(v);
     }
     at_precision!(prec, case, |l: T| {
-        let mut w = cotan_weights(&case.mesh, &l);
+        let mut w = weight_enclosures(&case.mesh, &l)?;
         let bump = (w[1].abs() + &w[1].one_like()) * &w[1].lit(1e-3);
         w[1] += &bump;
-        Some(verify_weights_determine_metric(&case.mesh, &l, &w, s))
+        Some(verify_weight_boxes(&case.mesh, &l, &w, s))
     })
 }
 
