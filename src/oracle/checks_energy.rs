@@ -58,17 +58,77 @@ pub fn directions<T: Real>(n: usize, like: &T) -> Vec<Vec<T>> {
     out
 }
 
-/// Faces above which T32 and T33 answer `NotApplicable` (their dual and finite-difference
-/// evaluations cost several energy evaluations per direction, each with three Lobachevsky
-/// series per face).
-pub const MAX_FACES: usize = 2_000;
+/// Faces up to which a check runs, per backend (proofs/B32): `Л` and its derivative run
+/// without MPFR at `f64` and `Dd` (B30, B53, B55), each MPFR row evaluates its series at
+/// `p/2 + 4` terms per call.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FaceCaps {
+    /// At `f64`.
+    pub f64: usize,
+    /// At `Dd`.
+    pub dd: usize,
+    /// At MPFR (and exact, where a check has that form).
+    pub mpfr: usize,
+    /// What costs the time, for the `NotApplicable` reason.
+    pub why: &'static str,
+}
 
-/// Faces above which T31 answers `NotApplicable` (nine dual Lobachevsky series per face).
-pub const T31_MAX_FACES: usize = 20_000;
+impl FaceCaps {
+    /// The cap at precision `prec`.
+    pub fn at(&self, prec: Prec) -> usize {
+        match prec {
+            Prec::F64 => self.f64,
+            Prec::Dd => self.dd,
+            _ => self.mpfr,
+        }
+    }
+}
+
+/// T31: nine dual `Л` per face (costs measured in proofs/B32).
+pub const T31_CAPS: FaceCaps = FaceCaps {
+    f64: 1_000_000,
+    dd: 200_000,
+    mpfr: 20_000,
+    why: "nine dual Lobachevsky series per face",
+};
+
+/// T32: its comparison (2) encloses `E′(u)·d` by central differences on `Interval<Mpfr>`
+/// at twice the working precision, at every precision (costs in proofs/B32).
+pub const T32_CAPS: FaceCaps = FaceCaps {
+    f64: 2_000,
+    dd: 2_000,
+    mpfr: 2_000,
+    why: "its difference enclosure evaluates E on MPFR intervals at twice the precision",
+};
+
+/// T33: dual hyperbolic angles (`Dd` time goes to its `exp`) and `Л` per face (costs in
+/// proofs/B32).
+pub const T33_CAPS: FaceCaps = FaceCaps {
+    f64: 1_000_000,
+    dd: 50_000,
+    mpfr: 2_000,
+    why: "dual hyperbolic angles and Lobachevsky series per face",
+};
 
 /// Precision (bits) above which T06 and T31–T33 answer `NotApplicable`: the Lobachevsky
 /// series has `p/2 + 4` terms and T32's central difference runs at `2p` bits.
 pub const MAX_BITS: u32 = 512;
+
+/// `NotApplicable` past the cap of `caps` at `prec` or past [`MAX_BITS`] bits, naming
+/// the limit.
+pub fn beyond_caps(case: &Surface, prec: Prec, caps: &FaceCaps) -> Option<Verdict> {
+    let cap = caps.at(prec);
+    if case.mesh.n_faces() > cap {
+        return Some(Verdict::NotApplicable {
+            reason: format!(
+                "{} faces: at {prec} this check runs on surfaces up to {cap} faces ({})",
+                case.mesh.n_faces(),
+                caps.why
+            ),
+        });
+    }
+    beyond_limits(case, prec, usize::MAX)
+}
 
 /// `NotApplicable` past `max_faces` faces or [`MAX_BITS`] bits, naming the limit.
 pub fn beyond_limits(case: &Surface, prec: Prec, max_faces: usize) -> Option<Verdict> {
@@ -87,10 +147,6 @@ pub fn beyond_limits(case: &Surface, prec: Prec, max_faces: usize) -> Option<Ver
     (bits > MAX_BITS).then(|| Verdict::NotApplicable {
         reason: format!("{bits} bits: this check runs up to {MAX_BITS} bits"),
     })
-}
-
-fn too_big(case: &Surface, prec: Prec) -> Option<Verdict> {
-    beyond_limits(case, prec, MAX_FACES)
 }
 
 /// Edges above which T06 answers `NotApplicable` (its Newton solve is dense).
@@ -114,7 +170,7 @@ fn t06(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
 }
 
 fn t31(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
-    if let Some(v) = beyond_limits(case, prec, T31_MAX_FACES) {
+    if let Some(v) = beyond_caps(case, prec, &T31_CAPS) {
         return Some(v);
     }
     at_precision!(prec, case, |l: T| Some(t31_schlafli::check_schlafli(
@@ -123,7 +179,7 @@ fn t31(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
 }
 
 fn t32(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
-    if let Some(v) = too_big(case, prec) {
+    if let Some(v) = beyond_caps(case, prec, &T32_CAPS) {
         return Some(v);
     }
     at_precision!(prec, case, |l: T| {
@@ -141,7 +197,7 @@ fn t32(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
 }
 
 fn t33(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
-    if let Some(v) = too_big(case, prec) {
+    if let Some(v) = beyond_caps(case, prec, &T33_CAPS) {
         return Some(v);
     }
     at_precision!(prec, case, |l: T| {

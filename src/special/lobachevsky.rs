@@ -123,6 +123,9 @@ pub fn lobachevsky<T: Real>(x: &T) -> T {
     if let Some(v) = cast::<T, Interval<f64>>(x) {
         return cast::<Interval<f64>, T>(&interval_f64(&v)).unwrap_or_else(|| nan_like(x));
     }
+    if let Some(y) = super::dual_fast::lobachevsky_dual(x) {
+        return y;
+    }
     let ctx = x.ctx();
     let Some(a) = x.to_rational() else {
         return nan_like(x);

@@ -3,6 +3,7 @@
 //! of the discrete-uniformization energy. Accuracy and enclosure bounds: proofs/B52, B53.
 
 mod coefficients;
+mod dual_fast;
 mod enclosure;
 mod eval;
 mod fast_dd;

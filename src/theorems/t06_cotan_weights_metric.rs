@@ -4,38 +4,103 @@
 //! API:
 //! - `pub fn check_weights_determine_metric<T: Real>(mesh: &Mesh, lengths: &[T], settings: &Settings) -> Verdict`
 //! - `pub fn verify_weights_determine_metric<T: Real>(mesh: &Mesh, lengths: &[T], weights: &[T], settings: &Settings) -> Verdict`
+//! - `pub fn verify_weight_boxes<T: Real>(mesh: &Mesh, lengths: &[T], boxes: &[Interval<Mpfr>], settings: &Settings) -> Verdict`
+//! - `pub fn weight_enclosures<T: Real>(mesh: &Mesh, lengths: &[T]) -> Option<Vec<Interval<Mpfr>>>`
 //!
 //! The metric is recovered from the weights by the convex solve of
-//! [`crate::variational::weights`] (gauge `q_0 = 1`) and compared with `ℓ_e²/ℓ_0²`.
+//! [`crate::variational::weights`] (gauge `q_0 = 1`) and compared with `ℓ_e²/ℓ_0²`
+//! (numerical, B59). A refutation is only ever the exact one of proofs/B31: the given
+//! metric's weights, enclosed, exclude a given weight.
 
-use super::bounds::{cot_error, eps, EPS_F64, SAFETY};
+use super::bounds::{cot_error, eps, eps_shift, EPS_F64, SAFETY};
 use super::report::{check_lengths, lengths_out_of_range, Tally};
 use super::verdict::{Settings, Verdict};
 use crate::geometry::cotan::cotan_weights;
 use crate::mesh::Mesh;
-use crate::scalar::Real;
+use crate::predicates::tolerance::abs_at_most_scaled;
+use crate::scalar::{Interval, Mpfr, Precision, Real};
 use crate::variational::weights::metric_from_weights;
 
-/// T06, numerical: [`verify_weights_determine_metric`] with the metric's own weights.
+/// The weight enclosures run at `4p + ENCLOSURE_EXTRA_BITS` bits for working precision
+/// `p ≥ 53` (proof: B31): rigorous at any precision, more bits only make them narrower —
+/// needed on needles, where `b² + c² − a²` cancels to `10⁻⁴⁸` of its terms at sides `10⁻²⁴`.
+pub const ENCLOSURE_EXTRA_BITS: u32 = 64;
+
+/// Rigorous enclosures of the cotan weights `w_e = ½(cot α + cot β)` of the exact metric
+/// `lengths` (each length read as the exact rational it stores), on `Interval<Mpfr>` at
+/// four times the working precision plus [`ENCLOSURE_EXTRA_BITS`] (proof: B31, B20).
+/// `None` when a length has no exact value (NaN, ±∞).
+pub fn weight_enclosures<T: Real>(mesh: &Mesh, lengths: &[T]) -> Option<Vec<Interval<Mpfr>>> {
+    let z = lengths.first()?;
+    let bits = 4 * T::precision_bits(z.ctx()).max(53) + ENCLOSURE_EXTRA_BITS;
+    let p = Precision::new(u64::from(bits)).ok()?;
+    let l: Vec<Interval<Mpfr>> = lengths
+        .iter()
+        .map(|x| x.to_rational().map(|q| Interval::from_rational(&q, p)))
+        .collect::<Option<_>>()?;
+    Some(cotan_weights(mesh, &l))
+}
+
+/// proofs/B31: the edges whose given weight box is disjoint from the enclosure of the
+/// metric's own weight, as certified witnesses. Weights are invariant under scaling, so
+/// each such edge proves that no scaling of `lengths` has weights in the boxes: the metric
+/// they determine (if any) is another one. `None` when no edge is proven different.
+fn weights_proven_different<T: Real>(
+    mesh: &Mesh,
+    lengths: &[T],
+    boxes: &[Interval<Mpfr>],
+) -> Option<Verdict> {
+    let enc = weight_enclosures(mesh, lengths)?;
+    let bits = T::precision_bits(lengths.first()?.ctx());
+    let mut tally = Tally::new(true, bits);
+    for (e, (w, given)) in enc.iter().zip(boxes).enumerate() {
+        let apart = w.is_valid()
+            && given.is_valid()
+            && (given.hi().0 < w.lo().0 || given.lo().0 > w.hi().0);
+        if apart {
+            let (lo, hi) = (w.lo().approx_f64(), w.hi().approx_f64());
+            tally.fail(
+                format!("e{e}"),
+                format!(
+                    "the metric's weight lies in [{lo:.17e}, {hi:.17e}], the given one outside: \
+                     no scaling of the metric has these weights"
+                ),
+                given.approx_f64() - 0.5 * (lo + hi),
+            );
+        }
+    }
+    (!tally.is_clean()).then(|| tally.verdict())
+}
+
+/// T06 on the metric `lengths`: its cotan weights, computed at the working precision,
+/// recovered by [`metric_from_weights`] and compared with `ℓ_e²/ℓ_0²` as in
+/// [`verify_weights_determine_metric`]. Never `fails` (proofs/B31): the computed weights
+/// are the metric's only up to rounding, so no exact comparison applies, and a recovered
+/// metric beyond the first-order bound of B59 is no proof of a second metric (undecided).
 pub fn check_weights_determine_metric<T: Real>(
     mesh: &Mesh,
     lengths: &[T],
     settings: &Settings,
 ) -> Verdict {
-    if let Some(v) = check_lengths(mesh, lengths) {
+    if let Some(v) = check_lengths(mesh, lengths).or_else(|| lengths_out_of_range(lengths)) {
         return v;
     }
     let w = cotan_weights(mesh, lengths);
-    verify_weights_determine_metric(mesh, lengths, &w, settings)
+    recover_and_compare(mesh, lengths, &w, settings)
 }
 
-/// The metric with cotan weights `weights` is `lengths` up to scale: the squared lengths
-/// `q̂` recovered by [`metric_from_weights`] must equal `q*_e = ℓ_e²/ℓ_0²` within
-/// proofs/B59: `SAFETY Σ_j |(H⁻¹)_{ej}| (|r_j| + Δw_j) + 4ε q*_e`, `H` the reduced Hessian
-/// at `q̂`, `r` the residual `w − w(q̂)` and `Δw_j` the B44 errors of both weight
-/// evaluations. An edge beyond it is a witness (the weights then determine another metric,
-/// or none); a solve that does not converge is undecided. Defined for closed surfaces and
-/// surfaces with boundary alike; the gauge edge is edge 0.
+/// The metric with cotan weights `weights` (exact as given) is `lengths` up to scale.
+///
+/// `Fails`, certified, only by proofs/B31: an edge whose given weight lies outside the
+/// rigorous enclosure of the metric's own weight ([`weight_enclosures`]) proves that no
+/// scaling of `lengths` has these weights (they determine another metric, or none).
+/// Otherwise the squared lengths `q̂` recovered by [`metric_from_weights`] are compared
+/// with `q*_e = ℓ_e²/ℓ_0²` within proofs/B59
+/// (`SAFETY Σ_j |(H⁻¹)_{ej}| (|r_j| + Δw_j) + 4ε q*_e`, `H` the reduced Hessian at `q̂`,
+/// `r` the residual `w − w(q̂)`, `Δw_j` the B44 errors of both weight evaluations):
+/// `holds` (numerical) within it, `undecided` beyond it or when the solve does not
+/// converge — B59 is first order, so an edge beyond it proves nothing. Defined for closed
+/// surfaces and surfaces with boundary alike; the gauge edge is edge 0.
 pub fn verify_weights_determine_metric<T: Real>(
     mesh: &Mesh,
     lengths: &[T],
@@ -50,8 +115,71 @@ pub fn verify_weights_determine_metric<T: Real>(
             reason: format!("{} weights for {} edges", weights.len(), mesh.n_edges()),
         };
     }
+    let boxes: Option<Vec<Interval<Mpfr>>> = weight_enclosures(mesh, lengths).and_then(|enc| {
+        let p = enc.first()?.ctx();
+        weights
+            .iter()
+            .map(|w| Some(Interval::from_rational(&w.to_rational()?, p)))
+            .collect()
+    });
+    // proof: B31
+    if let Some(v) = boxes.and_then(|b| weights_proven_different(mesh, lengths, &b)) {
+        return v;
+    }
+    recover_and_compare(mesh, lengths, weights, settings)
+}
+
+/// [`verify_weights_determine_metric`] for weights known as boxes (one enclosure per
+/// edge, e.g. of weights computed from another metric): `fails`, certified, when a box is
+/// disjoint from the enclosure of the metric's own weight (proofs/B31); otherwise the
+/// recovery from the boxes' midpoints (rounded to `T`) compared as there (`holds`
+/// numerical or `undecided`).
+pub fn verify_weight_boxes<T: Real>(
+    mesh: &Mesh,
+    lengths: &[T],
+    boxes: &[Interval<Mpfr>],
+    settings: &Settings,
+) -> Verdict {
+    if let Some(v) = check_lengths(mesh, lengths).or_else(|| lengths_out_of_range(lengths)) {
+        return v;
+    }
+    if boxes.len() != mesh.n_edges() {
+        return Verdict::NotApplicable {
+            reason: format!("{} weights for {} edges", boxes.len(), mesh.n_edges()),
+        };
+    }
+    // proof: B31
+    if let Some(v) = weights_proven_different(mesh, lengths, boxes) {
+        return v;
+    }
+    let ctx = lengths[0].ctx();
+    let mid: Option<Vec<T>> = boxes
+        .iter()
+        .map(|b| {
+            let m = (b.lo().0.to_rational()? + b.hi().0.to_rational()?) / 2u32;
+            Some(T::from_rational(&m, ctx))
+        })
+        .collect();
+    match mid {
+        Some(w) => recover_and_compare(mesh, lengths, &w, settings),
+        None => Verdict::Undecided {
+            bits_tried: T::precision_bits(ctx),
+            witnesses: Vec::new(),
+        },
+    }
+}
+
+/// The recovery and the B59 comparison of [`verify_weights_determine_metric`]: `holds`
+/// (numerical) or `undecided`, never `fails` (proof: B31).
+fn recover_and_compare<T: Real>(
+    mesh: &Mesh,
+    lengths: &[T],
+    weights: &[T],
+    settings: &Settings,
+) -> Verdict {
     let ctx = lengths[0].ctx();
     let (e, bits) = (eps::<T>(ctx), T::precision_bits(ctx));
+    let shift = eps_shift(bits);
     let mut tally = Tally::new(false, bits);
     let Some(sol) = metric_from_weights(mesh, weights, 0) else {
         tally.undecided("surface", "the Newton system is singular", f64::NAN);
@@ -125,6 +253,18 @@ pub fn verify_weights_determine_metric<T: Real>(
             f64::INFINITY
         };
         let d = sol.q[edge].clone() - &qstar;
+        // proof: B31 — beyond a first-order bound is no refutation.
+        if abs_at_most_scaled(&d, tol, shift) == Some(false) {
+            tally.undecided(
+                format!("e{edge}"),
+                format!(
+                    "recovered ℓ²/ℓ₀² − given beyond the first-order bound {tol:.3e} \
+                     (B59; not a proof of another metric)"
+                ),
+                d.approx_f64(),
+            );
+            continue;
+        }
         tally.within(format!("e{edge}"), "recovered ℓ²/ℓ₀² − given", &d, tol);
     }
     tally.verdict()

@@ -64,6 +64,7 @@ mod scalar_nearest;
 mod sharding;
 mod special;
 mod special_dd;
+mod special_dual;
 #[cfg(feature = "strategies")]
 mod strategies;
 #[allow(dead_code)] // helpers used by some areas only

@@ -13,6 +13,21 @@ use rug::Float;
 /// B55: the double-double evaluation is within this many units of `2^(e−106)` of `Л(x)`.
 const DD_ULPS: f64 = 4.0; // proof: B55
 
+/// Negative control of an accuracy test with allowance `allow` units: `y` moved by
+/// `3·allow` units up and down is more than `allow` (indeed at least `2·allow − ½`, the
+/// half unit for rounding the moved trailing word) from `r`, whichever side of `r` `y` is.
+fn assert_bumps_rejected(y: Dd, r: &Float, unit: f64, allow: f64, x: &Dd) {
+    for side in [1.0, -1.0] {
+        let bumped = Dd::from_parts(y.hi, y.lo + side * 3.0 * allow * unit);
+        let moved = dd_ulps(bumped, r);
+        assert!(
+            moved > allow && moved >= 2.0 * allow - 0.5,
+            "control at {x:?}: moved {side:+} by {} units, only {moved} from r",
+            3.0 * allow
+        );
+    }
+}
+
 /// `|y − r|` in units of `2^(e−106)`, `r = m·2ᵉ`, `m ∈ [1/2, 1)`; below `2⁻⁹⁶⁸` the unit
 /// is `2⁻¹⁰⁷⁵` (a double-double's absolute floor, B09).
 fn dd_ulps(y: Dd, r: &Float) -> f64 {
@@ -96,11 +111,11 @@ fn b55_dd_within_few_ulps_of_the_tangent_series() {
             worst = (e, x.hi);
         }
         assert!(e <= DD_ULPS, "Л({x:?}) = {y:?}: {e} ulps from {r}");
-        // Negative control: 8 units away is rejected by the same measure.
+        // Negative control: 3·DD_ULPS units away on either side is rejected by the same
+        // measure (at least 2·DD_ULPS from r whatever the sign of y's own error).
         if !r.is_zero() {
             let unit = 2f64.powi((r.get_exp().unwrap_or(0) - 106).max(-1075));
-            let bumped = Dd::from_parts(y.hi, y.lo + 8.0 * unit);
-            assert!(dd_ulps(bumped, &r) > DD_ULPS, "control at {x:?}");
+            assert_bumps_rejected(y, &r, unit, DD_ULPS, &x);
         }
     }
     eprintln!("Dd worst {} ulps at {:e}", worst.0, worst.1);
@@ -157,15 +172,14 @@ fn b55_dd_wide_arguments_reduced_by_payne_hanek() {
             worst = (e, x.hi);
         }
         assert!(e <= DD_WIDE_ULPS, "Л({x:?}) = {y:?}: {e} ulps from {r}");
-        // Negative control: the value moved by 16 units, more than twice the allowance (at
-        // least 16 subnormal steps where the unit is below the smallest binary64), is
+        // Negative control: the value moved by 3·DD_WIDE_ULPS units up and down (at least
+        // that many subnormal steps where the unit is below the smallest binary64) is
         // rejected by the same measure whatever the sign of its own error.
         if !r.is_zero() {
             // 2^k exactly, also below 2⁻¹⁰²² (`powi` underflows through 1/2^|k| there).
             let k = (r.get_exp().unwrap_or(0) - 106).max(-1075);
             let unit = (Float::with_val(64, 1u32) << k).to_f64();
-            let bumped = Dd::from_parts(y.hi, y.lo + 16.0 * unit.max(f64::from_bits(1)));
-            assert!(dd_ulps(bumped, &r) > DD_WIDE_ULPS, "control at {x:?}");
+            assert_bumps_rejected(y, &r, unit.max(f64::from_bits(1)), DD_WIDE_ULPS, &x);
         }
     }
     eprintln!("Dd wide worst {} ulps at {:e}", worst.0, worst.1);

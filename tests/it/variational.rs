@@ -410,25 +410,38 @@ fn t33_sinh_scaling_matches_its_definition() {
 }
 
 /// T06 holds on small random surfaces at f64, Dd and MPFR-160; the weights of another
-/// metric are rejected, and a weight raised by 10⁻⁴ (another metric or none) never holds.
+/// metric, and the metric's weights with one raised by 10⁻⁴, are proven not to be this
+/// metric's (B31: `fails`, certified, the raised edge among the witnesses).
 fn weights_case<T: Real>(m: &Mesh, l: &[f64], ctx: T::Ctx) {
     let lt: Vec<T> = to(l, ctx);
     let s = Settings::default();
     let bits = T::precision_bits(ctx);
     let v = check_weights_determine_metric(m, &lt, &s);
     assert!(v.holds(), "{bits} bits: {v:?}");
-    // Control 1: the weights of another metric (edge 1 longer by 1%) give that metric.
+    // Control 1: the weights of another metric (edge 1 longer by 1%).
     let mut other = lt.clone();
     let bump = other[1].lit(1.01);
     other[1] *= &bump;
     let nc = verify_weights_determine_metric(m, &lt, &cotan_weights(m, &other), &s);
-    assert!(nc.fails(), "control at {bits} bits: {nc:?}");
+    assert_certified_refutation(&nc, bits);
     // Control 2: a weight raised by 10⁻⁴ (generically no metric has these weights).
     let mut w = cotan_weights(m, &lt);
     let bump = w[1].lit(1e-4);
     w[1] += &bump;
     let nc = verify_weights_determine_metric(m, &lt, &w, &s);
-    assert!(!nc.holds(), "control at {bits} bits: {nc:?}");
+    assert_certified_refutation(&nc, bits);
+    assert!(
+        matches!(&nc, Verdict::Fails { witnesses, .. } if witnesses.iter().any(|x| x.element == "e1")),
+        "{bits} bits: {nc:?}"
+    );
+}
+
+/// `Fails { certified: true }` (B31's exact comparison), nothing weaker.
+fn assert_certified_refutation(v: &Verdict, bits: u32) {
+    assert!(
+        matches!(v, Verdict::Fails { certified: true, witnesses } if !witnesses.is_empty()),
+        "control at {bits} bits: {v:?}"
+    );
 }
 
 #[test]
@@ -458,5 +471,91 @@ fn t06_recovered_metric_scales_with_the_gauge_edge() {
             "e{e}: {} vs {expect}",
             a.q[e]
         );
+    }
+}
+
+/// T06 on needles and caps (sides to 10⁻²⁴, where the first-order bound B59 does not
+/// hold): the registry's check gives `holds` or `undecided`, never `fails` (B31), at f64,
+/// Dd and MPFR-256; its control, a weight raised by `10⁻³(1 + |w|)`, is refuted with a
+/// certificate naming only `e1` (B31) wherever the metric has finite weights, and never
+/// holds.
+#[test]
+fn t06_needles_are_never_refuted_and_a_raised_weight_always_is() {
+    use penner::oracle::precision::Prec;
+    let cases: Vec<_> = [3, 9, 16, 24]
+        .into_iter()
+        .flat_map(crate::adversarial_gen::needles_and_caps)
+        .collect();
+    assert!(cases.len() >= 20);
+    let find = |checks: Vec<penner::oracle::registry::Check>, id: &str| {
+        checks.into_iter().find(|c| c.id == id).unwrap()
+    };
+    let check = find(penner::oracle::catalogue(), "T06");
+    let control = find(penner::oracle::controls::controls(), "T06-NC");
+    let s = Settings::default();
+    let precs = [Prec::F64, Prec::Dd, Prec::Mpfr(mpfr(256))];
+    let mut refuted = 0;
+    for case in &cases {
+        for &p in &precs {
+            let v = (check.run)(case, p, &s).unwrap();
+            assert!(!v.fails(), "{} at {p:?}: {v:?}", case.name);
+            let nc = (control.run)(case, p, &s).unwrap();
+            // A cap rounded to a degenerate triangle (1/2 + 10⁻²⁴ at f64) has no finite
+            // weights to enclose: the control is then undecided, never holds.
+            assert!(!nc.holds(), "control on {} at {p:?}: {nc:?}", case.name);
+            if nc.fails() {
+                assert!(
+                    matches!(&nc, Verdict::Fails { certified: true, witnesses }
+                        if witnesses.iter().all(|w| w.element == "e1")),
+                    "control on {} at {p:?}: {nc:?}",
+                    case.name
+                );
+                refuted += 1;
+            }
+        }
+    }
+    // Measured: all but the caps degenerate at f64.
+    assert!(
+        4 * refuted >= 3 * cases.len() * precs.len(),
+        "{refuted} refuted"
+    );
+}
+
+/// B32: past a precision's face cap the registry's T31–T33 answer `NotApplicable` naming
+/// the precision and the cap; below it they run (T31 and T33 at f64 on 2048 faces, where
+/// T32's cap of 2000 applies at every precision).
+#[test]
+fn b32_face_caps_per_precision_name_the_limit() {
+    use penner::oracle::checks_energy::{T31_CAPS, T32_CAPS, T33_CAPS};
+    use penner::oracle::precision::Prec;
+    use rug::Rational;
+    let (m, l) = jittered_torus(32, 32, 7);
+    assert_eq!(m.n_faces(), 2048);
+    let q: Vec<Rational> = l.iter().map(|x| Rational::from_f64(*x).unwrap()).collect();
+    let case = crate::adversarial_gen::from_lengths("torus 2048", m, q).unwrap();
+    let s = Settings::default();
+    let find = |id: &str| {
+        penner::oracle::catalogue()
+            .into_iter()
+            .find(|c| c.id == id)
+            .unwrap()
+    };
+    assert!(T32_CAPS.f64 < 2048 && T31_CAPS.f64 >= 2048 && T33_CAPS.f64 >= 2048);
+    for p in [Prec::F64, Prec::Dd, Prec::Mpfr(mpfr(128))] {
+        match (find("T32").run)(&case, p, &s) {
+            Some(Verdict::NotApplicable { reason }) => {
+                assert!(
+                    reason.contains("2048 faces") && reason.contains("2000"),
+                    "{reason}"
+                );
+                assert!(reason.contains(&p.to_string()), "{reason}");
+            }
+            v => panic!("T32 at {p}: {v:?}"),
+        }
+    }
+    // Negative control: below the cap the same registry entries run and hold.
+    for id in ["T31", "T33"] {
+        let v = (find(id).run)(&case, Prec::F64, &s).unwrap();
+        assert!(v.holds(), "{id}: {v:?}");
     }
 }

@@ -1,28 +1,30 @@
 //! Negative controls of the variational checks: T06 (cotan weights), T31 (Schläfli), T32 (energy gradient),
 //! T33 (hyperbolic energy gradient). Each compares against data raised by 1/1000 at one
-//! element, far above the tolerances (B56–B58 are a few thousand units of `u` at `f64`).
+//! element (T06: `10⁻³·(1 + |w|)`), far above the tolerances (B56–B58 are a few thousand
+//! units of `u` at `f64`; B31's enclosures are narrower still).
 
 // The `at_precision!` bodies are generic code that is also instantiated at `f64`.
 #![allow(clippy::clone_on_copy, clippy::op_ref, clippy::let_unit_value)]
 
-use crate::geometry::cotan::cotan_weights;
 use crate::io::Surface;
 use crate::oracle::checks_energy::{
-    beyond_limits, energy_probe, MAX_FACES, T06_MAX_EDGES, T31_MAX_FACES,
+    beyond_caps, beyond_limits, energy_probe, T06_MAX_EDGES, T31_CAPS, T32_CAPS, T33_CAPS,
 };
 use crate::oracle::precision::Prec;
 use crate::oracle::registry::Check;
 use crate::scalar::Real;
-use crate::theorems::t06_cotan_weights_metric::verify_weights_determine_metric;
+use crate::theorems::t06_cotan_weights_metric::{verify_weight_boxes, weight_enclosures};
 use crate::theorems::t31_schlafli::{half_angles, verify_schlafli};
 use crate::theorems::t32_energy::{verify_gradient, EnergyInput};
 use crate::theorems::t33_hyperbolic::verify_hyperbolic_gradient;
 use crate::theorems::{Settings, Verdict};
 use crate::variational::{energy, hyperbolic};
 
-/// T06-NC: the cotan weights of the metric with the length of edge 1 raised by 1/100
-/// (edge 0 is the gauge): realizable weights of a different metric, which the comparison
-/// with the case's metric rejects.
+/// T06-NC: enclosures of the case's own cotan weights (which contain the exact weights,
+/// so without the raise nothing can be refuted) with the box of `w_1` moved up by
+/// `10⁻³·(1 + |w_1|)`, far beyond its width (proofs/B31), whichever the sign of `w_1`.
+/// No scaling of the case's metric has such weights, which the comparison of
+/// [`verify_weight_boxes`] proves (`fails`, certified, witness `e1`).
 fn t06_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
     if case.mesh.n_edges() > T06_MAX_EDGES || case.mesh.n_edges() < 2 {
         return Some(super::not_applicable(
@@ -33,17 +35,16 @@ fn t06_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
         return Some(v);
     }
     at_precision!(prec, case, |l: T| {
-        let mut other = l.clone();
-        let bump = other[1].lit(1.01);
-        other[1] *= &bump;
-        let w = cotan_weights(&case.mesh, &other);
-        Some(verify_weights_determine_metric(&case.mesh, &l, &w, s))
+        let mut w = weight_enclosures(&case.mesh, &l)?;
+        let bump = (w[1].abs() + &w[1].one_like()) * &w[1].lit(1e-3);
+        w[1] += &bump;
+        Some(verify_weight_boxes(&case.mesh, &l, &w, s))
     })
 }
 
 /// T31-NC: the half-angle of the first face's first corner raised by 1/1000.
 fn t31_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
-    if let Some(v) = beyond_limits(case, prec, T31_MAX_FACES) {
+    if let Some(v) = beyond_caps(case, prec, &T31_CAPS) {
         return Some(v);
     }
     at_precision!(prec, case, |l: T| {
@@ -59,7 +60,7 @@ fn t31_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
 /// T32-NC: the gradient `Θ − θ` with `∂E/∂u_0` raised by 1/1000 (the first direction is
 /// `e_0`).
 fn t32_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
-    if let Some(v) = beyond_limits(case, prec, MAX_FACES) {
+    if let Some(v) = beyond_caps(case, prec, &T32_CAPS) {
         return Some(v);
     }
     at_precision!(prec, case, |l: T| {
@@ -82,7 +83,7 @@ fn t32_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
 
 /// T33-NC: the hyperbolic gradient `Θ − θ_hyp` with its first entry raised by 1/1000.
 fn t33_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
-    if let Some(v) = beyond_limits(case, prec, MAX_FACES) {
+    if let Some(v) = beyond_caps(case, prec, &T33_CAPS) {
         return Some(v);
     }
     at_precision!(prec, case, |l: T| {
