@@ -22,8 +22,9 @@ use super::newton::validate_input;
 use super::refine::{carry_lengths, carry_lengths_from, scaled, RefineError};
 use super::targets::Targets;
 use super::verified_cholesky::{lambda_min_lower_bound, up, SymmetricLower};
-use crate::geometry::cone_angles::cone_angles;
-use crate::geometry::laplacian::{cotan_laplacian, SparseMatrix};
+use crate::geometry::enclosure::angle_sums::enclose_cone_angles;
+use crate::geometry::enclosure::cotans::enclose_halfedge_cotans;
+use crate::geometry::laplacian::{laplacian_from_halfedge_cotans, SparseMatrix};
 use crate::mesh::{Edge, Mesh};
 use crate::predicates::delaunay::{enclose_p, QuadEdges};
 use crate::scalar::{Interval, IntervalBound, Mpfr, Precision, Real, Sign};
@@ -201,7 +202,8 @@ pub(crate) fn prepare(
             )));
         }
     }
-    let laplacian = cotan_laplacian(&mesh, &lb);
+    // The cotangents from squared lengths and an enclosed area (B34).
+    let laplacian = laplacian_from_halfedge_cotans(&mesh, &enclose_halfedge_cotans(&mesh, &lb));
     if let Some((i, j, _)) = laplacian.entries().find(|(_, _, w)| !w.is_valid()) {
         return Ok(Err(format!(
             "cotan Laplacian entry ({i}, {j}) not enclosed"
@@ -209,7 +211,8 @@ pub(crate) fn prepare(
     }
     // The residual at u, enclosed.
     let lp = scaled(&mesh, &base, &point);
-    let theta = cone_angles(&mesh, &lp);
+    // One enclosed argument per vertex, per-corner fallback where not certified (B33).
+    let theta = enclose_cone_angles(&mesh, &lp).theta;
     let pi = I::pi(prec);
     let mut residual = Vec::with_capacity(free.len());
     for &v in &free {

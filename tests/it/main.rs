@@ -22,6 +22,7 @@ mod cone_angles_kernel;
 mod controls;
 mod definition_two;
 mod delaunay;
+mod enclosed_angles;
 mod delaunay_adversarial;
 mod delaunay_flips;
 mod delaunay_genus;
