@@ -139,7 +139,10 @@ fn b33_enclosed_cone_angles_contain_the_512_bit_reference_on_random_meshes() {
             let got = enclose_cone_angles(&m, &li);
             let old = cone_angles_per_corner(&m, &li);
             let reference = cone_angles_per_corner(&m, &lr);
-            assert!(got.fallback.is_empty(), "generic metric, no fallback expected");
+            assert!(
+                got.fallback.is_empty(),
+                "generic metric, no fallback expected"
+            );
             let k = valence(&m);
             for v in 0..m.n_vertices() {
                 let (t, o) = (&got.theta[v], &old[v]);
@@ -147,7 +150,10 @@ fn b33_enclosed_cone_angles_contain_the_512_bit_reference_on_random_meshes() {
                 assert!(contains(o, &reference[v]), "old path v{v}");
                 // Within B33's wrapping factor of the per-corner path.
                 let (w, wo) = (t.width_f64(), o.width_f64());
-                assert!(w <= b33_wrapping_factor(k[v]) * wo, "v{v}: {w:e} vs old {wo:e}");
+                assert!(
+                    w <= b33_wrapping_factor(k[v]) * wo,
+                    "v{v}: {w:e} vs old {wo:e}"
+                );
             }
         }
     }
@@ -183,7 +189,14 @@ fn b33_negative_control_a_perturbed_length_moves_the_enclosure_off_the_reference
     let reference = cone_angles_per_corner(&m, &lr);
     // One edge 10⁻³⁰ longer: its two ends' angle sums change by far more than the width.
     let e = 5;
-    li[e] = li[e].clone() * &I::from_rational(&Rational::from((1_000_000_000_000_000_000_000_000_000_001_i128, 10_i128.pow(30))), prec(256));
+    li[e] = li[e].clone()
+        * &I::from_rational(
+            &Rational::from((
+                1_000_000_000_000_000_000_000_000_000_001_i128,
+                10_i128.pow(30),
+            )),
+            prec(256),
+        );
     let got = enclose_cone_angles(&m, &li);
     let h = m.edges().nth(e).expect("edge").halfedge();
     let ends = [m.tail(h).idx(), m.tip(h).idx()];
@@ -298,5 +311,9 @@ fn b34_negative_control_points_outside_the_box_leave_the_enclosure() {
         .halfedges()
         .filter(|h| !contains(&got[h.idx()], &reference[h.idx()]))
         .count();
-    assert!(outside > m.n_halfedges() / 2, "{outside} of {}", m.n_halfedges());
+    assert!(
+        outside > m.n_halfedges() / 2,
+        "{outside} of {}",
+        m.n_halfedges()
+    );
 }

@@ -43,8 +43,13 @@ pub fn enclose_halfedge_cotans(mesh: &Mesh, lengths: &[I]) -> Vec<I> {
     let mut out = vec![first.zero_like(); mesh.n_halfedges()];
     let mut face = FaceHeron::new(bits);
     let z = Bounds::zero(bits);
-    let (mut sq, mut area4, mut t, mut num, mut cot) =
-        ([z.clone(), z.clone(), z.clone()], z.clone(), z.clone(), z.clone(), z);
+    let (mut sq, mut area4, mut t, mut num, mut cot) = (
+        [z.clone(), z.clone(), z.clone()],
+        z.clone(),
+        z.clone(),
+        z.clone(),
+        z,
+    );
     for f in mesh.faces() {
         let hs = mesh.face_halfedges(f);
         let strict = face.load(hs.map(|h| &lengths[h.edge().idx()]));

@@ -171,7 +171,7 @@ impl Bounds {
 
     /// `self = √a` for `a ≥ 0` (NaN bounds when `a` reaches below 0).
     pub(crate) fn sqrt_of(&mut self, a: &Bounds) {
-        if a.lo.cmp0().map_or(true, |o| o == Ordering::Less) {
+        if !matches!(a.lo.cmp0(), Some(Ordering::Greater | Ordering::Equal)) {
             self.set_nan();
             return;
         }
