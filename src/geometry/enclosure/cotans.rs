@@ -59,8 +59,8 @@ pub fn enclose_halfedge_cotans(mesh: &Mesh, lengths: &[I]) -> Vec<I> {
             }
             continue;
         }
-        for i in 0..3 {
-            sq[i].mul(&face.l[i], &face.l[i]);
+        for (q, l) in sq.iter_mut().zip(&face.l) {
+            q.mul(l, l);
         }
         area4.sqrt_of(&face.area16_sq);
         for i in 0..3 {
