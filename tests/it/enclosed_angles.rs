@@ -167,12 +167,11 @@ fn b33_enclosed_cone_angles_on_adversarial_fans() {
             let (li, lr) = point_lengths(&l, bits);
             let got = enclose_cone_angles(&m, &li);
             let reference = cone_angles_per_corner(&m, &lr);
-            for v in 0..m.n_vertices() {
+            for (v, (t, r)) in got.theta.iter().zip(&reference).enumerate() {
                 assert!(
-                    contains(&got.theta[v], &reference[v]),
-                    "{name}, v{v} at {bits} bits: {:?} vs {}",
-                    got.theta[v],
-                    reference[v].approx_f64()
+                    contains(t, r),
+                    "{name}, v{v} at {bits} bits: {t:?} vs {}",
+                    r.approx_f64()
                 );
             }
             if name.starts_with("right angles") {
@@ -208,7 +207,7 @@ fn b33_negative_control_a_perturbed_length_moves_the_enclosure_off_the_reference
     assert!(missed.iter().all(|v| ends.contains(v) || {
         // Or the far corners of the two faces at the edge.
         m.faces().any(|f| {
-            let vs = m.face_vertices(f).map(|x| x.idx());
+            let vs = m.face_vertices(f).map(penner::mesh::Vertex::idx);
             vs.contains(v) && vs.contains(&ends[0]) && vs.contains(&ends[1])
         })
     }));
