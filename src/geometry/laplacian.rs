@@ -156,7 +156,21 @@ impl<T: Real> SparseMatrix<T> {
 /// assert!((l.get(0, 0).unwrap() + 2.0 * w).abs() < 1e-15);
 /// ```
 pub fn cotan_laplacian<T: Real>(mesh: &Mesh, lengths: &[T]) -> SparseMatrix<T> {
-    let cots = halfedge_cotans(mesh, lengths);
+    laplacian_from_halfedge_cotans(mesh, &halfedge_cotans(mesh, lengths))
+}
+
+/// [`cotan_laplacian`] assembled from given corner cotangents `cots[h]` (one per
+/// half-edge, the corner opposite `h`, as [`halfedge_cotans`] returns them), e.g. the
+/// enclosures of
+/// [`enclose_halfedge_cotans`](super::enclosure::cotans::enclose_halfedge_cotans)
+/// (proof: B34). The same entries, in the same order of summation, as [`cotan_laplacian`]
+/// on the lengths the cotangents came from.
+pub fn laplacian_from_halfedge_cotans<T: Real>(mesh: &Mesh, cots: &[T]) -> SparseMatrix<T> {
+    assert_eq!(
+        cots.len(),
+        mesh.n_halfedges(),
+        "laplacian_from_halfedge_cotans: one cotangent per half-edge is required"
+    );
     let n = mesh.n_vertices();
     // The half-edges that contribute (a face, two distinct ends) and their ½ cot α.
     let ends = |h: crate::mesh::HalfEdge| (mesh.tail(h).idx(), mesh.tip(h).idx());
@@ -214,7 +228,7 @@ pub fn cotan_laplacian<T: Real>(mesh: &Mesh, lengths: &[T]) -> SparseMatrix<T> {
             }
             let w = half[h as usize]
                 .clone()
-                .unwrap_or_else(|| lengths[0].zero_like());
+                .unwrap_or_else(|| cots[0].zero_like());
             match (col.last(), val.last_mut()) {
                 (Some(&lc), Some(last)) if lc == c && col.len() > row_ptr[r] => *last += &w,
                 _ => {

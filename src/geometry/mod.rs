@@ -5,6 +5,7 @@ pub mod corners;
 pub mod cotan;
 pub mod cross_ratio;
 pub mod curvature;
+pub mod enclosure;
 pub mod energy;
 pub mod laplacian;
 pub mod scaling;

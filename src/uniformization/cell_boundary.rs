@@ -23,7 +23,8 @@
 
 use super::certificate::I;
 use crate::algorithms::flips::ptolemy_length_enclosure;
-use crate::geometry::laplacian::{cotan_laplacian, SparseMatrix};
+use crate::geometry::enclosure::cotans::enclose_halfedge_cotans;
+use crate::geometry::laplacian::{laplacian_from_halfedge_cotans, SparseMatrix};
 use crate::geometry::triangle::{corner_angle, cot_opposite};
 use crate::mesh::{Edge, HalfEdge, Mesh};
 use crate::predicates::delaunay::{enclose_p, QuadEdges};
@@ -132,7 +133,7 @@ pub(crate) fn cell_over_box(
         .collect();
     if edges.is_empty() {
         return Ok(CellOverBox {
-            laplacian: cotan_laplacian(mesh, lb),
+            laplacian: laplacian_from_halfedge_cotans(mesh, &enclose_halfedge_cotans(mesh, lb)),
             boundary: None,
         });
     }
@@ -233,7 +234,7 @@ pub(crate) fn cell_over_box(
         }
     }
     // The Laplacian: T's, with each U-quadrilateral's block replaced by the hull of the two.
-    let mut laplacian = cotan_laplacian(mesh, lb);
+    let mut laplacian = laplacian_from_halfedge_cotans(mesh, &enclose_halfedge_cotans(mesh, lb));
     let mut extra = Vec::new();
     for &e in &edges {
         let mut block: Vec<((usize, usize), [Option<I>; 2])> = Vec::new();

@@ -27,7 +27,7 @@ use super::newton::validate_input;
 use super::refine::{carry_lengths, carry_lengths_from, scaled, RefineError};
 use super::targets::Targets;
 use super::verified_cholesky::{lambda_min_lower_bound, up, SymmetricLower};
-use crate::geometry::cone_angles::cone_angles;
+use crate::geometry::enclosure::angle_sums::enclose_cone_angles;
 use crate::geometry::laplacian::SparseMatrix;
 use crate::mesh::{Edge, Mesh};
 use crate::scalar::{Interval, IntervalBound, Mpfr, Precision, Real, Sign};
@@ -197,7 +197,8 @@ pub(crate) fn prepare(
     }
     // The residual at u, enclosed.
     let lp = scaled(&mesh, &base, &point);
-    let mut theta = cone_angles(&mesh, &lp);
+    // One enclosed argument per vertex, per-corner fallback where not certified (B33).
+    let mut theta = enclose_cone_angles(&mesh, &lp).theta;
     if let Some(b) = &cell.boundary {
         // The angle sums of a triangulation Delaunay at the centre (B35).
         if let Err(reason) = b.correct_angle_sums(&mesh, &point, &lp, &mut theta) {

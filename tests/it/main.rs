@@ -33,6 +33,7 @@ mod delaunay_triangles;
 mod delaunay_undecided;
 mod delaunay_uniqueness;
 mod dual;
+mod enclosed_angles;
 mod exact;
 mod flip_verdicts;
 mod interval;
