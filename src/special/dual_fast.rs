@@ -29,7 +29,12 @@ const DD_MIN_SINE: f64 = 9.313_225_746_154_785e-10; // 2⁻³⁰
 /// or `None` when the value or the sine leaves the fast path's range (proof: B30).
 fn fast<S: Real>(x: &Dual<S>, min_sine: f64) -> Option<Dual<S>> {
     let s = x.v.sin();
-    if !(s.approx_f64().abs() >= min_sine) {
+    // NaN compares false: it leaves the fast path too.
+    if s.approx_f64()
+        .abs()
+        .partial_cmp(&min_sine)
+        .is_none_or(std::cmp::Ordering::is_lt)
+    {
         return None;
     }
     let v = lobachevsky(&x.v);

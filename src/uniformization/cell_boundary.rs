@@ -109,6 +109,7 @@ fn strict<'a>(
 
 /// Step 1 of B71 over the box, across cell boundaries (B35): `lb` are the lengths of `T`
 /// over the box `boxed` (`base` unscaled). `Err(reason)` when a hypothesis is not certified.
+#[allow(clippy::too_many_lines)] // B35's steps in order: strict faces, U, hypotheses, configurations, hull
 pub(crate) fn cell_over_box(
     mesh: &Mesh,
     base: &[I],
@@ -237,7 +238,7 @@ pub(crate) fn cell_over_box(
     let mut laplacian = laplacian_from_halfedge_cotans(mesh, &enclose_halfedge_cotans(mesh, lb));
     let mut extra = Vec::new();
     for &e in &edges {
-        let mut block: Vec<((usize, usize), [Option<I>; 2])> = Vec::new();
+        let mut block: LocalBlock = Vec::new();
         for (c, m) in [mesh, &flipped].into_iter().enumerate() {
             let len = |x: Edge| lengths.get(x, c == 1);
             for h in face_of(m, e.side(0))
@@ -304,14 +305,17 @@ impl<'a> Lengths<'a> {
     }
 }
 
+/// A quadrilateral's local Laplacian block: per matrix position, the entry in `T` (0) and
+/// in the flipped triangulation (1), absent where the configuration has none (B35).
+type LocalBlock = Vec<((usize, usize), [Option<I>; 2])>;
+
 /// Add `v` to the configuration `c` of position `pos` of a local block.
-fn add(block: &mut Vec<((usize, usize), [Option<I>; 2])>, pos: (usize, usize), c: usize, v: I) {
-    let k = match block.iter().position(|(p, _)| *p == pos) {
-        Some(k) => k,
-        None => {
-            block.push((pos, [None, None]));
-            block.len() - 1
-        }
+fn add(block: &mut LocalBlock, pos: (usize, usize), c: usize, v: I) {
+    let k = if let Some(k) = block.iter().position(|(p, _)| *p == pos) {
+        k
+    } else {
+        block.push((pos, [None, None]));
+        block.len() - 1
     };
     let slot = &mut block[k].1[c];
     *slot = Some(match slot.take() {

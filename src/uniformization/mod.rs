@@ -9,8 +9,8 @@
 //! - [`targets`]: prescribed angles as exact multiples of π and Gauss–Bonnet.
 //! - [`boundary`]: surfaces with boundary (cone and boundary angles) by the double (B79).
 
-pub(crate) mod cell_boundary;
 pub mod boundary;
+pub(crate) mod cell_boundary;
 pub mod certificate;
 pub mod claim_form;
 pub mod components;

@@ -168,7 +168,7 @@ pub fn face_mpfr(x: &[Mpfr; 3], pi: &Float, half_pi: &Float) -> FaceMpfr {
     };
     if let Some(m) = (0..3).find(|&m| e[m].cmp0() != Some(Ordering::Greater) && !e[m].is_nan()) {
         let mut angles = [Float::new(p), Float::new(p), Float::new(p)];
-        angles[m] = pi.clone();
+        angles[m].clone_from(pi);
         // Л(0) = Л(π) = 0.
         let en = energy_of(&angles, &Float::new(p));
         return FaceMpfr {

@@ -540,7 +540,7 @@ fn b32_face_caps_per_precision_name_the_limit() {
             .find(|c| c.id == id)
             .unwrap()
     };
-    assert!(T32_CAPS.f64 < 2048 && T31_CAPS.f64 >= 2048 && T33_CAPS.f64 >= 2048);
+    const { assert!(T32_CAPS.f64 < 2048 && T31_CAPS.f64 >= 2048 && T33_CAPS.f64 >= 2048) };
     for p in [Prec::F64, Prec::Dd, Prec::Mpfr(mpfr(128))] {
         match (find("T32").run)(&case, p, &s) {
             Some(Verdict::NotApplicable { reason }) => {

@@ -69,13 +69,16 @@ impl FastFace {
 /// `E`, `∇E` and the Hessian's rows of a one-pass kernel, at its own precision.
 type Assembled = (Float, Vec<Float>, Vec<Vec<(usize, Float)>>);
 
+/// A whole pass: mesh, logarithmic lengths, `u` and targets in; `E`, `∇E`, Hessian rows out.
+type Pass<'a> = dyn Fn(&Mesh, &[f64], &[f64], &[f64]) -> Assembled + 'a;
+
 /// A one-pass kernel under test: its unit roundoff, the precision of the generic reference,
 /// one face from its logarithmic lengths, and `E`, `∇E` and the Hessian's rows assembled.
 struct Kernel<'a> {
     unit: f64,
     reference_bits: u32,
     face: &'a dyn Fn(&[f64; 3]) -> FastFace,
-    all: &'a dyn Fn(&Mesh, &[f64], &[f64], &[f64]) -> Assembled,
+    all: &'a Pass<'a>,
 }
 
 /// B88 items 1–4 for one face with logarithmic lengths `x` and binary64 terms `t`: the
