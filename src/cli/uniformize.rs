@@ -229,6 +229,41 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
             sol.residual_max, proof.residual_max
         );
     }
+    let status = report_certificate(
+        &mut out,
+        &proof,
+        &sol.mesh,
+        bits,
+        o.output,
+        &Certified {
+            holds: "certified",
+            written: "certificate",
+        },
+    )?;
+    super::files::emit(&out)?;
+    Ok(status)
+}
+
+/// The words of [`report_certificate`]'s lines: what a certified result is called and what
+/// the written claim is called (the closed surface's, or the double's with its copy 1).
+pub(super) struct Certified<'a> {
+    /// Prefix of the certified line.
+    pub holds: &'a str,
+    /// Name of the written claim, up to " written to".
+    pub written: &'a str,
+}
+
+/// Report a B71 certificate outcome on `out` and, when it holds and `output` is given,
+/// write the `uniformization` claim there (never over an existing file); the exit status:
+/// `HOLDS` when certified, `UNDECIDED` otherwise.
+pub(super) fn report_certificate(
+    out: &mut String,
+    proof: &Proof,
+    mesh: &penner::mesh::Mesh,
+    bits: u32,
+    output: Option<&Path>,
+    words: &Certified<'_>,
+) -> Result<u8, CliError> {
     let (status, residual) = match &proof.outcome {
         CertificateOutcome::Holds {
             distance,
@@ -236,8 +271,9 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
             residual,
         } => {
             let _ = writeln!(
-        out,
-                "certified: an exact solution lies within {distance:e} (2-norm) of u; Hessian ≥ {mu:e} on the box; ‖Θ − θ(u)‖₂ ≤ {residual:e}"
+                out,
+                "{}: an exact solution lies within {distance:e} (2-norm) of u; Hessian ≥ {mu:e} on the box; ‖Θ − θ(u)‖₂ ≤ {residual:e}",
+                words.holds
             );
             (code::HOLDS, *residual)
         }
@@ -246,9 +282,9 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
             (code::UNDECIDED, f64::INFINITY)
         }
     };
-    if let Some(path) = o.output {
+    if let Some(path) = output {
         if status == code::HOLDS {
-            let claim = to_claim(&proof.data, &sol.mesh.face_list(), residual, bits);
+            let claim = to_claim(&proof.data, &mesh.face_list(), residual, bits);
             let text = serde_json::to_string_pretty(&claim).unwrap_or_default();
             let mut f = create_new(path)?;
             f.write_all(text.as_bytes())
@@ -259,7 +295,8 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
                 })?;
             let _ = writeln!(
                 out,
-                "certificate written to {} (re-check: penner certify {})",
+                "{} written to {} (re-check: penner certify {})",
+                words.written,
                 path.display(),
                 path.display()
             );
@@ -267,6 +304,5 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
             out.push_str("no certificate written\n");
         }
     }
-    super::files::emit(&out)?;
     Ok(status)
 }

@@ -10,8 +10,7 @@ use penner::scalar::{Certified, Sign};
 use penner::uniformization::boundary::{
     flat_with_even_boundary, uniformize_with_boundary, BoundaryUniformization,
 };
-use penner::uniformization::certificate::{prove, CertificateOutcome};
-use penner::uniformization::claim_form::to_claim;
+use penner::uniformization::certificate::prove;
 use penner::uniformization::layout::{face_orientations, unfold, unfold_within};
 use penner::uniformization::svg::{render_layout_svg, scaled_lengths_f64};
 use penner::uniformization::UniformizeOptions;
@@ -117,46 +116,22 @@ pub fn run(i: &Input<'_>, o: &super::uniformize::Options<'_>) -> Result<u8, CliE
         "converged: max |Θ − θ| = {:e} (f64), {:e} after refinement",
         sol.residual_max, proof.residual_max
     );
-    let (status, residual) = match &proof.outcome {
-        CertificateOutcome::Holds {
-            distance,
-            mu,
-            residual,
-        } => {
-            let _ = writeln!(
-                out,
-                "certified on the double: an exact solution lies within {distance:e} (2-norm) of u; Hessian ≥ {mu:e} on the box; ‖Θ − θ(u)‖₂ ≤ {residual:e}; by symmetry and uniqueness it solves the boundary problem on copy 1 (B79)"
-            );
-            (code::HOLDS, *residual)
-        }
-        CertificateOutcome::Undecided { reason } => {
-            let _ = writeln!(out, "not certified: {reason}");
-            (code::UNDECIDED, f64::INFINITY)
-        }
-    };
-    if let Some(path) = o.output {
-        if status == code::HOLDS {
-            let claim = to_claim(&proof.data, &sol.mesh.face_list(), residual, i.bits);
-            let text = serde_json::to_string_pretty(&claim).unwrap_or_default();
-            let mut f = create_new(path)?;
-            f.write_all(text.as_bytes())
-                .and_then(|()| f.write_all(b"\n"))
-                .map_err(|e| CliError::Write {
-                    path: path.to_path_buf(),
-                    reason: e.to_string(),
-                })?;
-            let _ = writeln!(
-                out,
-                "certificate of the double written to {} (copy 1 = vertices 0..{} and faces 0..{} of its input; re-check: penner certify {})",
-                path.display(),
-                i.mesh.n_vertices(),
-                i.mesh.n_faces(),
-                path.display()
-            );
-        } else {
-            out.push_str("no certificate written\n");
-        }
-    }
+    let written = format!(
+        "certificate of the double (copy 1 = vertices 0..{} and faces 0..{} of its input)",
+        i.mesh.n_vertices(),
+        i.mesh.n_faces()
+    );
+    let status = super::uniformize::report_certificate(
+        &mut out,
+        &proof,
+        &sol.mesh,
+        i.bits,
+        o.output,
+        &super::uniformize::Certified {
+            holds: "certified on the double (by symmetry and uniqueness it solves the boundary problem on copy 1, B79)",
+            written: &written,
+        },
+    )?;
     super::files::emit(&out)?;
     Ok(status)
 }
