@@ -8,7 +8,7 @@
 //! (B15); one `atan2` per vertex, taken a quarter turn away from any branch cut, gives the
 //! remainder. No per-corner arctangent, no estimate, no fallback.
 
-use crate::mesh::Mesh;
+use crate::mesh::{HalfEdge, Mesh};
 use crate::scalar::Real;
 
 /// The quadrant `q ∈ {0, 1, 2, 3}` of the nonzero point `re + i·im`: the index of the
@@ -250,28 +250,7 @@ pub fn cone_angles<T: Real>(mesh: &Mesh, lengths: &[T]) -> Vec<T> {
         // enclosed corner angles in (0, π) is rigorous and needs no count.
         return cone_angles_per_corner(mesh, lengths);
     }
-    let Some(first) = lengths.first() else {
-        return Vec::new();
-    };
-    let start = Winding {
-        re: first.one_like(),
-        im: first.zero_like(),
-        quarter: 0,
-    };
-    let mut acc = vec![start; mesh.n_vertices()];
-    let mut sc = FaceScratch::new(first);
-    for f in mesh.faces() {
-        let hs = mesh.face_halfedges(f);
-        sc.load(hs.map(|h| &lengths[h.edge().idx()]));
-        for i in 0..3 {
-            // Corner opposite hs[i] is at the tail of hs[(i+2)%3].
-            sc.step(i, &mut acc[mesh.tail(hs[(i + 2) % 3]).idx()]);
-        }
-    }
-    let half_pi = T::pi(first.ctx()) * &first.lit(0.5);
-    acc.iter()
-        .map(|w| unwrap_quarter(&w.re, &w.im, w.quarter, &half_pi))
-        .collect()
+    winding_cone_angles(mesh, lengths, |_, _, _| {})
 }
 
 /// [`cone_angles`] and, from the same per-face quantities, the cotangent of the corner
@@ -303,6 +282,19 @@ pub fn cone_angles_and_cotans<T: Real>(mesh: &Mesh, lengths: &[T], cot: &mut [T]
         }
         return cone_angles_per_corner(mesh, lengths);
     }
+    winding_cone_angles(mesh, lengths, |h, sc, i| {
+        cot[h.idx()] = sc.c[i].clone() / &sc.r;
+    })
+}
+
+/// The kernel of [`cone_angles`] (B16): every face's corner directions `c_i + i·r`
+/// multiplied into one winding per vertex, `at_corner(h, scratch, i)` called for the corner
+/// opposite half-edge `h = hs[i]` of each face before its direction is multiplied in.
+fn winding_cone_angles<T: Real>(
+    mesh: &Mesh,
+    lengths: &[T],
+    mut at_corner: impl FnMut(HalfEdge, &FaceScratch<T>, usize),
+) -> Vec<T> {
     let Some(first) = lengths.first() else {
         return Vec::new();
     };
@@ -317,7 +309,8 @@ pub fn cone_angles_and_cotans<T: Real>(mesh: &Mesh, lengths: &[T], cot: &mut [T]
         let hs = mesh.face_halfedges(f);
         sc.load(hs.map(|h| &lengths[h.edge().idx()]));
         for i in 0..3 {
-            cot[hs[i].idx()] = sc.c[i].clone() / &sc.r;
+            at_corner(hs[i], &sc, i);
+            // Corner opposite hs[i] is at the tail of hs[(i+2)%3].
             sc.step(i, &mut acc[mesh.tail(hs[(i + 2) % 3]).idx()]);
         }
     }

@@ -234,23 +234,10 @@ pub fn verify_flip_sequence_with<T: Real>(
     progress: &Progress,
 ) -> Verdict {
     let bits = prec;
-    let prec = match Precision::new(u64::from(bits)) {
+    let prec = match replay_precision(mesh, lengths.len(), bits) {
         Ok(p) => p,
-        Err(err) => {
-            return Verdict::NotApplicable {
-                reason: err.to_string(),
-            }
-        }
+        Err(not_applicable) => return not_applicable,
     };
-    if lengths.len() != mesh.n_edges() {
-        return Verdict::NotApplicable {
-            reason: format!(
-                "{} lengths given for a mesh with {} edges",
-                lengths.len(),
-                mesh.n_edges()
-            ),
-        };
-    }
     // The first rung (proof: B84): on f64 enclosures, MPFR only for what they leave open.
     // When it proves every condition of a certified `Holds` of the comparison on MPFR
     // enclosures, the exact cone angles are equal and nothing is left to compare.
@@ -263,6 +250,23 @@ pub fn verify_flip_sequence_with<T: Real>(
         };
     }
     verify_flip_sequence_on_mpfr(mesh, lengths, sequence, replay, bits, progress)
+}
+
+/// The working precision of a replay at `bits`, or the `NotApplicable` verdict when `bits`
+/// is not a precision or `n_lengths` is not the edge count of `mesh`.
+fn replay_precision(mesh: &Mesh, n_lengths: usize, bits: u32) -> Result<Precision, Verdict> {
+    let prec = Precision::new(u64::from(bits)).map_err(|err| Verdict::NotApplicable {
+        reason: err.to_string(),
+    })?;
+    if n_lengths != mesh.n_edges() {
+        return Err(Verdict::NotApplicable {
+            reason: format!(
+                "{n_lengths} lengths given for a mesh with {} edges",
+                mesh.n_edges()
+            ),
+        });
+    }
+    Ok(prec)
 }
 
 /// [`verify_flip_sequence`] without its first rung: the whole replay and both cone-angle
@@ -278,23 +282,10 @@ pub fn verify_flip_sequence_on_mpfr<T: Real>(
     progress: &Progress,
 ) -> Verdict {
     let bits = prec;
-    let prec = match Precision::new(u64::from(bits)) {
+    let prec = match replay_precision(mesh, lengths.len(), bits) {
         Ok(p) => p,
-        Err(err) => {
-            return Verdict::NotApplicable {
-                reason: err.to_string(),
-            }
-        }
+        Err(not_applicable) => return not_applicable,
     };
-    if lengths.len() != mesh.n_edges() {
-        return Verdict::NotApplicable {
-            reason: format!(
-                "{} lengths given for a mesh with {} edges",
-                lengths.len(),
-                mesh.n_edges()
-            ),
-        };
-    }
     let mut enc = Vec::with_capacity(lengths.len());
     for l in lengths {
         let Some(q) = l.to_rational() else {

@@ -36,14 +36,34 @@ pub fn check_flip_path(
 ) -> Verdict {
     // The counts are checked once, by `check_flip_path_exact` (a conversion keeps them).
     let Some(l): Option<Vec<Rational>> = l0.iter().map(|&x| Rational::from_f64(x)).collect() else {
-        let w = Witness {
-            element: "surface".into(),
-            detail: "a length is not finite".into(),
-            value: f64::NAN,
-        };
-        return Verdict::certified(vec![w], vec![], 0);
+        return Verdict::certified(vec![surface("a length is not finite".into())], vec![], 0);
     };
     check_flip_path_exact(t0, l, sequence, final_mesh, s, t)
+}
+
+/// A witness about the whole surface (no element of it).
+fn surface(detail: String) -> Witness {
+    Witness {
+        element: "surface".into(),
+        detail,
+        value: f64::NAN,
+    }
+}
+
+/// The certified refusal when the counts of lengths (`n_lengths`) or factors (`s`, `t`) do
+/// not match `t0`'s edges and vertices.
+fn count_mismatch(t0: &Mesh, n_lengths: usize, s: &[Rational], t: &[Rational]) -> Option<Verdict> {
+    (n_lengths != t0.n_edges() || s.len() != t0.n_vertices() || t.len() != t0.n_vertices()).then(
+        || {
+            Verdict::certified(
+                vec![surface(
+                    "one length per edge and one factor per vertex are required".into(),
+                )],
+                vec![],
+                0,
+            )
+        },
+    )
 }
 
 /// [`check_flip_path`] on rational lengths `l0` of `T₀` (e.g. an input given by rational
@@ -56,19 +76,8 @@ pub fn check_flip_path_exact(
     s: &[Rational],
     t: &[Rational],
 ) -> Verdict {
-    let surface = |detail: String| Witness {
-        element: "surface".into(),
-        detail,
-        value: f64::NAN,
-    };
-    if l.len() != t0.n_edges() || s.len() != t0.n_vertices() || t.len() != t0.n_vertices() {
-        return Verdict::certified(
-            vec![surface(
-                "one length per edge and one factor per vertex are required".into(),
-            )],
-            vec![],
-            0,
-        );
+    if let Some(refused) = count_mismatch(t0, l.len(), s, t) {
+        return refused;
     }
     let (mut m1, mut a) = (t0.clone(), scale(t0, &l, s));
     let (mut m2, mut b) = (t0.clone(), l);
@@ -135,23 +144,12 @@ pub fn check_flip_path_enclosed(
     s: &[Rational],
     t: &[Rational],
 ) -> Verdict {
-    let surface = |detail: String| Witness {
-        element: "surface".into(),
-        detail,
-        value: f64::NAN,
-    };
     let Some(first) = l.first() else {
         return Verdict::certified(vec![surface("no edges".into())], vec![], 0);
     };
     let prec = first.lo().ctx();
-    if l.len() != t0.n_edges() || s.len() != t0.n_vertices() || t.len() != t0.n_vertices() {
-        return Verdict::certified(
-            vec![surface(
-                "one length per edge and one factor per vertex are required".into(),
-            )],
-            vec![],
-            0,
-        );
+    if let Some(refused) = count_mismatch(t0, l.len(), s, t) {
+        return refused;
     }
     let enclose = |q: &[Rational]| -> Vec<Interval<Mpfr>> {
         q.iter().map(|x| Interval::from_rational(x, prec)).collect()

@@ -475,23 +475,34 @@ fn scramble(m: &mut Mesh, l: &mut [f64], n: usize, rng: &mut ChaCha8Rng) {
     }
 }
 
+/// The Δ-complexes of `seed` with a random cone metric, scrambled by `3·|E|` Euclidean
+/// flips (rng seeded `salt + seed`), each with the recorded Euclidean flip sequence that
+/// makes it Delaunay again: `(name, mesh, lengths, sequence)`.
+fn scrambled_delta_complexes(salt: u64, seed: u64) -> Vec<(String, Mesh, Vec<f64>, Vec<Edge>)> {
+    let mut rng = ChaCha8Rng::seed_from_u64(salt + seed);
+    let mut out = Vec::new();
+    for (name, m0) in delta_complexes(seed) {
+        let (mut m, mut l) = (m0.clone(), cone_metric(&m0, &mut rng));
+        let n = 3 * m.n_edges();
+        scramble(&mut m, &mut l, n, &mut rng);
+        let (mut md, mut ld) = (m.clone(), l.clone());
+        let opts = FlipOptions {
+            record: true,
+            ..FlipOptions::default()
+        };
+        let seq = flip_to_delaunay(&mut md, &mut ld, FlipKind::Euclidean, &opts)
+            .unwrap()
+            .sequence;
+        out.push((name, m, l, seq));
+    }
+    out
+}
+
 #[test]
 fn t23_certified_on_delta_complexes_and_refuted_with_ptolemy_replay() {
     let (mut flipped, mut refuted) = (0, 0);
     for seed in case_seeds(2, 20) {
-        let mut rng = ChaCha8Rng::seed_from_u64(23 + seed);
-        for (name, m0) in delta_complexes(seed) {
-            let (mut m, mut l) = (m0.clone(), cone_metric(&m0, &mut rng));
-            let n = 3 * m.n_edges();
-            scramble(&mut m, &mut l, n, &mut rng);
-            let (mut md, mut ld) = (m.clone(), l.clone());
-            let opts = FlipOptions {
-                record: true,
-                ..FlipOptions::default()
-            };
-            let flips = flip_to_delaunay(&mut md, &mut ld, FlipKind::Euclidean, &opts)
-                .unwrap()
-                .sequence;
+        for (name, m, l, flips) in scrambled_delta_complexes(23, seed) {
             let v = check_euclidean_flips_preserve_cone_metric(
                 &m,
                 &l,
@@ -672,19 +683,7 @@ fn b84_first_rung_verdicts_equal_the_mpfr_comparison() {
     let quiet = Progress::default();
     let mut by_rung = 0;
     for seed in case_seeds(2, 20) {
-        let mut rng = ChaCha8Rng::seed_from_u64(84 + seed);
-        for (name, m0) in delta_complexes(seed) {
-            let (mut m, mut l) = (m0.clone(), cone_metric(&m0, &mut rng));
-            let n = 3 * m.n_edges();
-            scramble(&mut m, &mut l, n, &mut rng);
-            let (mut md, mut ld) = (m.clone(), l.clone());
-            let opts = FlipOptions {
-                record: true,
-                ..FlipOptions::default()
-            };
-            let seq = flip_to_delaunay(&mut md, &mut ld, FlipKind::Euclidean, &opts)
-                .unwrap()
-                .sequence;
+        for (name, m, l, seq) in scrambled_delta_complexes(84, seed) {
             for bits in [64, 128] {
                 let p = proved(&m, &l, &seq, Precision::new(bits).unwrap(), &quiet);
                 let fast = verify_flip_sequence(&m, &l, &seq, FlipKind::Euclidean, bits as u32);
