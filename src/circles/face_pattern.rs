@@ -24,8 +24,8 @@
 //! `ΣΦ ≠ (E − F)π` admit no solution ([`FacePatternError::AngleSum`]).
 
 use super::layout::third_corner;
-use crate::geometry::unfold::dual_breadth_first;
 use super::linalg::solve_spd;
+use crate::geometry::unfold::dual_breadth_first;
 use crate::mesh::{HalfEdge, Mesh};
 use std::f64::consts::PI;
 

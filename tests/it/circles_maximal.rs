@@ -2,17 +2,17 @@
 //! certified tangency (B95, B96), the angle formula and its Jacobian against independent
 //! computations (B97), uniqueness and dependence on the combinatorics only.
 
-use penner::circles::maximal::hyperbolic::{angle_jacobian_triplets, angle_sums, corner_angle};
 use penner::circles::hexagonal::hex_complex;
+use penner::circles::maximal::hyperbolic::{angle_jacobian_triplets, angle_sums, corner_angle};
 use penner::circles::maximal::layout::Circle;
-use penner::circles::maximal::stopping::layout_defect;
 use penner::circles::maximal::sphere::{check_sphere_packing, exact_caps};
+use penner::circles::maximal::stopping::layout_defect;
 use penner::circles::maximal::tangency::{check_packing, exact_circles, PackingVerdict};
 use penner::circles::maximal::{maximal_disk, maximal_sphere, MaximalError, Options};
 use penner::mesh::builders::{grid_disk, icosahedron, octahedron, random_planar};
 use penner::mesh::Mesh;
-use penner::theorems::t12_rodin_sullivan::{in_half_disk, BASE};
 use penner::scalar::{Mpfr, Precision, Real};
+use penner::theorems::t12_rodin_sullivan::{in_half_disk, BASE};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rug::Rational;

@@ -3,8 +3,8 @@
 
 use penner::circles::hexagonal::{hex_complex, lattice_point, locate};
 use penner::theorems::t12_rodin_sullivan::{
-    check_refinement, compact_samples, half_disk_map, in_half_disk, measure_level, Level, BASE,
-    C, MAX_LAYOUT_DEFECT_RATIO,
+    check_refinement, compact_samples, half_disk_map, in_half_disk, measure_level, Level, BASE, C,
+    MAX_LAYOUT_DEFECT_RATIO,
 };
 use penner::theorems::Verdict;
 

@@ -183,28 +183,47 @@ pub fn layout_disk<T: Real>(
         },
         horo: None,
     };
-    let first = place(t, interior, centre, &origin.z, direction, &Complex::one(&zero));
+    let first = place(
+        t,
+        interior,
+        centre,
+        &origin.z,
+        direction,
+        &Complex::one(&zero),
+    );
     let (h1, h2) = (mesh.next(h0), mesh.prev(h0));
-    let third = place_third(t, interior, [centre, direction, mesh.tail(h2).idx()], &origin, &first);
+    let third = place_third(
+        t,
+        interior,
+        [centre, direction, mesh.tail(h2).idx()],
+        &origin,
+        &first,
+    );
     for (h, spot) in [(h0, origin), (h1, first), (h2, third)] {
         pos[mesh.tail(h).idx()].get_or_insert_with(|| spot.clone());
         corner[h.idx()] = Some(spot);
     }
-    dual_breadth_first(mesh, root, |_| true, |h| {
-        // h runs from tip(g) to tail(g), g = twin(h) in the parent face.
-        let g = h.twin();
-        let (Some(sx), Some(sy)) = (corner[mesh.next(g).idx()].clone(), corner[g.idx()].clone())
-        else {
-            return;
-        };
-        let (hn, hp) = (mesh.next(h), mesh.prev(h));
-        let (x, y, r) = (mesh.tail(h).idx(), mesh.tip(h).idx(), mesh.tail(hp).idx());
-        let sr = place_third(t, interior, [x, y, r], &sx, &sy);
-        pos[r].get_or_insert_with(|| sr.clone());
-        corner[h.idx()] = Some(sx);
-        corner[hn.idx()] = Some(sy);
-        corner[hp.idx()] = Some(sr);
-    });
+    dual_breadth_first(
+        mesh,
+        root,
+        |_| true,
+        |h| {
+            // h runs from tip(g) to tail(g), g = twin(h) in the parent face.
+            let g = h.twin();
+            let (Some(sx), Some(sy)) =
+                (corner[mesh.next(g).idx()].clone(), corner[g.idx()].clone())
+            else {
+                return;
+            };
+            let (hn, hp) = (mesh.next(h), mesh.prev(h));
+            let (x, y, r) = (mesh.tail(h).idx(), mesh.tip(h).idx(), mesh.tail(hp).idx());
+            let sr = place_third(t, interior, [x, y, r], &sx, &sy);
+            pos[r].get_or_insert_with(|| sr.clone());
+            corner[h.idx()] = Some(sx);
+            corner[hn.idx()] = Some(sy);
+            corner[hp.idx()] = Some(sr);
+        },
+    );
     let mut out = Vec::with_capacity(n);
     for (v, spot) in pos.iter().enumerate() {
         let Some(Spot { z, horo }) = spot else {

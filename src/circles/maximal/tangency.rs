@@ -117,8 +117,10 @@ impl Tally {
 
     /// Proved violations of exact conditions (orientations, windings).
     pub(super) fn violations(&mut self, v: Vec<Violation>) {
-        self.fails
-            .extend(v.into_iter().map(|v| format!("{}: {}", v.element, v.detail)));
+        self.fails.extend(
+            v.into_iter()
+                .map(|v| format!("{}: {}", v.element, v.detail)),
+        );
     }
 
     /// `Fails` on any proved violation, else `Undecided` on any open question, else `Holds`.
@@ -143,8 +145,8 @@ pub(super) fn check_precision(
     what: &str,
     bits: u32,
 ) -> Result<Precision, PackingVerdict> {
-    let prec =
-        Precision::new(u64::from(bits)).map_err(|e| PackingVerdict::Undecided(vec![e.to_string()]))?;
+    let prec = Precision::new(u64::from(bits))
+        .map_err(|e| PackingVerdict::Undecided(vec![e.to_string()]))?;
     if count != mesh.n_vertices() {
         return Err(PackingVerdict::Fails(vec![format!(
             "{count} {what} for {} vertices",
