@@ -215,7 +215,10 @@ pub fn check_refinement(levels: &[Level]) -> Verdict {
         .chain(
             levels
                 .iter()
-                .filter(|l| !(l.layout_defect <= MAX_LAYOUT_DEFECT_RATIO * l.error))
+                .filter(|l| {
+                    let bound = MAX_LAYOUT_DEFECT_RATIO * l.error;
+                    l.layout_defect.is_nan() || bound.is_nan() || l.layout_defect > bound
+                })
                 .map(|l| Witness {
                     element: format!("ε = {}", l.spacing),
                     detail: format!(
