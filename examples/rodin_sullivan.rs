@@ -4,7 +4,8 @@
 //! convergence without a rate).
 //!
 //! ```sh
-//! cargo run --release --example rodin_sullivan -- 5    # ε = 1/4 … 1/64 (1/128: proofs/T12, Limits)
+//! cargo run --release --example rodin_sullivan -- 6    # ε = 1/4 … 1/128
+//! cargo run --release --example rodin_sullivan -- 7    # and 1/256 (about 1.2·10⁵ vertices)
 //! ```
 
 use penner::theorems::t12_rodin_sullivan::{
@@ -16,12 +17,12 @@ fn main() {
     let levels: u32 = std::env::args()
         .nth(1)
         .and_then(|a| a.parse().ok())
-        .unwrap_or(5);
+        .unwrap_or(6);
     let f = |z: C| half_disk_map(BASE, z);
     let mut out = Vec::new();
     println!(
-        "{:>10} {:>9} {:>12} {:>8} {:>9}",
-        "ε", "vertices", "max_K error", "rate", "time s"
+        "{:>10} {:>9} {:>12} {:>8} {:>13} {:>9}",
+        "ε", "vertices", "max_K error", "rate", "layout defect", "time s"
     );
     for k in 0..levels {
         let eps = 0.25 / f64::from(1u32 << k);
@@ -37,11 +38,12 @@ fn main() {
         let rate = local_rates(&out).last().copied();
         let l = &out[out.len() - 1];
         println!(
-            "{:>10.6} {:>9} {:>12.4e} {:>8} {:>9.2}",
+            "{:>10.6} {:>9} {:>12.4e} {:>8} {:>13.3e} {:>9.2}",
             eps,
             l.vertices,
             l.error,
             rate.map_or("–".into(), |r| format!("{r:.3}")),
+            l.layout_defect,
             t.elapsed().as_secs_f64()
         );
     }

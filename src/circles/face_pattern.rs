@@ -25,6 +25,7 @@
 
 use super::layout::third_corner;
 use super::linalg::solve_spd;
+use crate::geometry::unfold::dual_breadth_first;
 use crate::mesh::{HalfEdge, Mesh};
 use std::f64::consts::PI;
 
@@ -278,7 +279,6 @@ pub fn unfold(mesh: &Mesh, pattern: &FacePattern, delta: &[f64]) -> Unfolding {
     let n = mesh.n_vertices();
     let mut positions: Vec<Option<[f64; 2]>> = vec![None; n];
     let mut bound = vec![0.0; n];
-    let mut seen = vec![false; mesh.n_faces()];
     let Some(f0) = mesh.faces().next() else {
         return Unfolding { positions, bound };
     };
@@ -311,20 +311,7 @@ pub fn unfold(mesh: &Mesh, pattern: &FacePattern, delta: &[f64]) -> Unfolding {
             + lpk * (dp + (a_q.cos() / a_q.sin()).abs() * dq + (a_k.cos() / a_k.sin()).abs() * dk);
     };
     place(&mut positions, &mut bound, h0);
-    seen[f0.idx()] = true;
-    let mut queue = std::collections::VecDeque::from([f0]);
-    while let Some(f) = queue.pop_front() {
-        for h in mesh.face_halfedges(f) {
-            let t = h.twin();
-            let Some(g) = mesh.face(t) else { continue };
-            if seen[g.idx()] {
-                continue;
-            }
-            place(&mut positions, &mut bound, t);
-            seen[g.idx()] = true;
-            queue.push_back(g);
-        }
-    }
+    dual_breadth_first(mesh, f0, |_| true, |t| place(&mut positions, &mut bound, t));
     Unfolding { positions, bound }
 }
 

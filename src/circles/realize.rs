@@ -19,7 +19,7 @@ use super::maximal::sphere::ExactCap;
 use super::maximal::tangency::{orientation_violations, ExactCircle};
 use super::metric::{cone_angles, cos_pi, lengths_from_radii};
 use crate::mesh::Mesh;
-use crate::scalar::{Interval, Mpfr, Precision, Real};
+use crate::scalar::{Interval, Mpfr, Precision};
 use rug::Rational;
 
 type I = Interval<Mpfr>;
@@ -36,22 +36,7 @@ pub struct Violation {
 /// Enclosures of `‖c_i − c_j‖ − (ρ_i + ρ_j)` per edge of `mesh` (mesh edge order) at
 /// precision `p`; `circles` has one entry per vertex.
 pub fn plane_tangency_defects(mesh: &Mesh, circles: &[ExactCircle], p: Precision) -> Vec<I> {
-    let enc = |c: &ExactCircle| {
-        (
-            I::from_rational(&c.centre[0], p),
-            I::from_rational(&c.centre[1], p),
-            I::from_rational(&c.radius, p),
-        )
-    };
-    mesh.edges()
-        .map(|e| {
-            let h = e.halfedge();
-            let (xi, yi, ri) = enc(&circles[mesh.tail(h).idx()]);
-            let (xj, yj, rj) = enc(&circles[mesh.tip(h).idx()]);
-            let (dx, dy) = ((xi - &xj).abs(), (yi - &yj).abs());
-            (dx.clone() * &dx + &(dy.clone() * &dy)).sqrt() - &(ri + &rj)
-        })
-        .collect()
+    super::maximal::tangency::tangency_defects(mesh, circles, p)
 }
 
 /// Faces whose centres are not positively oriented and, when there is none, interior

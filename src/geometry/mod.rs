@@ -10,3 +10,4 @@ pub mod energy;
 pub mod laplacian;
 pub mod scaling;
 pub mod triangle;
+pub mod unfold;

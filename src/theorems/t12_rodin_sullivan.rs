@@ -54,6 +54,12 @@ pub const BASE: C = [0.0, 0.433_012_701_892_219_3];
 /// rates are near 1, `examples/rodin_sullivan.rs`).
 pub const MIN_LOCAL_RATE: f64 = 1.0 / 3.0;
 
+/// The largest accepted ratio of a level's layout defect (the largest tangency defect of the
+/// laid-out packing, [`crate::circles::maximal::stopping::layout_defect`]) to its measured
+/// error: `2⁻⁸`. A level above it measures its layout, not the discrete Riemann map
+/// (proofs/T12 "Limits", B92).
+pub const MAX_LAYOUT_DEFECT_RATIO: f64 = 1.0 / 256.0;
+
 /// Lattice points are computed with rounding: a point of a row meant to lie on the
 /// diameter may come out at `|y| ≈ 10⁻¹⁷`. Points within this slack of the closed
 /// half-disk count as inside (the carrier then exceeds `Ω` by at most `10⁻¹²`, far below the
@@ -128,6 +134,8 @@ pub struct Level {
     pub error: f64,
     /// Where the maximum is attained.
     pub worst: C,
+    /// The largest tangency defect of the laid-out packing (proofs/B92).
+    pub layout_defect: f64,
 }
 
 /// The discrete map of spacing `eps` and its largest distance from `map` on
@@ -169,6 +177,7 @@ pub fn measure_level(eps: f64, map: &dyn Fn(C) -> C) -> Result<Level, RodinSulli
         vertices: hex.mesh.n_vertices(),
         error,
         worst,
+        layout_defect: packing.layout_defect,
     })
 }
 
@@ -181,8 +190,10 @@ pub fn local_rates(levels: &[Level]) -> Vec<f64> {
 }
 
 /// T12 on the levels of a refinement (spacings halving): `Holds` (numerical) when every
-/// local rate is at least [`MIN_LOCAL_RATE`], `Undecided` otherwise (a slow decrease on
-/// finitely many levels disproves no limit).
+/// local rate is at least [`MIN_LOCAL_RATE`] and every level's layout defect is at most
+/// [`MAX_LAYOUT_DEFECT_RATIO`] times its error, `Undecided` otherwise (a slow decrease on
+/// finitely many levels disproves no limit, and a level whose layout is not consistent
+/// far below its error measures nothing).
 pub fn check_refinement(levels: &[Level]) -> Verdict {
     if levels.len() < 2 {
         return Verdict::NotApplicable {
@@ -201,6 +212,22 @@ pub fn check_refinement(levels: &[Level]) -> Verdict {
             ),
             value: r,
         })
+        .chain(
+            levels
+                .iter()
+                .filter(|l| {
+                    let bound = MAX_LAYOUT_DEFECT_RATIO * l.error;
+                    l.layout_defect.is_nan() || bound.is_nan() || l.layout_defect > bound
+                })
+                .map(|l| Witness {
+                    element: format!("ε = {}", l.spacing),
+                    detail: format!(
+                        "layout defect {:.3e} not below 2⁻⁸ of the error {:.3e}",
+                        l.layout_defect, l.error
+                    ),
+                    value: l.layout_defect,
+                }),
+        )
         .collect();
     if witnesses.is_empty() {
         Verdict::Holds {

@@ -8,23 +8,13 @@
 //! certified orientation of every laid-out triangle ([`face_orientations`], exact
 //! `orient2d` on the binary64 coordinates, B25), so a fold is never hidden by rounding.
 
+use crate::geometry::unfold::{unfold_faces, Unfolded};
 use crate::mesh::{Face, HalfEdge, Mesh};
 use crate::predicates::ladder::Ladder;
 use crate::predicates::planar::{orient2d, point_from_f64};
 use crate::scalar::{Certified, Sign};
-use std::collections::VecDeque;
 
-/// The third corner `k` of the counterclockwise triangle `p, q, k` with `|pk| = a`,
-/// `|qk| = b`: `k = p + s·e + h·e⊥`, `e = (q − p)/d`, `d = |q − p|`,
-/// `s = (a² − b² + d²)/(2d)`, `h = √max(a² − s², 0)`.
-pub fn third_corner(p: [f64; 2], q: [f64; 2], a: f64, b: f64) -> [f64; 2] {
-    let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
-    let d = dx.hypot(dy);
-    let (ex, ey) = (dx / d, dy / d);
-    let s = (a * a - b * b + d * d) / (2.0 * d);
-    let h = (a * a - s * s).max(0.0).sqrt();
-    [p[0] + s * ex - h * ey, p[1] + s * ey + h * ex]
-}
+pub use crate::geometry::unfold::third_corner;
 
 /// A layout: the position of the tail of every face half-edge (`None` for boundary
 /// half-edges and for faces not reached), and the dual spanning tree used.
@@ -84,40 +74,7 @@ pub fn unfold(mesh: &Mesh, lengths: &[f64], root: Face) -> Layout {
 /// region, never crossing into a face outside it (e.g. copy 1 of a double, B79).
 pub fn unfold_within(mesh: &Mesh, lengths: &[f64], root: Face, keep: Option<&[bool]>) -> Layout {
     let kept = |f: Face| keep.is_none_or(|k| k.get(f.idx()).copied().unwrap_or(false));
-    let mut corner: Vec<Option<[f64; 2]>> = vec![None; mesh.n_halfedges()];
-    let mut parent = vec![None; mesh.n_faces()];
-    let mut seen = vec![false; mesh.n_faces()];
-    if root.idx() >= mesh.n_faces() || lengths.len() != mesh.n_edges() || !kept(root) {
-        return Layout { corner, parent };
-    }
-    let len = |h: HalfEdge| lengths[h.edge().idx()];
-    let place = |corner: &mut Vec<Option<[f64; 2]>>, h: HalfEdge, p: [f64; 2], q: [f64; 2]| {
-        let (n, pr) = (mesh.next(h), mesh.prev(h));
-        corner[h.idx()] = Some(p);
-        corner[n.idx()] = Some(q);
-        corner[pr.idx()] = Some(third_corner(p, q, len(pr), len(n)));
-    };
-    let h0 = mesh.face_halfedge(root);
-    place(&mut corner, h0, [0.0, 0.0], [len(h0), 0.0]);
-    seen[root.idx()] = true;
-    let mut queue = VecDeque::from([root]);
-    while let Some(f) = queue.pop_front() {
-        for h in mesh.face_halfedges(f) {
-            let t = h.twin();
-            let Some(g) = mesh.face(t) else { continue };
-            if seen[g.idx()] || !kept(g) {
-                continue;
-            }
-            let (Some(p), Some(q)) = (corner[mesh.next(h).idx()], corner[h.idx()]) else {
-                continue;
-            };
-            // t runs from tip(h) to tail(h).
-            place(&mut corner, t, p, q);
-            parent[g.idx()] = Some(t);
-            seen[g.idx()] = true;
-            queue.push_back(g);
-        }
-    }
+    let Unfolded { corner, parent } = unfold_faces(mesh, lengths, root, kept);
     Layout { corner, parent }
 }
 

@@ -3,7 +3,8 @@
 
 use penner::circles::hexagonal::{hex_complex, lattice_point, locate};
 use penner::theorems::t12_rodin_sullivan::{
-    check_refinement, compact_samples, half_disk_map, in_half_disk, measure_level, BASE, C,
+    check_refinement, compact_samples, half_disk_map, in_half_disk, measure_level, Level, BASE, C,
+    MAX_LAYOUT_DEFECT_RATIO,
 };
 use penner::theorems::Verdict;
 
@@ -90,4 +91,25 @@ fn t12_discrete_riemann_maps_converge_under_refinement() {
         .map(|&eps| measure_level(eps, &rotated).unwrap())
         .collect();
     assert!(!check_refinement(&wrong).holds(), "{wrong:?}");
+}
+
+#[test]
+fn t12_a_level_whose_layout_is_not_consistent_far_below_its_error_is_not_counted() {
+    // Errors halving (rate 1) with layout defects far below them hold; the same errors with
+    // the second level's layout defect at 2⁻⁶ of its error (above 2⁻⁸, proofs/B92: what
+    // the vertex-by-vertex layout gave at ε = 1/128) do not.
+    let level = |spacing: f64, error: f64, layout_defect: f64| Level {
+        spacing,
+        vertices: 0,
+        error,
+        worst: BASE,
+        layout_defect,
+    };
+    let good = [level(0.25, 0.1, 1e-12), level(0.125, 0.05, 1e-12)];
+    assert!(check_refinement(&good).holds());
+    let bad = [level(0.25, 0.1, 1e-12), level(0.125, 0.05, 0.05 / 64.0)];
+    const { assert!(1.0 / 64.0 > MAX_LAYOUT_DEFECT_RATIO) };
+    assert!(!check_refinement(&bad).holds());
+    let nan = [level(0.25, 0.1, 1e-12), level(0.125, 0.05, f64::NAN)];
+    assert!(!check_refinement(&nan).holds());
 }

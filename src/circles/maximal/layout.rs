@@ -18,9 +18,9 @@
 //! placed neighbour has radius `ρ = |ζ − p|²/(2(1 − Re(p ζ̄)))` and centre `(1 − ρ)ζ`.
 
 use super::hyperbolic::corner_rotation;
+use crate::geometry::unfold::dual_breadth_first;
 use crate::mesh::{Mesh, Vertex};
 use crate::scalar::Real;
-use std::collections::VecDeque;
 
 /// A complex number over `T`.
 #[derive(Clone, Debug)]
@@ -128,8 +128,28 @@ pub enum LayoutError {
     Unreached(usize),
 }
 
+/// Where one circle sits in one face: the hyperbolic centre of an interior circle, or the
+/// ideal point `ζ` of a horocycle with its Euclidean radius.
+#[derive(Clone, Debug)]
+struct Spot<T> {
+    /// Hyperbolic centre or ideal point.
+    z: Complex<T>,
+    /// The Euclidean horocycle radius (`None` for an interior circle).
+    horo: Option<T>,
+}
+
 /// Place every circle: `t` per vertex (`1` on horocycles), `interior` flags, and the
 /// normalisation `(centre, direction)` (module docs). Returns the Euclidean circles.
+///
+/// Faces are placed breadth first along a spanning tree of the dual graph
+/// ([`dual_breadth_first`]), each from the two corners it shares with its parent face *as
+/// placed in that face*, and a circle keeps its position in the first face that places it.
+/// Every face is then a rigid (Möbius) image of its parent, so an angle-sum residual `δ`
+/// at a vertex only turns the faces beyond it about that vertex: the errors add up along a
+/// path of the tree. Placing a circle from two neighbours positioned through different
+/// faces instead mixes two such motions, and the mixture, carried on from face to face, is
+/// a Cauchy problem for the layout that amplifies errors exponentially with the number of
+/// rows (proofs/B92).
 pub fn layout_disk<T: Real>(
     mesh: &Mesh,
     t: &[T],
@@ -140,79 +160,73 @@ pub fn layout_disk<T: Real>(
     if !interior.get(centre).copied().unwrap_or(false) {
         return Err(LayoutError::CentreNotInterior(centre));
     }
-    if !mesh
+    let Some(h0) = mesh
         .outgoing(Vertex(centre as u32))
-        .any(|h| mesh.tip(h).idx() == direction)
-    {
+        .find(|&h| mesh.tip(h).idx() == direction)
+    else {
         return Err(LayoutError::NotANeighbour { centre, direction });
-    }
+    };
+    // An interior vertex has a face on every outgoing half-edge.
+    let Some(root) = mesh.face(h0) else {
+        return Err(LayoutError::CentreNotInterior(centre));
+    };
     let n = mesh.n_vertices();
     let zero = t[centre].zero_like();
     let one = t[centre].one_like();
-    // pos[v]: hyperbolic centre (interior) or ideal point (horocycle); horo[v]: the
-    // Euclidean horocycle radius.
-    let mut pos: Vec<Option<Complex<T>>> = vec![None; n];
-    let mut horo: Vec<Option<T>> = vec![None; n];
-    let origin = Complex {
-        re: zero.clone(),
-        im: zero.clone(),
+    // corner[h]: the spot of tail(h) in the face of h.
+    let mut corner: Vec<Option<Spot<T>>> = vec![None; mesh.n_halfedges()];
+    let mut pos: Vec<Option<Spot<T>>> = vec![None; n];
+    let origin = Spot {
+        z: Complex {
+            re: zero.clone(),
+            im: zero.clone(),
+        },
+        horo: None,
     };
-    pos[centre] = Some(origin.clone());
-    let dir = Complex::one(&zero);
-    place(
-        t, interior, centre, &origin, direction, &dir, &mut pos, &mut horo,
+    let first = place(
+        t,
+        interior,
+        centre,
+        &origin.z,
+        direction,
+        &Complex::one(&zero),
     );
-    let mut queue: VecDeque<usize> = VecDeque::from([centre, direction]);
-    let mut queued = vec![false; n];
-    queued[centre] = true;
-    queued[direction] = true;
-    while let Some(v) = queue.pop_front() {
-        for h in mesh.outgoing(Vertex(v as u32)) {
-            // Faces around v: v → b → c with v, b placed.
-            if mesh.is_boundary_halfedge(h) {
-                continue;
-            }
-            let (a, b, c) = (v, mesh.tip(h).idx(), mesh.opposite_vertex(h).idx());
-            for (x, y, r) in [(a, b, c), (b, c, a), (c, a, b)] {
-                // The face x → y → r (counter-clockwise) with x, y placed and r not: place
-                // r from an interior one of x, y (from x, r is counter-clockwise of y; from
-                // y, clockwise of x), or from two horocycles.
-                if pos[r].is_some() || pos[x].is_none() || pos[y].is_none() {
-                    continue;
-                }
-                let from = if interior[x] {
-                    Some((x, y, true))
-                } else if interior[y] {
-                    Some((y, x, false))
-                } else {
-                    None
-                };
-                match from {
-                    None => place_from_horocycles(t, interior, [x, y, r], &mut pos, &mut horo),
-                    Some((p, q, ccw)) => {
-                        let (Some(zp), Some(zq)) = (pos[p].clone(), pos[q].clone()) else {
-                            continue;
-                        };
-                        let wq = to_frame(&zp, &zq).unit();
-                        let (cos, sin) = corner_rotation(&t[p], &t[q], &t[r]);
-                        let rot = Complex {
-                            re: cos,
-                            im: if ccw { sin } else { -sin },
-                        };
-                        let wr = wq.mul(&rot);
-                        place(t, interior, p, &zp, r, &wr, &mut pos, &mut horo);
-                    }
-                }
-                if pos[r].is_some() && !queued[r] {
-                    queued[r] = true;
-                    queue.push_back(r);
-                }
-            }
-        }
+    let (h1, h2) = (mesh.next(h0), mesh.prev(h0));
+    let third = place_third(
+        t,
+        interior,
+        [centre, direction, mesh.tail(h2).idx()],
+        &origin,
+        &first,
+    );
+    for (h, spot) in [(h0, origin), (h1, first), (h2, third)] {
+        pos[mesh.tail(h).idx()].get_or_insert_with(|| spot.clone());
+        corner[h.idx()] = Some(spot);
     }
+    dual_breadth_first(
+        mesh,
+        root,
+        |_| true,
+        |h| {
+            // h runs from tip(g) to tail(g), g = twin(h) in the parent face.
+            let g = h.twin();
+            let (Some(sx), Some(sy)) =
+                (corner[mesh.next(g).idx()].clone(), corner[g.idx()].clone())
+            else {
+                return;
+            };
+            let (hn, hp) = (mesh.next(h), mesh.prev(h));
+            let (x, y, r) = (mesh.tail(h).idx(), mesh.tip(h).idx(), mesh.tail(hp).idx());
+            let sr = place_third(t, interior, [x, y, r], &sx, &sy);
+            pos[r].get_or_insert_with(|| sr.clone());
+            corner[h.idx()] = Some(sx);
+            corner[hn.idx()] = Some(sy);
+            corner[hp.idx()] = Some(sr);
+        },
+    );
     let mut out = Vec::with_capacity(n);
-    for v in 0..n {
-        let Some(z) = &pos[v] else {
+    for (v, spot) in pos.iter().enumerate() {
+        let Some(Spot { z, horo }) = spot else {
             return Err(LayoutError::Unreached(v));
         };
         if interior[v] {
@@ -226,7 +240,7 @@ pub fn layout_disk<T: Real>(
                 radius: rho,
             });
         } else {
-            let rho = horo[v].clone().unwrap_or_else(|| zero.clone());
+            let rho = horo.clone().unwrap_or_else(|| zero.clone());
             let c = z.scale(&(one.clone() - &rho));
             out.push(Circle {
                 centre: [c.re, c.im],
@@ -237,9 +251,34 @@ pub fn layout_disk<T: Real>(
     Ok(out)
 }
 
-/// Place `r` tangent to the interior circle `p` (hyperbolic centre `zp`) in direction `w`
-/// (a unit complex number in `p`'s frame).
-#[allow(clippy::too_many_arguments)]
+/// The spot of `r` in the face `x → y → r` (counter-clockwise) from the spots of `x` and
+/// `y` in that face: from an interior one of them (from `x`, `r` is counter-clockwise of
+/// `y`; from `y`, clockwise of `x`), or from two horocycles.
+fn place_third<T: Real>(
+    t: &[T],
+    interior: &[bool],
+    [x, y, r]: [usize; 3],
+    sx: &Spot<T>,
+    sy: &Spot<T>,
+) -> Spot<T> {
+    let (p, sp, q, sq, ccw) = if interior[x] {
+        (x, sx, y, sy, true)
+    } else if interior[y] {
+        (y, sy, x, sx, false)
+    } else {
+        return place_from_horocycles(t, interior, [x, y, r], sx, sy);
+    };
+    let wq = to_frame(&sp.z, &sq.z).unit();
+    let (cos, sin) = corner_rotation(&t[p], &t[q], &t[r]);
+    let rot = Complex {
+        re: cos,
+        im: if ccw { sin } else { -sin },
+    };
+    place(t, interior, p, &sp.z, r, &wq.mul(&rot))
+}
+
+/// The spot of `r` tangent to the interior circle `p` (hyperbolic centre `zp`) in direction
+/// `w` (a unit complex number in `p`'s frame).
 fn place<T: Real>(
     t: &[T],
     interior: &[bool],
@@ -247,40 +286,42 @@ fn place<T: Real>(
     zp: &Complex<T>,
     r: usize,
     w: &Complex<T>,
-    pos: &mut [Option<Complex<T>>],
-    horo: &mut [Option<T>],
-) {
+) -> Spot<T> {
     let one = t[p].one_like();
     if interior[r] {
         let d = (t[p].clone() + &t[r]) / &(one + &(t[p].clone() * &t[r]));
-        pos[r] = Some(from_frame(zp, &w.scale(&d)));
+        Spot {
+            z: from_frame(zp, &w.scale(&d)),
+            horo: None,
+        }
     } else {
         let zeta = from_frame(zp, w);
         let touch = from_frame(zp, &w.scale(&t[p]));
         let re = touch.re.clone() * &zeta.re + &(touch.im.clone() * &zeta.im);
         let rho = zeta.sub(&touch).norm_sq() / &((one - &re) * &re.lit(2.0));
-        pos[r] = Some(zeta);
-        horo[r] = Some(rho);
+        Spot {
+            z: zeta,
+            horo: Some(rho),
+        }
     }
 }
 
-/// Place `r` in the face `a → b → r` (counter-clockwise) whose `a` and `b` are placed
-/// horocycles (`[a, b, r]`): the map `φ(z) = i(ζ_a + z)/(ζ_a − z)` to the upper half-plane
-/// sends `a`'s horocycle to the line `y = H`, `b`'s to the circle of diameter `H` on
-/// `x_b`; a circle tangent to both with `s = e^{−r} = (1 − t)/(1 + t)` has its hyperbolic
-/// centre at `x_b + H√(1 − s²) + iHs` (`√(1 − s²) = 2√t/(1 + t)`; a horocycle: the point
-/// `x_b + H`, touching the line at `x_b + H + iH`). `φ⁻¹(w) = ζ_a(w − i)/(w + i)`.
+/// The spot of `r` in the face `a → b → r` (counter-clockwise) whose `a` and `b` are
+/// horocycles (`[a, b, r]`, spots `sa`, `sb`): the map `φ(z) = i(ζ_a + z)/(ζ_a − z)` to the
+/// upper half-plane sends `a`'s horocycle to the line `y = H`, `b`'s to the circle of
+/// diameter `H` on `x_b`; a circle tangent to both with `s = e^{−r} = (1 − t)/(1 + t)` has
+/// its hyperbolic centre at `x_b + H√(1 − s²) + iHs` (`√(1 − s²) = 2√t/(1 + t)`; a
+/// horocycle: the point `x_b + H`, touching the line at `x_b + H + iH`).
+/// `φ⁻¹(w) = ζ_a(w − i)/(w + i)`.
 fn place_from_horocycles<T: Real>(
     t: &[T],
     interior: &[bool],
-    [a, b, r]: [usize; 3],
-    pos: &mut [Option<Complex<T>>],
-    horo: &mut [Option<T>],
-) {
-    let (Some(za), Some(zb), Some(rho_a)) = (pos[a].clone(), pos[b].clone(), horo[a].clone())
-    else {
-        return;
-    };
+    [_, _, r]: [usize; 3],
+    sa: &Spot<T>,
+    sb: &Spot<T>,
+) -> Spot<T> {
+    let (za, zb) = (&sa.z, &sb.z);
+    let rho_a = sa.horo.clone().unwrap_or_else(|| t[r].zero_like());
     let zero = rho_a.zero_like();
     let one = rho_a.one_like();
     let i = Complex {
@@ -291,14 +332,17 @@ fn place_from_horocycles<T: Real>(
     let phi_inv = |w: &Complex<T>| za.mul(&w.sub(&i)).div(&w.add(&i));
     let far = za.scale(&(one.clone() - &(rho_a.clone() * &one.lit(2.0))));
     let h = phi(&far).im;
-    let xb = phi(&zb).re;
+    let xb = phi(zb).re;
     let tr = &t[r];
     let two = one.lit(2.0);
     let sq = tr.sqrt() * &two / &(one.clone() + tr);
     let x = xb + &(h.clone() * &sq);
     if interior[r] {
         let s = (one.clone() - tr) / &(one.clone() + tr);
-        pos[r] = Some(phi_inv(&Complex { re: x, im: h * &s }));
+        Spot {
+            z: phi_inv(&Complex { re: x, im: h * &s }),
+            horo: None,
+        }
     } else {
         let zeta = phi_inv(&Complex {
             re: x.clone(),
@@ -307,7 +351,9 @@ fn place_from_horocycles<T: Real>(
         let touch = phi_inv(&Complex { re: x, im: h });
         let re = touch.re.clone() * &zeta.re + &(touch.im.clone() * &zeta.im);
         let rho = zeta.sub(&touch).norm_sq() / &((one - &re) * &two);
-        pos[r] = Some(zeta);
-        horo[r] = Some(rho);
+        Spot {
+            z: zeta,
+            horo: Some(rho),
+        }
     }
 }

@@ -10,10 +10,10 @@
 //! `I = (HH' − N·N')/√((|N|² − H²)(|N'|² − H'²))` is 1 (`I = (cos a cos a' − cos δ)/(sin a
 //! sin a')` for angular radii `a, a'` and centre angle `δ`, proofs/B96), a Möbius invariant.
 
-use super::tangency::PackingVerdict;
+use super::tangency::{check_precision, face_and_winding_violations, PackingVerdict, Tally};
 use crate::circles::realize::Violation;
 use crate::mesh::{Mesh, Vertex};
-use crate::scalar::{Interval, IntervalBound, Mpfr, Precision, Real, Sign};
+use crate::scalar::{Interval, Mpfr, Precision, Real};
 use rug::Rational;
 
 type I = Interval<Mpfr>;
@@ -83,61 +83,33 @@ pub fn check_sphere_packing(
     eps: &Rational,
     bits: u32,
 ) -> PackingVerdict {
-    let prec = match Precision::new(u64::from(bits)) {
+    let prec = match check_precision(mesh, caps.len(), "caps", bits) {
         Ok(p) => p,
-        Err(e) => return PackingVerdict::Undecided(vec![e.to_string()]),
+        Err(v) => return v,
     };
-    if caps.len() != mesh.n_vertices() {
-        return PackingVerdict::Fails(vec![format!(
-            "{} caps for {} vertices",
-            caps.len(),
-            mesh.n_vertices()
-        )]);
-    }
-    let (mut fails, mut undecided) = (Vec::new(), Vec::new());
+    let mut tally = Tally::new(I::from_rational(eps, prec));
+    let mut proper = true;
     for (v, c) in caps.iter().enumerate() {
         // |N|² − H² > 0: a proper cap (neither empty nor the whole sphere).
         let s = dot(&c.normal, &c.normal) - Rational::from(&c.height * &c.height);
         if s <= 0 {
-            fails.push(format!("v{v}: not a proper cap (|N|² ≤ H²)"));
+            tally.fail(format!("v{v}: not a proper cap (|N|² ≤ H²)"));
+            proper = false;
         }
     }
-    if !fails.is_empty() {
-        return PackingVerdict::Fails(fails);
+    if !proper {
+        return tally.verdict();
     }
-    let e = I::from_rational(eps, prec);
-    let mut max_defect = 0.0_f64;
     for (edge, d) in mesh.edges().zip(inversive_defects(mesh, caps, prec)) {
         let h = edge.halfedge();
         let (i, j) = (mesh.tail(h).idx(), mesh.tip(h).idx());
-        max_defect = max_defect.max(d.abs().hi().to_f64_up());
-        let up = (e.clone() - &d).sign();
-        let down = (e.clone() + &d).sign();
-        if up == Some(Sign::Negative) || down == Some(Sign::Negative) {
-            fails.push(format!(
-                "edge e{} (v{i}, v{j}): inversive distance defect {:.3e} > ε",
-                edge.idx(),
-                d.approx_f64()
-            ));
-        } else if up != Some(Sign::Positive) || down != Some(Sign::Positive) {
-            undecided.push(format!(
-                "edge e{} (v{i}, v{j}): defect not separated from ε",
-                edge.idx()
-            ));
-        }
+        tally.defect(
+            &d,
+            &format!("edge e{} (v{i}, v{j}) inversive distance", edge.idx()),
+        );
     }
-    fails.extend(
-        orientation_violations(mesh, caps)
-            .into_iter()
-            .map(|v| format!("{}: {}", v.element, v.detail)),
-    );
-    if !fails.is_empty() {
-        PackingVerdict::Fails(fails)
-    } else if !undecided.is_empty() {
-        PackingVerdict::Undecided(undecided)
-    } else {
-        PackingVerdict::Holds { max_defect }
-    }
+    tally.violations(orientation_violations(mesh, caps));
+    tally.verdict()
 }
 
 /// Enclosures of `I_ij − 1` per edge of `mesh` (mesh edge order) at precision `p`, with
@@ -168,28 +140,11 @@ pub fn inversive_defects(mesh: &Mesh, caps: &[ExactCap], p: Precision) -> Vec<I>
 /// and, when there is none, vertices around which the neighbours' normals do not wind
 /// exactly once ([`winding`], exact).
 pub fn orientation_violations(mesh: &Mesh, caps: &[ExactCap]) -> Vec<Violation> {
-    let mut out = Vec::new();
-    for f in mesh.faces() {
-        let [a, b, c] = mesh.face_vertices(f).map(Vertex::idx);
-        if det(&caps[a].normal, &caps[b].normal, &caps[c].normal) <= 0 {
-            out.push(Violation {
-                element: format!("face f{} (v{a}, v{b}, v{c})", f.idx()),
-                detail: "centres not positively oriented".into(),
-            });
-        }
-    }
-    if out.is_empty() {
-        for v in mesh.vertices() {
-            let w = winding(mesh, v, caps);
-            if w != 1 {
-                out.push(Violation {
-                    element: format!("v{}", v.idx()),
-                    detail: format!("the neighbours wind {w} times around it"),
-                });
-            }
-        }
-    }
-    out
+    face_and_winding_violations(
+        mesh,
+        |[a, b, c]| det(&caps[a].normal, &caps[b].normal, &caps[c].normal) > 0,
+        |v| Some(winding(mesh, v, caps)),
+    )
 }
 
 /// Winding of the neighbours' normals around `N_v` (counter-clockwise seen from outside),

@@ -71,6 +71,114 @@ fn upper(d: &[Rational; 2]) -> bool {
     d[1] > 0 || (d[1] == 0 && d[0] > 0)
 }
 
+/// The running verdict of a packing check (plane, or caps on the sphere): defects decided
+/// against `ε` on their enclosures, proved violations and open questions.
+pub(super) struct Tally {
+    eps: I,
+    fails: Vec<String>,
+    undecided: Vec<String>,
+    max_defect: f64,
+}
+
+impl Tally {
+    /// A check within `ε` (enclosed).
+    pub(super) fn new(eps: I) -> Self {
+        Tally {
+            eps,
+            fails: Vec::new(),
+            undecided: Vec::new(),
+            max_defect: 0.0,
+        }
+    }
+
+    /// The defect enclosure `d` of `what`: within `ε` proved, exceeding it proved (a
+    /// failure), or undecided.
+    pub(super) fn defect(&mut self, d: &I, what: &str) {
+        self.max_defect = self.max_defect.max(d.abs().hi().to_f64_up());
+        let v = d.approx_f64();
+        match within(d, &self.eps) {
+            Some(true) => {}
+            Some(false) => self.fails.push(format!("{what}: defect {v:.3e} > ε")),
+            None => self
+                .undecided
+                .push(format!("{what}: defect {v:.3e} not separated from ε")),
+        }
+    }
+
+    /// A proved violation.
+    pub(super) fn fail(&mut self, what: String) {
+        self.fails.push(what);
+    }
+
+    /// A condition neither proved nor refuted.
+    pub(super) fn undecided(&mut self, what: String) {
+        self.undecided.push(what);
+    }
+
+    /// Proved violations of exact conditions (orientations, windings).
+    pub(super) fn violations(&mut self, v: Vec<Violation>) {
+        self.fails.extend(
+            v.into_iter()
+                .map(|v| format!("{}: {}", v.element, v.detail)),
+        );
+    }
+
+    /// `Fails` on any proved violation, else `Undecided` on any open question, else `Holds`.
+    pub(super) fn verdict(self) -> PackingVerdict {
+        if !self.fails.is_empty() {
+            PackingVerdict::Fails(self.fails)
+        } else if !self.undecided.is_empty() {
+            PackingVerdict::Undecided(self.undecided)
+        } else {
+            PackingVerdict::Holds {
+                max_defect: self.max_defect,
+            }
+        }
+    }
+}
+
+/// The precision of a check of `count` circles (or caps) on `mesh`: `Undecided` when `bits`
+/// is no MPFR precision, `Fails` when the count is not one per vertex.
+pub(super) fn check_precision(
+    mesh: &Mesh,
+    count: usize,
+    what: &str,
+    bits: u32,
+) -> Result<Precision, PackingVerdict> {
+    let prec = Precision::new(u64::from(bits))
+        .map_err(|e| PackingVerdict::Undecided(vec![e.to_string()]))?;
+    if count != mesh.n_vertices() {
+        return Err(PackingVerdict::Fails(vec![format!(
+            "{count} {what} for {} vertices",
+            mesh.n_vertices()
+        )]));
+    }
+    Ok(prec)
+}
+
+/// Enclosures of `‖c_i − c_j‖ − (ρ_i + ρ_j)` per edge of `mesh` (mesh edge order) at
+/// precision `p`; `circles` has one entry per vertex.
+pub fn tangency_defects(mesh: &Mesh, circles: &[ExactCircle], p: Precision) -> Vec<I> {
+    mesh.edges()
+        .map(|e| {
+            let h = e.halfedge();
+            let (xi, yi, ri) = enclose(&circles[mesh.tail(h).idx()], p);
+            let (xj, yj, rj) = enclose(&circles[mesh.tip(h).idx()], p);
+            let (dx, dy) = ((xi - &xj).abs(), (yi - &yj).abs());
+            (dx.clone() * &dx + &(dy.clone() * &dy)).sqrt() - &(ri + &rj)
+        })
+        .collect()
+}
+
+/// Enclosures of the centre and the radius of `c`.
+fn enclose(c: &ExactCircle, p: Precision) -> (I, I, I) {
+    (
+        I::from_rational(&c.centre[0], p),
+        I::from_rational(&c.centre[1], p),
+        I::from_rational(&c.radius, p),
+    )
+}
+
 /// Check the packing conditions (module docs) for `circles` (one per vertex) on `mesh`
 /// within `eps ≥ 0`, with MPFR intervals of `bits` bits; `unit_disk` marks the circles
 /// that must touch the unit circle from inside (`None`: no unit-disk conditions).
@@ -81,111 +189,57 @@ pub fn check_packing(
     bits: u32,
     unit_disk: Option<&[bool]>,
 ) -> PackingVerdict {
-    let mut fails = Vec::new();
-    let mut undecided = Vec::new();
-    let prec = match Precision::new(u64::from(bits)) {
+    let prec = match check_precision(mesh, circles.len(), "circles", bits) {
         Ok(p) => p,
-        Err(e) => return PackingVerdict::Undecided(vec![e.to_string()]),
+        Err(v) => return v,
     };
-    if circles.len() != mesh.n_vertices() {
-        return PackingVerdict::Fails(vec![format!(
-            "{} circles for {} vertices",
-            circles.len(),
-            mesh.n_vertices()
-        )]);
-    }
+    let mut tally = Tally::new(I::from_rational(eps, prec));
     for (v, c) in circles.iter().enumerate() {
         if c.radius <= 0 {
-            fails.push(format!("v{v}: radius {} is not positive", c.radius));
+            tally.fail(format!("v{v}: radius {} is not positive", c.radius));
         }
     }
-    let e = I::from_rational(eps, prec);
-    let enc = |c: &ExactCircle| {
-        (
-            I::from_rational(&c.centre[0], prec),
-            I::from_rational(&c.centre[1], prec),
-            I::from_rational(&c.radius, prec),
-        )
-    };
-    let mut max_defect = 0.0_f64;
-    let mut record = |d: &I, what: String, fails: &mut Vec<String>, und: &mut Vec<String>| {
-        max_defect = max_defect.max(d.abs().hi().to_f64_up());
-        match within(d, &e) {
-            Some(true) => {}
-            Some(false) => fails.push(format!("{what}: defect {:.3e} > ε", d.approx_f64())),
-            None => und.push(format!(
-                "{what}: defect {:.3e} not separated from ε",
-                d.approx_f64()
-            )),
-        }
-    };
-    for edge in mesh.edges() {
+    for (edge, d) in mesh.edges().zip(tangency_defects(mesh, circles, prec)) {
         let h = edge.halfedge();
         let (i, j) = (mesh.tail(h).idx(), mesh.tip(h).idx());
-        let (xi, yi, ri) = enc(&circles[i]);
-        let (xj, yj, rj) = enc(&circles[j]);
-        let (dx, dy) = (xi - &xj, yi - &yj);
-        let dist = (dx.abs() * &dx.abs() + &(dy.abs() * &dy.abs())).sqrt();
-        let d = dist - &(ri + &rj);
-        record(
-            &d,
-            format!("edge e{} (v{i}, v{j})", edge.idx()),
-            &mut fails,
-            &mut undecided,
-        );
+        tally.defect(&d, &format!("edge e{} (v{i}, v{j})", edge.idx()));
     }
     if let Some(marks) = unit_disk {
         let one = I::from_f64(1.0, prec);
         for (v, c) in circles.iter().enumerate() {
-            let (x, y, r) = enc(c);
+            let (x, y, r) = enclose(c, prec);
             let reach = (x.abs() * &x.abs() + &(y.abs() * &y.abs())).sqrt() + &r;
             let gap = one.clone() - &reach;
             if marks.get(v).copied().unwrap_or(false) {
-                record(
-                    &gap,
-                    format!("v{v} and the unit circle"),
-                    &mut fails,
-                    &mut undecided,
-                );
+                tally.defect(&gap, &format!("v{v} and the unit circle"));
             } else {
                 match gap.sign() {
                     Some(Sign::Positive) => {}
                     Some(Sign::Negative) => {
-                        fails.push(format!("v{v}: the circle leaves the unit disk"));
+                        tally.fail(format!("v{v}: the circle leaves the unit disk"));
                     }
-                    _ => undecided.push(format!("v{v}: inside the unit disk not proved")),
+                    _ => tally.undecided(format!("v{v}: inside the unit disk not proved")),
                 }
             }
         }
     }
-    orientation_and_winding(mesh, circles, &mut fails);
-    if !fails.is_empty() {
-        PackingVerdict::Fails(fails)
-    } else if !undecided.is_empty() {
-        PackingVerdict::Undecided(undecided)
-    } else {
-        PackingVerdict::Holds { max_defect }
-    }
+    tally.violations(orientation_violations(mesh, circles));
+    tally.verdict()
 }
 
-/// Conditions 2 and 3 of the module docs, exactly; violations are pushed to `fails`.
-fn orientation_and_winding(mesh: &Mesh, circles: &[ExactCircle], fails: &mut Vec<String>) {
-    fails.extend(
-        orientation_violations(mesh, circles)
-            .into_iter()
-            .map(|v| format!("{}: {}", v.element, v.detail)),
-    );
-}
-
-/// Conditions 2 and 3 of the module docs, exactly: the faces whose centres are not
-/// positively oriented and, when there is none, the interior vertices whose neighbours do
-/// not wind exactly once around them.
-pub fn orientation_violations(mesh: &Mesh, circles: &[ExactCircle]) -> Vec<Violation> {
+/// Faces not positively oriented (`positive([a, b, c])` false) and, when there is none, the
+/// vertices whose neighbours do not wind exactly once around them (`winding(v)`; `None`
+/// for a vertex not checked): conditions 2 and 3 of the module docs, for plane circles and
+/// for caps on the sphere alike.
+pub(super) fn face_and_winding_violations(
+    mesh: &Mesh,
+    positive: impl Fn([usize; 3]) -> bool,
+    winding: impl Fn(Vertex) -> Option<usize>,
+) -> Vec<Violation> {
     let mut out = Vec::new();
     for f in mesh.faces() {
         let [a, b, c] = mesh.face_vertices(f).map(Vertex::idx);
-        let s = cross(&circles[a].centre, &circles[b].centre, &circles[c].centre);
-        if s <= 0 {
+        if !positive([a, b, c]) {
             out.push(Violation {
                 element: format!("face f{} (v{a}, v{b}, v{c})", f.idx()),
                 detail: "centres not positively oriented".into(),
@@ -193,21 +247,29 @@ pub fn orientation_violations(mesh: &Mesh, circles: &[ExactCircle]) -> Vec<Viola
         }
     }
     if out.is_empty() {
-        let boundary = mesh.boundary_vertices();
         for v in mesh.vertices() {
-            if boundary[v.idx()] {
-                continue;
-            }
-            let w = winding(mesh, v, circles);
-            if w != 1 {
-                out.push(Violation {
+            match winding(v) {
+                Some(w) if w != 1 => out.push(Violation {
                     element: format!("v{}", v.idx()),
                     detail: format!("the neighbours wind {w} times around it"),
-                });
+                }),
+                _ => {}
             }
         }
     }
     out
+}
+
+/// Conditions 2 and 3 of the module docs, exactly: the faces whose centres are not
+/// positively oriented and, when there is none, the interior vertices whose neighbours do
+/// not wind exactly once around them.
+pub fn orientation_violations(mesh: &Mesh, circles: &[ExactCircle]) -> Vec<Violation> {
+    let boundary = mesh.boundary_vertices();
+    face_and_winding_violations(
+        mesh,
+        |[a, b, c]| cross(&circles[a].centre, &circles[b].centre, &circles[c].centre) > 0,
+        |v| (!boundary[v.idx()]).then(|| winding(mesh, v, circles)),
+    )
 }
 
 /// The number of turns of the neighbours of interior `v` around its centre from the lower
