@@ -397,13 +397,20 @@ fn filter_not_positive(k: f64, n: f64) -> Option<Sign> {
 // ---------------------------------------------------------------------------------------
 // Rungs 2 and 3: enclosures and exact rationals.
 
-/// `P` evaluated on interval inputs `[a, b, c, d, e]` with outward rounding (proof: B62).
-pub fn enclose_p<B: IntervalBound>(q: &[Interval<B>; 5]) -> Interval<B> {
+/// `P = d·e·(b² + c² − a²) + b·c·(d² + e² − a²)` for the lengths `[a, b, c, d, e]` of
+/// [`Quad`] (MATH.md §5, Eq. 13), evaluated in `T`: rounded for point types, an enclosure
+/// for intervals ([`enclose_p`]).
+pub fn delaunay_p<T: Real>(q: &[T; 5]) -> T {
     let [a, b, c, d, e] = q;
     let a2 = a.clone() * a;
     let x = b.clone() * b + &(c.clone() * c) - &a2;
     let y = d.clone() * d + &(e.clone() * e) - &a2;
     d.clone() * e * &x + &(b.clone() * c * &y)
+}
+
+/// `P` evaluated on interval inputs `[a, b, c, d, e]` with outward rounding (proof: B62).
+pub fn enclose_p<B: IntervalBound>(q: &[Interval<B>; 5]) -> Interval<B> {
+    delaunay_p(q)
 }
 
 /// `P` in exact rational arithmetic.

@@ -24,7 +24,7 @@ use super::components::Components;
 use super::error::UniformizeError;
 use super::hessian::{grounded_hessian, newton_direction, CholeskyCache};
 use super::newton::validate_input;
-use super::refine::{carry_lengths, carry_lengths_from, scaled, RefineError};
+use super::refine::{carry_lengths, carry_lengths_from, flip_to_delaunay_at, scaled, RefineError};
 use super::targets::Targets;
 use super::verified_cholesky::{lambda_min_lower_bound, up, SymmetricLower};
 use crate::geometry::enclosure::angle_sums::enclose_cone_angles;
@@ -409,6 +409,8 @@ pub fn prove(
 /// [`prove`] for the metric `metric` on `T₀` instead of the binary64 lengths of the
 /// solve: the refinement runs on `metric.values` and the certificate on
 /// `metric.enclosures` ([`check_certificate_on`]), so a `Holds` is about that metric.
+/// The certificate's flip sequence is the solve's followed by the refinement's (the
+/// triangulation Delaunay at the refined `u`, B69).
 pub fn prove_on(
     sol: &super::newton::Uniformization,
     metric: Option<&T0Metric>,
@@ -417,24 +419,62 @@ pub fn prove_on(
 ) -> Result<Proof, CertificateError> {
     let prec =
         Precision::new(u64::from(bits)).map_err(|_| CertificateError::Bits(u64::from(bits)))?;
-    let r = match metric {
-        None => super::refine::refine::<Mpfr>(sol, prec, tolerance, 30)?,
-        Some(m) => super::refine::refine_on::<Mpfr>(sol, m.values.clone(), prec, tolerance, 30)?,
+    let l0 = match metric {
+        None => sol
+            .initial_lengths
+            .iter()
+            .map(|&x| Mpfr::from_f64(x, prec))
+            .collect(),
+        Some(m) => m.values.clone(),
     };
+    let (r, flips) = super::refine::refine_with_flips::<Mpfr>(sol, l0, prec, tolerance, 30)?;
     let u: Vec<Rational> =
         r.u.iter()
             .map(|x| x.to_rational().unwrap_or_default())
             .collect();
-    certify_near(sol, metric, &u, r.residual_max(), bits)
+    certify_after_flips(sol, &flips, metric, &u, r.residual_max(), bits)
 }
 
 /// The certificate half of [`prove_on`] for a `u` refined elsewhere (e.g. in double-double,
 /// which has no directed rounding: the proof is in `Interval<Mpfr>` at `bits`), whose
 /// `max |Θ − θ|` was estimated as `residual_max`: boxes of radius `10⁶`, `10³` and `10¹⁰`
 /// times `residual_max·√n` (at least `2^(10 − bits)`·those factors) around `u`; the first
-/// that holds, or the last outcome.
+/// that holds, or the last outcome. The triangulation is the solve's, Ptolemy-flipped to
+/// the Delaunay triangulation at `u` (decided on MPFR values at `bits`; B69).
 pub fn certify_near(
     sol: &super::newton::Uniformization,
+    metric: Option<&T0Metric>,
+    u: &[Rational],
+    residual_max: f64,
+    bits: u32,
+) -> Result<Proof, CertificateError> {
+    let prec =
+        Precision::new(u64::from(bits)).map_err(|_| CertificateError::Bits(u64::from(bits)))?;
+    if u.len() != sol.initial_mesh.n_vertices() {
+        return Err(CertificateError::ScaleCount {
+            expected: sol.initial_mesh.n_vertices(),
+            got: u.len(),
+        });
+    }
+    let (mut mesh, mut base) = match metric {
+        None => carry_lengths::<Mpfr>(
+            &sol.initial_mesh,
+            &sol.initial_lengths,
+            &sol.flip_sequence,
+            prec,
+        )?,
+        Some(m) => carry_lengths_from(&sol.initial_mesh, m.values.clone(), &sol.flip_sequence)?,
+    };
+    let um: Vec<Mpfr> = u.iter().map(|q| Mpfr::from_rational(q, prec)).collect();
+    let mut l = scaled(&mesh, &base, &um);
+    let flips = flip_to_delaunay_at(&mut mesh, &mut base, &mut l, &um)?;
+    certify_after_flips(sol, &flips, metric, u, residual_max, bits)
+}
+
+/// [`certify_near`] on the solve's triangulation followed by the Ptolemy flips `flips`.
+fn certify_after_flips(
+    sol: &super::newton::Uniformization,
+    flips: &[Edge],
     metric: Option<&T0Metric>,
     u: &[Rational],
     residual_max: f64,
@@ -443,6 +483,8 @@ pub fn certify_near(
     let n = sol.u.len().max(1) as f64;
     let floor = 2f64.powi(-(bits.min(1000) as i32) + 10);
     let estimate = (residual_max * n.sqrt()).max(floor);
+    let mut flip_sequence = sol.flip_sequence.clone();
+    flip_sequence.extend_from_slice(flips);
     let mut last = None;
     // 10⁶ first; then a smaller box (when the first left the Penner cell, e.g. near a
     // Delaunay tie) and a larger one (when the residual over μ exceeded the radius).
@@ -452,7 +494,7 @@ pub fn certify_near(
             t0: sol.initial_mesh.clone(),
             l0: sol.initial_lengths.clone(),
             targets: sol.targets.clone(),
-            flip_sequence: sol.flip_sequence.clone(),
+            flip_sequence: flip_sequence.clone(),
             u: u.to_vec(),
             radius,
         };

@@ -5,7 +5,13 @@
 //!
 //! The base lengths on the final triangulation are the input lengths `ℓ⁰` of `T₀`
 //! carried through the recorded Ptolemy flips in `T` (T28), not the `f64` ones of the
-//! solve.
+//! solve. At every iterate the triangulation is kept intrinsic Delaunay for the scaled
+//! metric by Ptolemy flips decided in `T` ([`flip_to_delaunay_at`]): `∇E = Θ − θ` with `θ`
+//! the angle sums of a Delaunay triangulation (T32). On a fixed triangulation `T` the
+//! iteration would converge to the zero `u_T` of `∇E_T` instead, and where the solution
+//! lies past a Delaunay tie of `T` (by the `f64` solve's error, `|P|/ℓ⁴ ~ 10⁻¹⁶`) the two
+//! differ: `E` is only `C²` across the tie, so `∇E(u_T) = ∇E(u_T) − ∇E_T(u_T) = O(P²)`,
+//! about `10⁻³¹`, which no precision removes (B69).
 
 use super::components::Components;
 use super::hessian::{grounded_hessian, newton_direction, CholeskyCache};
@@ -13,6 +19,7 @@ use super::newton::Uniformization;
 use crate::algorithms::flips::flip_ptolemy;
 use crate::geometry::cone_angles::cone_angles;
 use crate::mesh::{Edge, Mesh};
+use crate::predicates::delaunay::{delaunay_p, QuadEdges};
 use crate::scalar::Real;
 
 /// The result of [`refine`].
@@ -51,6 +58,9 @@ pub enum RefineError {
         "the grounded Hessian on the final triangulation is not numerically positive definite"
     )]
     Hessian,
+    /// Ptolemy flipping to the Delaunay triangulation at an iterate failed or hit its cap.
+    #[error("Ptolemy flips to the Delaunay triangulation at the refined u failed: {0}")]
+    Flips(String),
     /// An angle sum is undefined (a face of the final triangulation is not a triangle).
     #[error("angle sum at v{vertex} undefined at the refined u")]
     Undefined {
@@ -93,12 +103,84 @@ pub fn carry_lengths_from<T: Real>(
 /// The scaled lengths `e^{(u_i+u_j)/2}·ℓ_ij` in `T`.
 pub fn scaled<T: Real>(mesh: &Mesh, base: &[T], u: &[T]) -> Vec<T> {
     mesh.edges()
-        .map(|e| {
-            let h = e.halfedge();
-            let s = (u[mesh.tail(h).idx()].clone() + &u[mesh.tip(h).idx()]) * &base[0].lit(0.5);
-            s.exp() * &base[e.idx()]
-        })
+        .map(|e| scaled_edge(mesh, base, u, e))
         .collect()
+}
+
+/// The scaled length `e^{(u_i+u_j)/2}·ℓ_ij` of one edge `e = ij` in `T`.
+fn scaled_edge<T: Real>(mesh: &Mesh, base: &[T], u: &[T], e: Edge) -> T {
+    let h = e.halfedge();
+    let s = (u[mesh.tail(h).idx()].clone() + &u[mesh.tip(h).idx()]) * &base[0].lit(0.5);
+    s.exp() * &base[e.idx()]
+}
+
+/// Ptolemy-flip `mesh` towards the intrinsic Delaunay triangulation of the scaled metric
+/// `e^{(u_i+u_j)/2}·base_ij` in `T` (T21), carrying `base` along by the same flips
+/// (Ptolemy flips commute with scaling, T28). `lengths` holds [`scaled`]`(mesh, base, u)`
+/// on entry and on return (the flipped edges' recomputed from the carried `base`).
+/// Returns the flips in order (empty when `mesh` is already Delaunay at `u`). proof: B69
+///
+/// A heuristic for the refinement (the certificate decides, B35/B71): an edge whose `P`
+/// (B60) evaluated in `f64` exceeds `10⁻⁸` of its magnitude `M = de(b²+c²+a²) +
+/// bc(d²+e²+a²)` is kept; the others get `P` in `T`, and an edge is flipped only when it
+/// is below `−2^(20−p)·M` (`p` the bits of `T`), so that an edge within rounding of a tie
+/// (where either side carries the same angle sums up to `O(P²)`, B69) stays, and no flip
+/// is undone by rounding. At most `E + 1024` flips.
+pub fn flip_to_delaunay_at<T: Real>(
+    mesh: &mut Mesh,
+    base: &mut [T],
+    lengths: &mut [T],
+    u: &[T],
+) -> Result<Vec<Edge>, RefineError> {
+    let Some(first) = lengths.first() else {
+        return Ok(Vec::new());
+    };
+    let margin = first.lit(2f64.powi(20 - T::precision_bits(first.ctx()).min(1000) as i32));
+    // P and its magnitude M in T.
+    let p_and_m = |q: [T; 5]| {
+        let [a, b, c, d, e] = &q;
+        let m = d.clone() * e * &(b.clone() * b + &(c.clone() * c) + &(a.clone() * a))
+            + &(b.clone() * c * &(d.clone() * d + &(e.clone() * e) + &(a.clone() * a)));
+        (delaunay_p(&q), m)
+    };
+    let near_tie = |q: [f64; 5]| {
+        let [a, b, c, d, e] = q;
+        if !q.iter().all(|x| x.is_normal() && (1e-60..1e60).contains(x)) {
+            return true;
+        }
+        let p = delaunay_p(&q);
+        let m = d * e * (b * b + c * c + a * a) + b * c * (d * d + e * e + a * a);
+        p <= 1e-8 * m
+    };
+    let mut stack: Vec<Edge> = mesh
+        .edges()
+        .filter(|&e| {
+            QuadEdges::of(mesh, e)
+                .is_some_and(|q| near_tie(q.lengths(lengths).to_array().map(Real::approx_f64)))
+        })
+        .collect();
+    let cap = mesh.n_edges() + 1024;
+    let mut flips = Vec::new();
+    while let Some(e) = stack.pop() {
+        let Some(q) = QuadEdges::of(mesh, e) else {
+            continue;
+        };
+        let (p, m) = p_and_m(q.lengths(lengths).to_array().map(Clone::clone));
+        // Rounded values: a heuristic decision (the doc above).
+        if (p + &(m * &margin)).approx_f64() >= 0.0 {
+            continue;
+        }
+        if flips.len() >= cap {
+            return Err(RefineError::Flips("the flip cap was reached".into()));
+        }
+        if flip_ptolemy(mesh, base, e).is_err() {
+            return Err(RefineError::Flips(format!("e{} does not flip", e.0)));
+        }
+        lengths[e.idx()] = scaled_edge(mesh, base, u, e);
+        flips.push(e);
+        stack.extend(q.edges.to_array().into_iter().skip(1));
+    }
+    Ok(flips)
 }
 
 /// `Θ_i = q_i·π` in `T`.
@@ -131,7 +213,7 @@ pub fn refine<T: Real>(
 /// [`refine`] for another metric on `T₀`: `l0` are the lengths of `sol.initial_mesh` in
 /// `T` (e.g. the exact input lengths, flipped to `T₀` in `T`, where the `f64` solve used
 /// their rounding). The `f64` solution is the starting point and its flip sequence the
-/// triangulation.
+/// starting triangulation, kept Delaunay at every iterate ([`refine_with_flips`]).
 pub fn refine_on<T: Real>(
     sol: &Uniformization,
     l0: Vec<T>,
@@ -139,13 +221,26 @@ pub fn refine_on<T: Real>(
     tolerance: f64,
     max_iterations: usize,
 ) -> Result<Refinement<T>, RefineError> {
-    let (mesh, base) = carry_lengths_from(&sol.initial_mesh, l0, &sol.flip_sequence)?;
+    refine_with_flips(sol, l0, ctx, tolerance, max_iterations).map(|(r, _)| r)
+}
+
+/// [`refine_on`], also returning the Ptolemy flips done after `sol.flip_sequence` to keep
+/// the triangulation intrinsic Delaunay at the iterates (`sol.flip_sequence` followed by
+/// them is the triangulation of the refined `u`). proof: B69
+pub fn refine_with_flips<T: Real>(
+    sol: &Uniformization,
+    l0: Vec<T>,
+    ctx: T::Ctx,
+    tolerance: f64,
+    max_iterations: usize,
+) -> Result<(Refinement<T>, Vec<Edge>), RefineError> {
+    let (mut mesh, mut base) = carry_lengths_from(&sol.initial_mesh, l0, &sol.flip_sequence)?;
     let theta_target = targets_in::<T>(sol, ctx);
     let mut u: Vec<T> = sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect();
     let comps = Components::of(&mesh);
     let (_, free_idx) = comps.free_index();
     // The f64 Hessian once, from the lengths divided by the longest (angles are
-    // scale-invariant).
+    // scale-invariant). Flips at near-ties below change it by O(P): a preconditioner.
     let l = scaled(&mesh, &base, &u);
     let top = l.iter().map(Real::approx_f64).fold(0.0, f64::max);
     let lf: Vec<f64> = l.iter().map(|x| x.approx_f64() / top).collect();
@@ -153,10 +248,12 @@ pub fn refine_on<T: Real>(
     let mut cache = CholeskyCache::default();
     let factor = cache.factor(&h).ok_or(RefineError::Hessian)?;
     let mut history = Vec::new();
+    let mut flips = Vec::new();
     let mut stalls = 0;
     let mut iteration = 0;
     loop {
-        let l = scaled(&mesh, &base, &u);
+        let mut l = scaled(&mesh, &base, &u);
+        flips.extend(flip_to_delaunay_at(&mut mesh, &mut base, &mut l, &u)?);
         let theta = cone_angles(&mesh, &l);
         let r: Vec<T> = theta_target
             .iter()
@@ -174,12 +271,13 @@ pub fn refine_on<T: Real>(
         history.push(rmax);
         let reached = rmax <= tolerance;
         if reached || iteration >= max_iterations || stalls >= 2 {
-            return Ok(Refinement {
+            let refinement = Refinement {
                 u,
                 residual: r,
                 history,
                 reached,
-            });
+            };
+            return Ok((refinement, flips));
         }
         // H d = −∇E = −(Θ − θ): the Newton correction from the f64 factor.
         let d = newton_direction(&factor, &rf, &comps);

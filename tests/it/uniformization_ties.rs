@@ -174,3 +174,114 @@ fn b35_adjacent_ties_are_undecided_not_refuted() {
         assert!(d.contains_zero(), "v{v}: {d:?}");
     }
 }
+
+/// The flat torus `ℝ²/(mℤ × nℤ)` of the lattice `(i + t·j, j)`, cells split along the long
+/// diagonals `(i, j)–(i+1, j+1)` (vector `(1 + t, 1)`, not Delaunay: the short diagonal
+/// `(1 − t, 1)` is), binary64 lengths.
+fn parallelogram_torus(m: u32, n: u32, t: f64) -> (penner::mesh::Mesh, Vec<f64>) {
+    let v = |i: u32, j: u32| (j % n) * m + (i % m);
+    let mut faces = Vec::new();
+    for j in 0..n {
+        for i in 0..m {
+            let (p, q, r, s) = (v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1));
+            faces.push([p, q, r]);
+            faces.push([p, r, s]);
+        }
+    }
+    let mesh = penner::mesh::Mesh::from_faces(m * n, &faces).unwrap();
+    // The edge vector from the grid steps (each in {−1, 0, 1}, m, n ≥ 3).
+    let step = |a: u32, b: u32, k: u32| {
+        let d = (i64::from(b) - i64::from(a)).rem_euclid(i64::from(k));
+        if d > i64::from(k) / 2 {
+            d - i64::from(k)
+        } else {
+            d
+        }
+    };
+    let lengths = mesh
+        .edges()
+        .map(|e| {
+            let h = e.halfedge();
+            let (a, b) = (mesh.tail(h).0, mesh.tip(h).0);
+            let di = step(a % m, b % m, m) as f64;
+            let dj = step(a / m, b / m, n) as f64;
+            (di + t * dj).hypot(dj)
+        })
+        .collect();
+    (mesh, lengths)
+}
+
+/// B69: a recorded triangulation that the solution lies past a near-tie of (one short
+/// diagonal of the nearly rectangular flat torus Ptolemy-flipped back to the long one,
+/// `|P|/M ≈ t = 2⁻³⁰` at the solution). On that fixed triangulation the refinement would
+/// converge to the zero of `∇E_T`, whose true residual `∇E = Θ − θ_Delaunay` is `O(P²)`
+/// (≈ 10⁻¹⁸, undecided at 256 bits); kept Delaunay by Ptolemy flips it reaches the solution
+/// and the enclosed residual stays within the stated factor of the computed one:
+/// `γ ≤ √n·(max|Θ − θ| + 2^(40−bits))`, the `2^(40−bits)` covering the enclosure widths
+/// (B33: a few hundred roundings of relative size `2^−bits` on angle sums ≤ 2π·deg).
+#[test]
+fn b69_refinement_across_a_near_tie_is_certified_tightly() {
+    use penner::algorithms::flips::flip_ptolemy;
+    use penner::predicates::delaunay::{enclose_p, QuadEdges};
+    use penner::uniformization::certificate::prove;
+    use penner::uniformization::{uniformize, UniformizeOptions};
+    let t = 2f64.powi(-30);
+    let (mesh, l) = parallelogram_torus(6, 6, t);
+    let n = mesh.n_vertices();
+    let mut sol = uniformize(&mesh, &l, &Targets::flat(n), &UniformizeOptions::default()).unwrap();
+    assert!(sol.converged());
+    // Flip one diagonal of the final triangulation back: a near-tie crossed (P < 0 there,
+    // certified, so the recorded triangulation is not Delaunay at the solution).
+    let e = sol
+        .mesh
+        .edges()
+        .find(|&e| {
+            let h = e.halfedge();
+            let (a, b) = (sol.mesh.tail(h).0, sol.mesh.tip(h).0);
+            // A diagonal: its ends differ in both grid coordinates.
+            a % 6 != b % 6 && a / 6 != b / 6
+        })
+        .unwrap();
+    flip_ptolemy(&mut sol.mesh, &mut sol.base_lengths, e).unwrap();
+    sol.flip_sequence.push(e);
+    let prec = Precision::new(u64::from(BITS)).unwrap();
+    let q = QuadEdges::of(&sol.mesh, e).unwrap();
+    let lq: Vec<Interval<Mpfr>> = sol
+        .base_lengths
+        .iter()
+        .map(|&x| Interval::point(Mpfr::from_f64(x, prec)))
+        .collect();
+    let p = enclose_p(&q.lengths(&lq).map(Clone::clone).to_array());
+    assert!(
+        p.hi().approx_f64() < 0.0,
+        "the flipped-back diagonal is not Delaunay"
+    );
+
+    let proof = prove(&sol, BITS, 1e-60).unwrap();
+    // The refinement flipped the diagonal again (the certificate's triangulation).
+    assert!(proof.data.flip_sequence.len() > sol.flip_sequence.len());
+    let CertificateOutcome::Holds {
+        residual, distance, ..
+    } = proof.outcome
+    else {
+        panic!("{:?}", proof.outcome);
+    };
+    let factor = (n as f64).sqrt() * (proof.residual_max + 2f64.powi(40 - BITS as i32));
+    assert!(residual <= factor, "{residual:e} > {factor:e}");
+    assert!(distance < 1e-55, "{distance:e}");
+
+    // Negative control 1: u moved by 10⁻⁶ at one vertex (far beyond the box): undecided.
+    let mut moved = proof.data.clone();
+    moved.u[7] += Rational::from_f64(1e-6).unwrap();
+    let o = check_certificate(&moved, BITS).unwrap();
+    assert!(!holds(&o), "{o:?}");
+    // Negative control 2: a wrong target (π/100 moved between two vertices, Gauss–Bonnet
+    // kept) at the same u and box: undecided.
+    let mut wrong = proof.data.clone();
+    let mut q: Vec<Rational> = wrong.targets.over_pi().to_vec();
+    q[0] += ratio(1, 100);
+    q[9] -= ratio(1, 100);
+    wrong.targets = Targets::from_multiples_of_pi(q);
+    let o = check_certificate(&wrong, BITS).unwrap();
+    assert!(!holds(&o), "{o:?}");
+}
