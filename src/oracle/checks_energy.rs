@@ -112,13 +112,15 @@ pub const T31_CAPS: FaceCaps = FaceCaps {
     why: "nine dual Lobachevsky series per face",
 };
 
-/// T32: its comparison (2) encloses `E′(u)·d` by central differences on `Interval<Mpfr>`
-/// at twice the working precision, at every precision (costs in proofs/B32).
+/// T32: one pass per part over every face at the working precision (`∇E`, the Hessian,
+/// the convexity Hessians); the dual derivatives and the difference enclosure on
+/// `Interval<Mpfr>` at twice the precision run on the faces its bounded directions touch
+/// (costs in proofs/B32).
 pub const T32_CAPS: FaceCaps = FaceCaps {
-    f64: 2_000,
-    dd: 2_000,
-    mpfr: 2_000,
-    why: "its difference enclosure evaluates E on MPFR intervals at twice the precision",
+    f64: 500_000,
+    dd: 100_000,
+    mpfr: 10_000,
+    why: "one pass per part over every face, the convexity Hessians at five points",
 };
 
 /// T33: dual hyperbolic angles (`Dd` time goes to its `exp`) and `Л` per face (costs in
