@@ -25,8 +25,8 @@
 //! assert!(lobachevsky(&std::f64::consts::FRAC_PI_2).abs() < 1e-16);
 //! ```
 
-use super::enclosure::lobachevsky_enclosure;
 use super::coefficients::{table, working_precision, Table};
+use super::enclosure::lobachevsky_enclosure;
 use super::eval::{point, point_in};
 use super::fast_dd::lobachevsky_dd;
 use super::fast_f64::lobachevsky_f64;

@@ -90,26 +90,30 @@ fn with_half_pi<R>(w: u32, f: impl FnOnce(&Float, &Float) -> R) -> R {
 /// One attempt of [`reduce`] with `π/2` enclosed by `[hp_lo, hp_hi]` at `w` bits: the
 /// reduction when the enclosure of `t` is tight, `None` when `w` must grow.
 fn reduce_at(x: &Float, q: u32, hp_lo: &Float, hp_hi: &Float, w: u32) -> Option<Reduced> {
-        let quotient = Float::with_val(w, x / hp_lo);
-        let k = quotient.to_integer().unwrap_or_default();
-        if k == 0 {
-            return Some(Reduced {
-                odd: false,
-                lo: x.clone(),
-                hi: x.clone(),
-            });
-        }
-        // k·π/2 enclosed: the product is monotone in π/2 for a fixed sign of k.
-        let (m_lo, m_hi) = if k > 0 { (hp_lo, hp_hi) } else { (hp_hi, hp_lo) };
-        let kp_lo = Float::with_val_round(w, m_lo * &k, Round::Down).0;
-        let kp_hi = Float::with_val_round(w, m_hi * &k, Round::Up).0;
-        let lo = Float::with_val_round(w, x - &kp_hi, Round::Down).0;
-        let hi = Float::with_val_round(w, x - &kp_lo, Round::Up).0;
-        tight(&lo, &hi, q).then(|| Reduced {
-            odd: k.is_odd(),
-            lo,
-            hi,
-        })
+    let quotient = Float::with_val(w, x / hp_lo);
+    let k = quotient.to_integer().unwrap_or_default();
+    if k == 0 {
+        return Some(Reduced {
+            odd: false,
+            lo: x.clone(),
+            hi: x.clone(),
+        });
+    }
+    // k·π/2 enclosed: the product is monotone in π/2 for a fixed sign of k.
+    let (m_lo, m_hi) = if k > 0 {
+        (hp_lo, hp_hi)
+    } else {
+        (hp_hi, hp_lo)
+    };
+    let kp_lo = Float::with_val_round(w, m_lo * &k, Round::Down).0;
+    let kp_hi = Float::with_val_round(w, m_hi * &k, Round::Up).0;
+    let lo = Float::with_val_round(w, x - &kp_hi, Round::Down).0;
+    let hi = Float::with_val_round(w, x - &kp_lo, Round::Up).0;
+    tight(&lo, &hi, q).then(|| Reduced {
+        odd: k.is_odd(),
+        lo,
+        hi,
+    })
 }
 
 /// Whether `[lo, hi]` has one strict sign and relative width below `2^(−q−8)`.

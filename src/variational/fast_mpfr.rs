@@ -285,5 +285,12 @@ pub fn energy_gradient_hessian_mpfr(
             }
         }
     }
-    close_parts(energy, theta, !lt.is_empty(), u, targets, pattern.matrix(val))
+    close_parts(
+        energy,
+        theta,
+        !lt.is_empty(),
+        u,
+        targets,
+        pattern.matrix(val),
+    )
 }

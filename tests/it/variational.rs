@@ -547,8 +547,8 @@ fn b32_face_caps_per_precision_name_the_limit() {
         assert!(v.holds(), "{id}: {v:?}");
     }
     // Negative control: the raised gradient entry is refuted on the same surface.
-    let nc = (penner::oracle::controls::by_id("T32-NC").unwrap().run)(&case, Prec::F64, &s)
-        .unwrap();
+    let nc =
+        (penner::oracle::controls::by_id("T32-NC").unwrap().run)(&case, Prec::F64, &s).unwrap();
     assert!(nc.fails(), "T32-NC: {nc:?}");
     let small = FaceCaps {
         f64: 2000,
@@ -559,8 +559,15 @@ fn b32_face_caps_per_precision_name_the_limit() {
     for p in [Prec::F64, Prec::Dd, Prec::Mpfr(mpfr(128))] {
         match beyond_caps(&case, p, &small) {
             Some(Verdict::NotApplicable { reason }) => {
-                let cap = if matches!(p, Prec::Mpfr(_)) { "1000" } else { "2000" };
-                assert!(reason.contains("2048 faces") && reason.contains(cap), "{reason}");
+                let cap = if matches!(p, Prec::Mpfr(_)) {
+                    "1000"
+                } else {
+                    "2000"
+                };
+                assert!(
+                    reason.contains("2048 faces") && reason.contains(cap),
+                    "{reason}"
+                );
                 assert!(reason.contains(&p.to_string()), "{reason}");
             }
             v => panic!("T32 caps at {p}: {v:?}"),
