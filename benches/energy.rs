@@ -1,6 +1,7 @@
 //! Criterion benchmarks: the discrete-uniformization energy `E`, its gradient `Θ − θ` and
-//! the sparse Hessian assembly (`penner::variational::energy`) on a closed mesh with 10⁵
-//! faces (a 250 × 200 jittered torus grid), in f64, double-double and MPFR-256, and the
+//! the sparse Hessian assembly (`penner::variational::energy`) on a closed mesh (a
+//! jittered torus grid, 4000 faces by default so that the run stays short; 10⁵ faces with
+//! `PENNER_BENCH_FACES_GRID=250,200`), in f64, double-double and MPFR-256, and the
 //! cone-angle kernel alone (`geometry::cone_angles`, f64) on the same mesh for the ratio
 //! (E + ∇E + H at f64) / (cone angles at f64). The input of `E` is the scaled logarithmic
 //! lengths `λ̃` (computed once, outside the timing, as a Newton step would keep them);
@@ -102,7 +103,7 @@ fn grid() -> (u32, u32) {
             let (a, b) = s.split_once(',')?;
             Some((a.trim().parse().ok()?, b.trim().parse().ok()?))
         })
-        .unwrap_or((250, 200))
+        .unwrap_or((50, 40))
 }
 
 fn bench_energy(c: &mut Criterion) {
@@ -116,7 +117,7 @@ fn bench_energy(c: &mut Criterion) {
     g.bench_function(BenchmarkId::new("hessian_pattern", "f64"), |b| {
         b.iter(|| black_box(HessianPattern::new(black_box(&mesh)).dim()));
     });
-    // Л alone on the mesh's 3·10⁵ corner angles (its share of E + ∇E + H at f64).
+    // Л alone on the mesh's corner angles, three per face (its share of E + ∇E + H at f64).
     let lt64 = log_lengths(&len);
     let angles: Vec<f64> = mesh
         .faces()

@@ -58,6 +58,26 @@ pub fn directions<T: Real>(n: usize, like: &T) -> Vec<Vec<T>> {
     out
 }
 
+/// The most vertices each pattern direction of [`bounded_directions`] moves.
+pub const T32_SUPPORT: usize = 64;
+
+/// T32's directions: those of [`directions`] with each pattern kept on at most
+/// [`T32_SUPPORT`] vertices spread over the index range (`v ≡ 0 mod ⌈n/64⌉`) and 0
+/// elsewhere, so that T32's costly parts run on the faces touching the support
+/// (proofs/B32); up to 64 vertices they are [`directions`].
+pub fn bounded_directions<T: Real>(n: usize, like: &T) -> Vec<Vec<T>> {
+    let stride = n.div_ceil(T32_SUPPORT).max(1);
+    let mut out = directions(n, like);
+    for d in out.iter_mut().skip(1) {
+        for (v, x) in d.iter_mut().enumerate() {
+            if v % stride != 0 {
+                *x = like.zero_like();
+            }
+        }
+    }
+    out
+}
+
 /// Faces up to which a check runs, per backend (proofs/B32): `Л` and its derivative run
 /// without MPFR at `f64` and `Dd` (B30, B53, B55), each MPFR row evaluates its series at
 /// `p/2 + 4` terms per call.
@@ -92,13 +112,15 @@ pub const T31_CAPS: FaceCaps = FaceCaps {
     why: "nine dual Lobachevsky series per face",
 };
 
-/// T32: its comparison (2) encloses `E′(u)·d` by central differences on `Interval<Mpfr>`
-/// at twice the working precision, at every precision (costs in proofs/B32).
+/// T32: one pass per part over every face at the working precision (`∇E`, the Hessian,
+/// the convexity Hessians); the dual derivatives and the difference enclosure on
+/// `Interval<Mpfr>` at twice the precision run on the faces its bounded directions touch
+/// (costs in proofs/B32).
 pub const T32_CAPS: FaceCaps = FaceCaps {
-    f64: 2_000,
-    dd: 2_000,
-    mpfr: 2_000,
-    why: "its difference enclosure evaluates E on MPFR intervals at twice the precision",
+    f64: 500_000,
+    dd: 100_000,
+    mpfr: 10_000,
+    why: "one pass per part over every face, the convexity Hessians at five points",
 };
 
 /// T33: dual hyperbolic angles (`Dd` time goes to its `exp`) and `Л` per face (costs in
@@ -185,7 +207,8 @@ fn t32(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
     at_precision!(prec, case, |l: T| {
         let n = case.mesh.n_vertices();
         let z = l.first()?;
-        let (u, t, d) = energy_probe(n, z);
+        let (u, t) = (log_scale_factors(n, z), flat_targets(n, z));
+        let d = bounded_directions(n, z);
         let input = EnergyInput {
             mesh: &case.mesh,
             lengths: &l,

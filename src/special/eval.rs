@@ -21,12 +21,16 @@ pub(crate) fn enclose_point(x: &Float, bits: u32) -> Option<(Float, Float)> {
 /// `Л(x)` to nearest at the working precision of `bits` (error below `2^(−bits−20)`
 /// relative, proofs/B52), with the reduced argument: `x = k·π/2 + t`, `k` odd or even.
 pub(crate) fn point(x: &Float, bits: u32) -> Option<(Float, Float, bool)> {
-    let t = table(working_precision(bits));
+    point_in(x, &table(working_precision(bits)))
+}
+
+/// [`point`] with the table of its working precision already at hand.
+pub(crate) fn point_in(x: &Float, t: &Table) -> Option<(Float, Float, bool)> {
     if x.is_zero() {
         return Some((Float::new(t.prec), Float::new(t.prec), false));
     }
     let red = reduce(x, t.prec)?;
-    let (v, _) = evaluate(&red, &t, false)?;
+    let (v, _) = evaluate(&red, t, false)?;
     Some((v, red.lo, red.odd))
 }
 

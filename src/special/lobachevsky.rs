@@ -25,14 +25,16 @@
 //! assert!(lobachevsky(&std::f64::consts::FRAC_PI_2).abs() < 1e-16);
 //! ```
 
+use super::coefficients::{table, working_precision, Table};
 use super::enclosure::lobachevsky_enclosure;
-use super::eval::point;
+use super::eval::{point, point_in};
 use super::fast_dd::lobachevsky_dd;
 use super::fast_f64::lobachevsky_f64;
 use crate::scalar::{Dd, Interval, Mpfr, Precision, Real};
 use rug::float::Round;
 use rug::{Float, Rational};
 use std::any::Any;
+use std::sync::Arc;
 
 /// `Some(b)` when `A` and `B` are the same type.
 fn cast<A: 'static, B: 'static + Clone>(a: &A) -> Option<B> {
@@ -102,18 +104,7 @@ pub fn lobachevsky<T: Real>(x: &T) -> T {
         }
     }
     if let Some(v) = cast::<T, Mpfr>(x) {
-        // The stored number is exact: evaluate on it directly and round once to the
-        // value's precision (the generic path below, without its rational round trips).
-        let p = Mpfr::precision_bits(v.ctx());
-        let found = if v.0.is_finite() {
-            point(&v.0, p)
-        } else {
-            None
-        };
-        let y = match found {
-            Some((value, _, _)) => Mpfr(Float::with_val(p, &value)),
-            None => nan_like(&v),
-        };
+        let y = Mpfr(MpfrLobachevsky::new(Mpfr::precision_bits(v.ctx())).eval(&v.0));
         return cast::<Mpfr, T>(&y).unwrap_or_else(|| nan_like(x));
     }
     if let Some(v) = cast::<T, Interval<Mpfr>>(x) {
@@ -148,6 +139,39 @@ pub fn lobachevsky<T: Real>(x: &T) -> T {
     let trig = if odd { arg.cos() } else { arg.sin() };
     let deriv = -(trig * &x.lit(2.0)).abs().ln();
     y + &(h * &deriv)
+}
+
+/// `Л` on MPFR numbers of one precision, its series table looked up once: the numbers of
+/// [`lobachevsky`] on [`Mpfr`] (one ulp plus `2⁻³⁰` ulp, proof: B52), for passes that
+/// evaluate it many times.
+pub(crate) struct MpfrLobachevsky {
+    bits: u32,
+    table: Arc<Table>,
+}
+
+impl MpfrLobachevsky {
+    /// For results of `bits` bits.
+    pub(crate) fn new(bits: u32) -> Self {
+        MpfrLobachevsky {
+            bits,
+            table: table(working_precision(bits)),
+        }
+    }
+
+    /// `Л(x)` rounded once to the precision of this evaluator, NaN where `x` is not finite
+    /// or its reduction does not resolve. The stored number is exact: it is evaluated on
+    /// directly (the generic path of [`lobachevsky`] without its rational round trips).
+    pub(crate) fn eval(&self, x: &Float) -> Float {
+        let found = if x.is_finite() {
+            point_in(x, &self.table)
+        } else {
+            None
+        };
+        match found {
+            Some((value, _, _)) => Float::with_val(self.bits, &value),
+            None => Float::with_val(self.bits, f64::NAN),
+        }
+    }
 }
 
 /// Clausen's function `Cl₂(θ) = Σ_{k≥1} sin(kθ)/k² = 2 Л(θ/2)` (MATH.md §7).

@@ -14,5 +14,6 @@ pub mod reference;
 mod series;
 
 pub use enclosure::lobachevsky_enclosure;
+pub(crate) use lobachevsky::MpfrLobachevsky;
 pub use lobachevsky::{clausen2, ideal_tetrahedron_volume, lobachevsky};
 pub use reference::lobachevsky_tangent_series;

@@ -6,11 +6,17 @@
 //! intervals of `dᵀH(u+sd)d` (the derivative of each proper face's
 //! `½ Σ cot α_m (d_i − d_j)²`). No estimate is involved: the comparison's only other
 //! tolerance is the error of the claimed `g·d` itself.
+//!
+//! Only the faces touching the support of `d` ([`touched_faces`]) enter: on a fixed
+//! triangulation a face none of whose vertices moves keeps its lengths along `u + sd`, so
+//! its term of `E` cancels exactly in `E(u+hd) − E(u−hd)` and adds nothing to `E‴`; so do
+//! the terms `Θ_i u_i` with `d_i = 0` (proofs/B32). Leaving them out is exact and narrows
+//! the enclosure (an interval minus itself is not 0).
 
 use crate::geometry::triangle::cot_opposite;
-use crate::mesh::Mesh;
+use crate::mesh::{Face, Mesh};
 use crate::scalar::{Dual, Interval, Mpfr, Precision, Real};
-use crate::variational::energy::{energy, scaled_log_lengths};
+use crate::variational::energy::{face_energy_sum, scaled_log_lengths};
 use crate::variational::triangle::{shape, shifted_lengths, Shape};
 use rug::float::Round;
 use rug::Float;
@@ -24,6 +30,27 @@ pub struct DerivativeEnclosure {
     pub hi: Float,
     /// The truncation bound `(h²/6)·max|E‴|` included in `[lo, hi]` (rounded up).
     pub truncation: Float,
+}
+
+/// Whether each vertex moves along `d` (`d_v ≠ 0`; a value without a rational, NaN or
+/// infinite, counts as moving).
+pub fn support<T: Real>(d: &[T]) -> Vec<bool> {
+    d.iter()
+        .map(|x| x.to_rational().is_none_or(|q| q != 0))
+        .collect()
+}
+
+/// The faces with a vertex in the support of `d` (see [`support`]), in face order: on a
+/// fixed triangulation the only faces whose term of `E(u + sd)` depends on `s`
+/// (proofs/B32).
+pub fn touched_faces(mesh: &Mesh, moving: &[bool]) -> Vec<Face> {
+    mesh.faces()
+        .filter(|&f| {
+            mesh.face_halfedges(f)
+                .iter()
+                .any(|&h| moving[mesh.tail(h).idx()])
+        })
+        .collect()
 }
 
 /// The step `h = 2^{−⌈p/2⌉}` for working precision `p` bits.
@@ -50,11 +77,13 @@ fn mag_up(x: &Interval<Mpfr>) -> Float {
 
 /// An enclosure of `max_{|s|≤h} |d/ds dᵀH(u+sd)d|` (`= |E‴|` along `d`): per face of the
 /// scaled metric on the box `u + [−h, h]d`, the dual derivative of
-/// `½ Σ_m cot α_m (d_i − d_j)²`, summed; a face certified strictly degenerate on the whole
-/// box adds nothing. `None` when some face is neither certified proper nor strictly
+/// `½ Σ_m cot α_m (d_i − d_j)²`, summed over `faces` (those touching the support of `d`;
+/// the others add exactly 0); a face certified strictly degenerate on the whole box adds
+/// nothing. `None` when some face of `faces` is neither certified proper nor strictly
 /// degenerate on the whole box (`E` need not be three times differentiable there).
 fn third_derivative_bound(
     mesh: &Mesh,
+    faces: &[Face],
     lambda: &[Interval<Mpfr>],
     u: &[Interval<Mpfr>],
     d: &[Interval<Mpfr>],
@@ -79,7 +108,7 @@ fn third_derivative_bound(
     let lt = scaled_log_lengths(mesh, &lam, &ud);
     let z = lambda.first()?.zero_like();
     let mut total = z.clone();
-    for f in mesh.faces() {
+    for &f in faces {
         let hs = mesh.face_halfedges(f);
         let x = hs.map(|he| lt[he.edge().idx()].clone());
         // The shape is decided on the value enclosures (over the whole box); `Dual` is a
@@ -113,11 +142,29 @@ fn third_derivative_bound(
 }
 
 /// The enclosure of `E′(u)·d` for the energy with logarithmic lengths `lambda`, log scale
-/// factors `u`, targets `Θ`, at `2·bits` bits with `h = 2^{−⌈bits/2⌉}` (proofs/B57).
+/// factors `u`, targets `Θ`, at `2·bits` bits with `h = 2^{−⌈bits/2⌉}` (proofs/B57), on
+/// the faces touching the support of `d` ([`touched_faces`], proofs/B32).
 /// `None` when an enclosure is invalid (a face not certified proper on the segment, an
 /// argument not finite) or the precision is out of range.
 pub fn derivative_enclosure<T: Real>(
     mesh: &Mesh,
+    lambda: &[T],
+    u: &[T],
+    targets: &[T],
+    d: &[T],
+    bits: u32,
+) -> Option<DerivativeEnclosure> {
+    let moving = support(d);
+    let faces = touched_faces(mesh, &moving);
+    derivative_enclosure_on(mesh, &faces, lambda, u, targets, d, bits)
+}
+
+/// [`derivative_enclosure`] with the face part of `E` summed over `faces` only. It encloses
+/// `E′(u)·d` when `faces` holds every face touching the support of `d` (proofs/B32); a
+/// list that misses one encloses the derivative of another function.
+pub fn derivative_enclosure_on<T: Real>(
+    mesh: &Mesh,
+    faces: &[Face],
     lambda: &[T],
     u: &[T],
     targets: &[T],
@@ -131,6 +178,7 @@ pub fn derivative_enclosure<T: Real>(
         enclose(targets, p2)?,
         enclose(d, p2)?,
     );
+    let moving = support(d);
     let k = step_exponent(bits);
     let h = Interval::point(Mpfr(Float::with_val(p2.bits(), 1) >> k));
     let shift = |s: f64| -> Vec<Interval<Mpfr>> {
@@ -139,14 +187,26 @@ pub fn derivative_enclosure<T: Real>(
             .map(|(a, b)| a.clone() + &(b.clone() * &h * &h.lit(s)))
             .collect()
     };
-    let ep = energy(mesh, &l2, &shift(1.0), &t2)?;
-    let em = energy(mesh, &l2, &shift(-1.0), &t2)?;
+    let z = l2.first()?;
+    // φ(s) up to terms constant in s: the faces given and Θ_i u_i for the moving i.
+    let part = |us: &[Interval<Mpfr>]| -> Interval<Mpfr> {
+        let lt = scaled_log_lengths(mesh, &l2, us);
+        let mut e = face_energy_sum(mesh, faces.iter().copied(), &lt, z);
+        for ((t, ui), &m) in t2.iter().zip(us).zip(&moving) {
+            if m {
+                e += &(t.clone() * ui);
+            }
+        }
+        e
+    };
+    let ep = part(&shift(1.0));
+    let em = part(&shift(-1.0));
     // (E₊ − E₋)/2h: the division by the power of two 2h is exact.
     let q = (ep - &em) / &(h.clone() * &h.lit(2.0));
     if !q.is_valid() {
         return None;
     }
-    let m3 = third_derivative_bound(mesh, &l2, &u2, &d2, &h)?;
+    let m3 = third_derivative_bound(mesh, faces, &l2, &u2, &d2, &h)?;
     // (h²/6)·M, h² = 2^{−2k} exact, rounded up.
     let prec = p2.bits();
     let trunc = Float::with_val_round(prec, &m3 / 6u32, Round::Up).0 >> (2 * k);

@@ -14,14 +14,14 @@
 use super::bounds::{cot_error, eps, eps_shift, sum_error, SAFETY};
 use super::energy_bounds::{face_angle_error, face_energy_error, schlafli_error, slack_condition};
 use super::report::{check_lengths, lengths_out_of_range, Tally};
-use super::t32_difference::{derivative_enclosure, distance_outside};
+use super::t32_difference::{derivative_enclosure, distance_outside, support, touched_faces};
 use super::verdict::{Settings, Verdict, Witness};
 use crate::geometry::laplacian::SparseMatrix;
 use crate::mesh::{Face, HalfEdge, Mesh};
 use crate::predicates::tolerance::sign_beyond;
 use crate::scalar::{Dual, Real, Sign};
 use crate::variational::energy::{
-    energy, gradient, hessian, hessian_at, log_lengths, scaled_log_lengths,
+    face_energy_sum, gradient, hessian, hessian_at, log_lengths, scaled_log_lengths,
 };
 use crate::variational::triangle::{angles_from_log_lengths, shape, shifted_lengths, Shape};
 
@@ -199,17 +199,23 @@ pub fn verify_gradient<T: Real>(
     let (e, bits) = (eps::<T>(ctx), T::precision_bits(ctx));
     let lambda = input.lambda();
     let lt = scaled_log_lengths(mesh, &lambda, input.u);
-    let faces: Vec<FaceData> = mesh.faces().map(|f| face_data(mesh, f, &lt)).collect();
+    let lam_d = constants(&lambda);
     let mut tally = Tally::new(false, bits);
     for (k, d) in directions.iter().enumerate() {
         let df: Vec<f64> = d.iter().map(Real::approx_f64).collect();
+        // Only the faces touching the support of d move (proofs/B32): the others add
+        // exactly 0 to D_d E and to every sum of the bound below.
+        let moving = support(d);
+        let touched = touched_faces(mesh, &moving);
         let ud = dual_u(input.u, d);
-        let lam_d = constants(&lambda);
-        let t_d = constants(input.targets);
         let ltd = scaled_log_lengths(mesh, &lam_d, &ud);
-        let Some(ed) = energy(mesh, &lam_d, &ud, &t_d) else {
-            continue;
-        };
+        // D_d E = Σ_touched D_d F_f + Σ_{d_i ≠ 0} Θ_i d_i.
+        let mut ed = face_energy_sum(mesh, touched.iter().copied(), &ltd, &ud[0]);
+        for ((t, ui), &m) in input.targets.iter().zip(&ud).zip(&moving) {
+            if m {
+                ed += &(Dual::constant(t.clone()) * ui);
+            }
+        }
         let gd = claimed
             .iter()
             .zip(d)
@@ -218,7 +224,7 @@ pub fn verify_gradient<T: Real>(
         let mut angle_part = 0.0;
         let mut schlafli_part = 0.0;
         let mut terms: Vec<f64> = Vec::new();
-        for fd in &faces {
+        for fd in touched.iter().map(|&f| face_data(mesh, f, &lt)) {
             let vs = fd.hs.map(|h| mesh.tail(h).idx());
             let dsum: f64 = vs.iter().map(|&v| df[v].abs()).sum();
             let xd = fd.hs.map(|h| ltd[h.edge().idx()].clone());
@@ -295,21 +301,27 @@ pub fn verify_hessian<T: Real>(
     for (k, d) in directions.iter().enumerate() {
         let df: Vec<f64> = d.iter().map(Real::approx_f64).collect();
         let ud = dual_u(input.u, d);
-        let gd = gradient(mesh, &constants(&lambda), &ud, &constants(input.targets));
         let Some(hd) = claimed.mul_vec(d) else {
             continue;
         };
         let ltd = scaled_log_lengths(mesh, &constants(&lambda), &ud);
+        // D_d θ from the faces touching the support of d: elsewhere the angles do not
+        // move (proofs/B32), and (Hd)_i of the claimed H is compared at every vertex.
+        let zero = d[0].zero_like();
+        let mut theta_d = vec![zero.clone(); n];
         let mut tol = vec![0.0; n];
         let mut sizes = vec![0.0; n];
-        for f in mesh.faces() {
+        for f in touched_faces(mesh, &support(d)) {
             let fd = face_data(mesh, f, &lt);
+            let xd = fd.hs.map(|h| ltd[h.edge().idx()].clone());
+            let a = angles_from_log_lengths(&xd);
+            for (m, am) in a.iter().enumerate() {
+                theta_d[mesh.tail(fd.hs[(m + 2) % 3]).idx()] += &am.d;
+            }
             if !fd.proper {
                 // Constant angles, no Hessian contribution.
                 continue;
             }
-            let xd = fd.hs.map(|h| ltd[h.edge().idx()].clone());
-            let a = angles_from_log_lengths(&xd);
             let rho = slack_condition(fd.l);
             for (m, am) in a.iter().enumerate() {
                 let corner = mesh.tail(fd.hs[(m + 2) % 3]).idx();
@@ -329,7 +341,8 @@ pub fn verify_hessian<T: Real>(
         for i in 0..n {
             let sum = sum_error([sizes[i], sizes[i]], e) * (mesh.n_halfedges() as f64).sqrt();
             let t = settings.slack * (SAFETY * tol[i] + sum);
-            let err = gd[i].d.clone() - &hd[i];
+            // D_d(Θ − θ)_i = −D_d θ_i.
+            let err = zero.clone() - &theta_d[i] - &hd[i];
             tally.within(format!("d{k}:v{i}"), "D_d(Θ−θ) − H d", &err, t);
         }
     }
@@ -374,6 +387,7 @@ pub fn verify_convexity<T: Real>(
                 reason: "a direction of the wrong length".into(),
             };
         }
+        let touched = touched_faces(mesh, &support(d));
         for t in LINE_POINTS {
             let ut: Vec<T> = input
                 .u
@@ -392,7 +406,8 @@ pub fn verify_convexity<T: Real>(
                 .fold(d[0].zero_like(), |s, (a, b)| s + &(a.clone() * b));
             let mut tol = 0.0;
             let mut terms = Vec::new();
-            for f in mesh.faces() {
+            // Faces away from the support of d have (d_i − d_j)² = 0 on every side.
+            for &f in &touched {
                 let fd = face_data(mesh, f, &lt);
                 if !fd.proper {
                     // A degenerate face adds nothing to H (its angles are constant).

@@ -67,19 +67,32 @@ fn face_x<T: Real>(mesh: &Mesh, f: Face, lt: &[T]) -> ([HalfEdge; 3], [T; 3]) {
 /// only for a mesh without edges and vertices (no number to take the precision from).
 pub fn energy_at<T: Real>(mesh: &Mesh, lt: &[T], u: &[T], targets: &[T]) -> Option<T> {
     let z = lt.first().or(u.first())?;
-    let ctx = z.ctx();
-    let half_pi = T::pi(ctx) * &z.lit(0.5);
-    let two = z.lit(2.0);
-    let mut e = z.zero_like();
-    for f in mesh.faces() {
-        let (_, x) = face_x(mesh, f, lt);
-        let sum = x[0].clone() + &x[1] + &x[2];
-        e += &(triangle_energy(&x) * &two - &(half_pi.clone() * &sum));
-    }
+    let mut e = face_energy_sum(mesh, mesh.faces(), lt, z);
     for (t, ui) in targets.iter().zip(u) {
         e += &(t.clone() * ui);
     }
     Some(e)
+}
+
+/// The face part `Σ_{f ∈ faces} [2f(λ̃_f) − (π/2)(λ̃_ij + λ̃_jk + λ̃_ki)]` of [`energy_at`]
+/// over the given faces, in their order, in the context of `like`. Over all faces and
+/// plus `Σ Θ_i u_i` it is `E`; over the faces touching the support of a direction `d` it is
+/// all of `E(u + sd)` that depends on `s` (proofs/B32).
+pub fn face_energy_sum<T: Real>(
+    mesh: &Mesh,
+    faces: impl IntoIterator<Item = Face>,
+    lt: &[T],
+    like: &T,
+) -> T {
+    let half_pi = T::pi(like.ctx()) * &like.lit(0.5);
+    let two = like.lit(2.0);
+    let mut e = like.zero_like();
+    for f in faces {
+        let (_, x) = face_x(mesh, f, lt);
+        let sum = x[0].clone() + &x[1] + &x[2];
+        e += &(triangle_energy(&x) * &two - &(half_pi.clone() * &sum));
+    }
+    e
 }
 
 /// `E(u)` from the unscaled logarithmic lengths `λ` (see [`energy_at`]).
@@ -226,22 +239,37 @@ pub fn energy_gradient_hessian_with<T: Real>(
             add_face_hessian(pattern, mesh, &mut val, hs, c);
         }
     }
+    close_parts(e, theta, !lt.is_empty(), u, targets, pattern.matrix(val))
+}
+
+/// The common end of the one-pass assemblies ([`energy_gradient_hessian_with`] and the
+/// MPFR pass of [`super::fast_mpfr`]): `E = Σ_f F_f + Σ_i Θ_i u_i` from the face sum `e`,
+/// `∇E = Θ − θ` from the cone angles `θ` (the targets alone when there are no edges) and
+/// the assembled Hessian.
+pub(super) fn close_parts<T: Real>(
+    mut e: T,
+    theta: Vec<T>,
+    has_edges: bool,
+    u: &[T],
+    targets: &[T],
+    hessian: SparseMatrix<T>,
+) -> EnergyParts<T> {
     for (t, ui) in targets.iter().zip(u) {
         e += &(t.clone() * ui);
     }
-    let gradient = if lt.is_empty() {
-        targets.to_vec()
-    } else {
+    let gradient = if has_edges {
         theta
             .into_iter()
             .zip(targets)
             .map(|(th, t)| t.clone() - &th)
             .collect()
+    } else {
+        targets.to_vec()
     };
     EnergyParts {
         energy: Some(e),
         gradient,
-        hessian: pattern.matrix(val),
+        hessian,
     }
 }
 

@@ -31,12 +31,12 @@
 //! assert!(parts.gradient.iter().all(|g| g.approx_f64().abs() < 1e-70));
 //! ```
 
-use super::energy::EnergyParts;
+use super::energy::{close_parts, EnergyParts};
 use super::pattern::HessianPattern;
 use crate::geometry::laplacian::SparseMatrix;
 use crate::mesh::Mesh;
 use crate::scalar::Mpfr;
-use crate::special::lobachevsky;
+use crate::special::MpfrLobachevsky;
 use rug::float::Constant;
 use rug::Float;
 use std::cmp::Ordering;
@@ -110,10 +110,10 @@ pub fn half_angle_atan(tau: &Float, p: u32) -> Float {
 
 /// The index of the largest `x_m` (the last one among equal maxima), or `None` when one is
 /// NaN.
-fn longest(x: &[Mpfr; 3]) -> Option<usize> {
+fn longest(x: &[&Float; 3]) -> Option<usize> {
     let mut s = 0;
     for m in 1..3 {
-        match x[m].0.partial_cmp(&x[s].0)? {
+        match x[m].partial_cmp(x[s])? {
             Ordering::Less => {}
             _ => s = m,
         }
@@ -124,7 +124,13 @@ fn longest(x: &[Mpfr; 3]) -> Option<usize> {
 /// [`FaceMpfr`] of the face with logarithmic lengths `x` (all at the same precision),
 /// with `π` and `π/2` at that precision (module doc).
 pub fn face_mpfr(x: &[Mpfr; 3], pi: &Float, half_pi: &Float) -> FaceMpfr {
-    let p = x[0].0.prec();
+    let lob = MpfrLobachevsky::new(x[0].0.prec());
+    face_with(&x.each_ref().map(|v| &v.0), pi, half_pi, &lob)
+}
+
+/// [`face_mpfr`] on borrowed lengths with `Л` at hand (the pass's inner step).
+fn face_with(x: &[&Float; 3], pi: &Float, half_pi: &Float, lob: &MpfrLobachevsky) -> FaceMpfr {
+    let p = x[0].prec();
     let nan = || Mpfr(Float::with_val(p, f64::NAN));
     let zero = || Mpfr(Float::new(p));
     let Some(s) = longest(x) else {
@@ -135,7 +141,7 @@ pub fn face_mpfr(x: &[Mpfr; 3], pi: &Float, half_pi: &Float) -> FaceMpfr {
             lobachevsky: [nan(), nan(), nan()],
         };
     };
-    let d = [0, 1, 2].map(|m| Float::with_val(p, &x[m].0 - &x[s].0));
+    let d = [0, 1, 2].map(|m| Float::with_val(p, x[m] - x[s]));
     // The same side lengths as the generic path (`exp((x_m − x_s)·½)`, `ℓ_s = 1`).
     let l = [0, 1, 2].map(|m| {
         if m == s {
@@ -153,7 +159,7 @@ pub fn face_mpfr(x: &[Mpfr; 3], pi: &Float, half_pi: &Float) -> FaceMpfr {
     });
     // 2f − (π/2)Σx = Σ(α − π/2)d − (π/2)x_s + 2ΣЛ (d_s = 0: the term k = s vanishes).
     let energy_of = |angles: &[Float; 3], lob_sum: &Float| -> Float {
-        let mut en = Float::with_val(p, half_pi * &x[s].0);
+        let mut en = Float::with_val(p, half_pi * x[s]);
         en = -en;
         for k in 0..3 {
             if k != s {
@@ -207,7 +213,7 @@ pub fn face_mpfr(x: &[Mpfr; 3], pi: &Float, half_pi: &Float) -> FaceMpfr {
     let mut big = Float::with_val(p, pi - &angles[a]);
     big -= &angles[b];
     angles[s] = big;
-    let lob = [0, 1, 2].map(|m| lobachevsky(&Mpfr(angles[m].clone())).0);
+    let lob = [0, 1, 2].map(|m| lob.eval(&angles[m]));
     let mut lob_sum = Float::with_val(p, &lob[0] + &lob[1]);
     lob_sum += &lob[2];
     let sq = l.clone().map(|mut v| {
@@ -260,10 +266,11 @@ pub fn energy_gradient_hessian_mpfr(
     let mut theta = vec![zero.clone(); mesh.n_vertices()];
     let mut val = pattern.zeros(&zero);
     let mut w = zero.clone();
+    let lob = MpfrLobachevsky::new(p);
     for f in mesh.faces() {
         let hs = mesh.face_halfedges(f);
-        let x = hs.map(|h| lt[h.edge().idx()].clone());
-        let t = face_mpfr(&x, &pi, &half_pi);
+        let x = hs.map(|h| &lt[h.edge().idx()].0);
+        let t = face_with(&x, &pi, &half_pi, &lob);
         energy += &t.energy;
         for m in 0..3 {
             // The corner opposite side m is at the tail of side m + 2.
@@ -278,21 +285,12 @@ pub fn energy_gradient_hessian_mpfr(
             }
         }
     }
-    for (t, ui) in targets.iter().zip(u) {
-        energy += &(t.clone() * ui);
-    }
-    let gradient = if lt.is_empty() {
-        targets.to_vec()
-    } else {
-        theta
-            .into_iter()
-            .zip(targets)
-            .map(|(th, t)| t.clone() - &th)
-            .collect()
-    };
-    EnergyParts {
-        energy: Some(energy),
-        gradient,
-        hessian: pattern.matrix(val),
-    }
+    close_parts(
+        energy,
+        theta,
+        !lt.is_empty(),
+        u,
+        targets,
+        pattern.matrix(val),
+    )
 }

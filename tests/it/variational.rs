@@ -521,12 +521,13 @@ fn t06_needles_are_never_refuted_and_a_raised_weight_always_is() {
     );
 }
 
-/// B32: past a precision's face cap the registry's T31–T33 answer `NotApplicable` naming
-/// the precision and the cap; below it they run (T31 and T33 at f64 on 2048 faces, where
-/// T32's cap of 2000 applies at every precision).
+/// B32: T31–T33 run and hold on a 2048-face torus at f64 (T32 now above its former cap of
+/// 2000, its costly parts on the faces its bounded directions touch), and T32's control
+/// (a raised `∂E/∂u₀`) fails there. Past a cap a check answers `NotApplicable` naming the
+/// precision and the cap (here T32's reason with a cap below the torus).
 #[test]
 fn b32_face_caps_per_precision_name_the_limit() {
-    use penner::oracle::checks_energy::{T31_CAPS, T32_CAPS, T33_CAPS};
+    use penner::oracle::checks_energy::{beyond_caps, FaceCaps, T31_CAPS, T32_CAPS, T33_CAPS};
     use penner::oracle::precision::Prec;
     use rug::Rational;
     let (m, l) = jittered_torus(32, 32, 7);
@@ -540,22 +541,36 @@ fn b32_face_caps_per_precision_name_the_limit() {
             .find(|c| c.id == id)
             .unwrap()
     };
-    const { assert!(T32_CAPS.f64 < 2048 && T31_CAPS.f64 >= 2048 && T33_CAPS.f64 >= 2048) };
+    const { assert!(T32_CAPS.f64 >= 2048 && T31_CAPS.f64 >= 2048 && T33_CAPS.f64 >= 2048) };
+    for id in ["T31", "T32", "T33"] {
+        let v = (find(id).run)(&case, Prec::F64, &s).unwrap();
+        assert!(v.holds(), "{id}: {v:?}");
+    }
+    // Negative control: the raised gradient entry is refuted on the same surface.
+    let nc =
+        (penner::oracle::controls::by_id("T32-NC").unwrap().run)(&case, Prec::F64, &s).unwrap();
+    assert!(nc.fails(), "T32-NC: {nc:?}");
+    let small = FaceCaps {
+        f64: 2000,
+        dd: 2000,
+        mpfr: 1000,
+        ..T32_CAPS
+    };
     for p in [Prec::F64, Prec::Dd, Prec::Mpfr(mpfr(128))] {
-        match (find("T32").run)(&case, p, &s) {
+        match beyond_caps(&case, p, &small) {
             Some(Verdict::NotApplicable { reason }) => {
+                let cap = if matches!(p, Prec::Mpfr(_)) {
+                    "1000"
+                } else {
+                    "2000"
+                };
                 assert!(
-                    reason.contains("2048 faces") && reason.contains("2000"),
+                    reason.contains("2048 faces") && reason.contains(cap),
                     "{reason}"
                 );
                 assert!(reason.contains(&p.to_string()), "{reason}");
             }
-            v => panic!("T32 at {p}: {v:?}"),
+            v => panic!("T32 caps at {p}: {v:?}"),
         }
-    }
-    // Negative control: below the cap the same registry entries run and hold.
-    for id in ["T31", "T33"] {
-        let v = (find(id).run)(&case, Prec::F64, &s).unwrap();
-        assert!(v.holds(), "{id}: {v:?}");
     }
 }

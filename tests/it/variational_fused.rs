@@ -215,3 +215,60 @@ fn b57_difference_enclosure_contains_the_gradient_and_excludes_a_moved_one() {
         assert!(moved > enc.hi, "seed {seed}: control inside");
     }
 }
+
+/// B32: with `d` supported on two vertices of a 240-face torus, the enclosure summed over
+/// the faces touching the support contains `(Θ − θ(u))·d` evaluated independently (angles
+/// at 320 bits, every face) and is no wider than the enclosure summed over every face,
+/// which contains it too. Negative control: the same enclosure with one touched face left
+/// out (that face's term moves along `d`) excludes it.
+#[test]
+fn b32_difference_on_touched_faces_encloses_the_gradient_and_a_missed_face_does_not() {
+    use penner::theorems::t32_difference::{
+        derivative_enclosure, derivative_enclosure_on, support, touched_faces,
+    };
+    use penner::variational::energy::{gradient, log_lengths};
+    use rug::{Float, Rational};
+    let p = Precision::new(320).unwrap();
+    for seed in 0..cases(2, 8) as u64 {
+        let (m, l) = jittered_torus(10, 12, seed);
+        let n = m.n_vertices();
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let u: Vec<f64> = (0..n).map(|_| 0.2 * (rng.gen::<f64>() - 0.5)).collect();
+        let t: Vec<f64> = (0..n).map(|_| 6.0 * rng.gen::<f64>()).collect();
+        let mut d = vec![0.0; n];
+        d[(seed as usize * 7) % n] = 0.75;
+        d[(seed as usize * 7 + n / 2) % n] = -0.5;
+        let lambda = log_lengths(&l);
+        let faces = touched_faces(&m, &support(&d));
+        assert!(faces.len() < m.n_faces() / 4, "{} touched", faces.len());
+        let enc = derivative_enclosure(&m, &lambda, &u, &t, &d, 53).expect("enclosure");
+        let all: Vec<_> = m.faces().collect();
+        let full = derivative_enclosure_on(&m, &all, &lambda, &u, &t, &d, 53).expect("full");
+        let hi = |v: &[f64]| -> Vec<Mpfr> { v.iter().map(|&x| Mpfr::from_f64(x, p)).collect() };
+        let g = gradient(&m, &hi(&lambda), &hi(&u), &hi(&t));
+        let gd = g.iter().zip(&d).fold(Float::with_val(320, 0), |s, (a, b)| {
+            s + Float::with_val(640, &a.0 * *b)
+        });
+        let q = Rational::from_f64(0.0).unwrap() + gd.to_rational().unwrap();
+        for (name, e) in [("touched", &enc), ("all", &full)] {
+            assert!(
+                e.lo <= q && q <= e.hi,
+                "seed {seed}, {name}: {q} not in [{}, {}]",
+                e.lo,
+                e.hi
+            );
+        }
+        let width = |e: &penner::theorems::t32_difference::DerivativeEnclosure| {
+            Float::with_val(640, &e.hi - &e.lo)
+        };
+        assert!(width(&enc) <= width(&full), "seed {seed}: restricted wider");
+        assert!(width(&enc).to_f64() < 1e-12, "seed {seed}: {}", width(&enc));
+        // Negative control: leave out one touched face.
+        let missed = &faces[1..];
+        let off = derivative_enclosure_on(&m, missed, &lambda, &u, &t, &d, 53).expect("missed");
+        assert!(
+            q < off.lo || q > off.hi,
+            "seed {seed}: a missed face went unnoticed"
+        );
+    }
+}
