@@ -8,7 +8,7 @@
 //! solve.
 
 use super::components::Components;
-use super::hessian::{grounded_hessian, newton_direction, CholeskyCache};
+use super::hessian::{grounded_hessian, CholeskyCache};
 use super::newton::Uniformization;
 use crate::algorithms::flips::flip_ptolemy;
 use crate::geometry::cone_angles::cone_angles;
@@ -141,33 +141,76 @@ pub fn refine_on<T: Real>(
 ) -> Result<Refinement<T>, RefineError> {
     let (mesh, base) = carry_lengths_from(&sol.initial_mesh, l0, &sol.flip_sequence)?;
     let theta_target = targets_in::<T>(sol, ctx);
-    let mut u: Vec<T> = sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect();
+    let u: Vec<T> = sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect();
     let comps = Components::of(&mesh);
-    let (_, free_idx) = comps.free_index();
+    let (free, free_idx) = comps.free_index();
+    let every: Vec<usize> = (0..mesh.n_vertices()).collect();
+    let problem = Problem {
+        mesh: &mesh,
+        base: &base,
+        free: &free,
+        free_idx: &free_idx,
+        theta_target: &theta_target,
+        measured: &every,
+    };
+    refine_problem(&problem, u, ctx, tolerance, max_iterations)
+}
+
+/// A problem for [`refine_problem`]: the final triangulation with its base lengths in `T`,
+/// the free vertices (the others keep their `u`), the targets and the vertices whose
+/// residual `max |Θ − θ|` measures.
+pub struct Problem<'a, T> {
+    /// The final triangulation.
+    pub mesh: &'a Mesh,
+    /// Its base lengths (before scaling).
+    pub base: &'a [T],
+    /// The free vertices, in order.
+    pub free: &'a [usize],
+    /// Per vertex, its index among the free ones.
+    pub free_idx: &'a [Option<usize>],
+    /// `Θ_i` per vertex (read at free vertices and at `measured`).
+    pub theta_target: &'a [T],
+    /// The vertices whose `|Θ − θ|` enters `max |Θ − θ|`.
+    pub measured: &'a [usize],
+}
+
+/// The refinement loop: the Hessian on the free vertices factored once in `f64` at `u`,
+/// then `u_free ← u_free − H⁻¹(Θ − θ(u))_free` with the residual in `T`, until
+/// `max |Θ − θ| ≤ tolerance` (over `measured`), `max_iterations` steps, or two steps in a
+/// row that do not halve it (the precision's floor).
+pub fn refine_problem<T: Real>(
+    p: &Problem<'_, T>,
+    mut u: Vec<T>,
+    ctx: T::Ctx,
+    tolerance: f64,
+    max_iterations: usize,
+) -> Result<Refinement<T>, RefineError> {
+    let mesh = p.mesh;
     // The f64 Hessian once, from the lengths divided by the longest (angles are
     // scale-invariant).
-    let l = scaled(&mesh, &base, &u);
+    let l = scaled(mesh, p.base, &u);
     let top = l.iter().map(Real::approx_f64).fold(0.0, f64::max);
     let lf: Vec<f64> = l.iter().map(|x| x.approx_f64() / top).collect();
-    let h = grounded_hessian(&mesh, &lf, &free_idx);
+    let h = grounded_hessian(mesh, &lf, p.free_idx);
     let mut cache = CholeskyCache::default();
     let factor = cache.factor(&h).ok_or(RefineError::Hessian)?;
     let mut history = Vec::new();
     let mut stalls = 0;
     let mut iteration = 0;
     loop {
-        let l = scaled(&mesh, &base, &u);
-        let theta = cone_angles(&mesh, &l);
-        let r: Vec<T> = theta_target
+        let l = scaled(mesh, p.base, &u);
+        let theta = cone_angles(mesh, &l);
+        let r: Vec<T> = p
+            .theta_target
             .iter()
             .zip(&theta)
             .map(|(t, th)| t.clone() - th)
             .collect();
         let rf: Vec<f64> = r.iter().map(Real::approx_f64).collect();
-        if let Some(vertex) = rf.iter().position(|x| !x.is_finite()) {
+        if let Some(&vertex) = p.measured.iter().find(|&&v| !rf[v].is_finite()) {
             return Err(RefineError::Undefined { vertex });
         }
-        let rmax = rf.iter().fold(0.0, |m: f64, x| m.max(x.abs()));
+        let rmax = p.measured.iter().fold(0.0, |m: f64, &v| m.max(rf[v].abs()));
         if let Some(&prev) = history.last() {
             stalls = if rmax > 0.5 * prev { stalls + 1 } else { 0 };
         }
@@ -181,10 +224,12 @@ pub fn refine_on<T: Real>(
                 reached,
             });
         }
-        // H d = −∇E = −(Θ − θ): the Newton correction from the f64 factor.
-        let d = newton_direction(&factor, &rf, &comps);
-        for (ui, di) in u.iter_mut().zip(&d) {
-            *ui += &T::from_f64(*di, ctx);
+        // H d = −∇E = −(Θ − θ) on the free vertices: the Newton correction from the f64
+        // factor.
+        let rhs: Vec<f64> = p.free.iter().map(|&v| -rf[v]).collect();
+        let d = factor.solve(&rhs);
+        for (&v, di) in p.free.iter().zip(&d) {
+            u[v] += &T::from_f64(*di, ctx);
         }
         iteration += 1;
     }
