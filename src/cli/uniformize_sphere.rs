@@ -189,14 +189,14 @@ fn certify(
     let enclosures = surface.lengths::<penner::scalar::Interval<penner::scalar::Mpfr>>(prec);
     let metric = input_disk_metric(sol, &surface.mesh, enclosures)?;
     if !precision.refine {
-        let u = sol
+        let u: Vec<rug::Rational> = sol
             .solution
             .u
             .iter()
             .map(|&x| rug::Rational::from_f64(x).unwrap_or_default())
             .collect();
         let residual = sol.solution.residual_max.max(4.0 * f64::EPSILON);
-        return Ok(certify_disk_near(sol, Some(&metric), u, residual, bits));
+        return Ok(certify_disk_near(sol, Some(&metric), &u, residual, bits));
     }
     let proof =
         prove_disk(sol, Some(&metric), prec, precision.tolerance).map_err(|e| e.to_string())?;

@@ -149,8 +149,8 @@ pub fn check_disk_certificate_on(
     let (free, free_idx) = free_index(&markers);
     let mut point = Vec::with_capacity(n);
     let mut boxed = Vec::with_capacity(n);
-    for v in 0..n {
-        if let Some(l) = &pole_length[v] {
+    for (v, pl) in pole_length.iter().enumerate() {
+        if let Some(l) = pl {
             if l.sign() != Some(Sign::Positive) {
                 return undecided(format!("pole length of v{v} is not enclosed as positive"));
             }
@@ -264,7 +264,7 @@ pub fn certify_disk(
         .map(|&x| Rational::from_f64(x).unwrap_or_default())
         .collect();
     let residual = sol.solution.residual_max.max(4.0 * f64::EPSILON);
-    certify_disk_near(sol, None, u, residual, bits)
+    certify_disk_near(sol, None, &u, residual, bits)
 }
 
 /// Certify the disk problem of `sol` at the scale factors `u` (exact, one per disk vertex,
@@ -275,7 +275,7 @@ pub fn certify_disk(
 pub fn certify_disk_near(
     sol: &SphereUniformization,
     metric: Option<&DiskMetric>,
-    u: Vec<Rational>,
+    u: &[Rational],
     residual_max: f64,
     bits: u32,
 ) -> (DiskCertificateData, CertificateOutcome) {
@@ -285,7 +285,7 @@ pub fn certify_disk_near(
     let mut last = None;
     for factor in [1e6, 1e3, 1e10] {
         let radius = Rational::from_f64(estimate * factor).unwrap_or_else(|| Rational::from(1));
-        let data = disk_data(sol, u.clone(), radius);
+        let data = disk_data(sol, u.to_vec(), radius);
         let outcome = check_disk_certificate_on(&data, metric, bits);
         let done = matches!(outcome, CertificateOutcome::Holds { .. });
         last = Some((data, outcome));

@@ -120,7 +120,7 @@ pub fn prove_disk(
         r.u.iter()
             .map(|x| x.to_rational().unwrap_or_default())
             .collect();
-    let (data, outcome) = certify_disk_near(sol, metric, u, r.residual_max(), bits);
+    let (data, outcome) = certify_disk_near(sol, metric, &u, r.residual_max(), bits);
     Ok(DiskProof {
         data,
         outcome,

@@ -195,14 +195,14 @@ fn b90_sphere_claim_rechecks_for_the_exact_input_metric() {
             let prec = Precision::new(128).unwrap();
             let metric =
                 input_disk_metric(&sol, &s.mesh, s.lengths::<Interval<Mpfr>>(prec)).ok()?;
-            let u = sol
+            let u: Vec<Rational> = sol
                 .solution
                 .u
                 .iter()
                 .map(|&x| Rational::from_f64(x).unwrap())
                 .collect();
             let (data, outcome) =
-                certify_disk_near(&sol, Some(&metric), u, sol.solution.residual_max, 128);
+                certify_disk_near(&sol, Some(&metric), &u, sol.solution.residual_max, 128);
             let CertificateOutcome::Holds { residual, .. } = outcome else {
                 return None;
             };
