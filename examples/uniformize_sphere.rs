@@ -6,15 +6,22 @@
 //!
 //! ```sh
 //! cargo run --release --example uniformize_sphere -- 8    # frequency 8: 1280 faces
+//! cargo run --release --example uniformize_sphere -- 71 256  # 100 820 faces, MPFR-256
 //! ```
+//!
+//! With a second argument `BITS`, the disk problem is also refined in MPFR at `BITS` bits
+//! (`f64` factor, MPFR residuals; tolerance `2^(56 − BITS)`) and certified at `BITS` bits
+//! (B91, B76), and the wall times are reported as ratios to the `f64` solve.
 
 #[path = "../tests/it/meshgen.rs"]
 mod meshgen;
 
+use penner::scalar::Precision;
 use penner::uniformization::certificate::CertificateOutcome;
 use penner::uniformization::dirichlet_certificate::certify_disk;
 use penner::uniformization::sphere::{uniformize_sphere, SphereOptions};
 use penner::uniformization::sphere_checks::{cross_ratio_deviation, planar_delaunay};
+use penner::uniformization::sphere_refine::prove_disk;
 use std::process::ExitCode;
 use std::time::Instant;
 
@@ -54,6 +61,28 @@ fn main() -> ExitCode {
             t.elapsed().as_secs_f64()
         ),
         CertificateOutcome::Undecided { reason } => println!("not certified: {reason}"),
+    }
+    let bits: Option<u32> = std::env::args().nth(2).and_then(|a| a.parse().ok());
+    if let Some(prec) = bits.and_then(|b| Precision::new(u64::from(b)).ok()) {
+        let b = prec.bits();
+        let t = Instant::now();
+        match prove_disk(&sol, None, prec, 2f64.powi(56 - b as i32)) {
+            Ok(p) => {
+                let total = t.elapsed().as_secs_f64();
+                let verdict = match &p.outcome {
+                    CertificateOutcome::Holds {
+                        distance, residual, ..
+                    } => format!("certified: within {distance:e}, ‖Θ − θ‖₂ ≤ {residual:e}"),
+                    CertificateOutcome::Undecided { reason } => format!("not certified: {reason}"),
+                };
+                println!(
+                    "MPFR-{b}: max |Θ − θ| per step {:?}; {verdict}; refine + certify {total:.3} s = {:.1}× the f64 solve",
+                    p.history,
+                    total / solve.as_secs_f64()
+                );
+            }
+            Err(e) => println!("MPFR-{b}: refinement failed: {e}"),
+        }
     }
     let planar = planar_delaunay(&sol.solution.mesh, &sol.planar);
     println!(

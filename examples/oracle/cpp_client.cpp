@@ -129,6 +129,11 @@ int main(int argc, char** argv) {
              R"(, "radii": ["1","1","1","1"], "phi_over_pi": ["0","0","0","0","0","0"], "angles": [)" + pi + "," +
              pi + "," + pi + "," + pi + R"(], "epsilon": "1e-35"})",
          "holds", 0},
+        {"sphere uniformization of the tetrahedron, pole 0 (the disk is one triangle)",
+         std::string(R"({"penner_claim": 1, "kind": "sphere_uniformization", "surface": )") + kSurface +
+             R"(, "euclidean_flips": [], "pole": 0, "flips": [], "u": [null,null,null,null],)"
+             R"( "radius": "1e-9", "final_faces": [[0,1,2],[0,2,3],[0,3,1],[1,3,2]], "residual_bound": "0"})",
+         "holds", 0},
     };
     int failures = 0;
     for (const auto& c : cases) {

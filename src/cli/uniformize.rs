@@ -80,10 +80,6 @@ pub(super) fn read_targets(path: &Path, n: usize) -> Result<Targets, CliError> {
 /// lengths outside binary64's range. Uniformization is scale invariant (θ depends on
 /// ratios of lengths), so `u` is the same for both.
 fn scaled_input(case: FlipCase) -> (penner::mesh::Mesh, Vec<f64>, i64) {
-    let in_range = |l: &[f64]| {
-        l.iter()
-            .all(|&x| x.is_finite() && (f64::powi(2.0, -100)..=f64::powi(2.0, 100)).contains(&x))
-    };
     let lengths: Vec<f64> = case.lengths::<f64>(());
     if in_range(&lengths) {
         return (case.mesh().clone(), lengths, 0);
@@ -95,6 +91,26 @@ fn scaled_input(case: FlipCase) -> (penner::mesh::Mesh, Vec<f64>, i64) {
     match surface.normalized_scale() {
         Some((scaled, k)) => (scaled.mesh.clone(), scaled.lengths::<f64>(()), k),
         None => (surface.mesh.clone(), lengths, 0),
+    }
+}
+
+/// Whether binary64 lengths lie in `[2⁻¹⁰⁰, 2¹⁰⁰]` (their squares then in binary64's range).
+fn in_range(l: &[f64]) -> bool {
+    l.iter()
+        .all(|&x| x.is_finite() && (f64::powi(2.0, -100)..=f64::powi(2.0, 100)).contains(&x))
+}
+
+/// The input as an exact surface, divided by `2^shift` as in [`scaled_input`] (only when
+/// its lengths are far from 1), and the shift.
+fn exact_input(case: FlipCase) -> (penner::io::Surface, i64) {
+    let far = !in_range(&case.lengths::<f64>(()));
+    let surface = match case {
+        FlipCase::Exact(s) => s,
+        FlipCase::Decimal(d) => d.into_surface(),
+    };
+    match surface.normalized_scale().filter(|_| far) {
+        Some((scaled, k)) => (scaled, k),
+        None => (surface, 0),
     }
 }
 
@@ -123,10 +139,30 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     if o.extra.hyperbolic {
         return super::uniformize_hyperbolic::run(&shown, &case, o, bits, tolerance);
     }
-    let (mesh, lengths, shift) = scaled_input(case);
     if o.extra.sphere {
-        return super::uniformize_sphere::run(&shown, &mesh, &lengths, o.output, o.extra);
+        let (surface, shift) = exact_input(case);
+        let lengths = surface.lengths::<f64>(());
+        let precision = match o.precision {
+            "f64" => super::uniformize_sphere::SpherePrecision {
+                bits,
+                refine: false,
+                tolerance,
+            },
+            "dd" => return Err(CliError::Input(
+                "--precision dd is not implemented for --sphere; use f64 or MPFR bits (128..=4096)"
+                    .into(),
+            )),
+            _ => super::uniformize_sphere::SpherePrecision {
+                bits,
+                refine: true,
+                tolerance,
+            },
+        };
+        return super::uniformize_sphere::run(
+            &shown, &surface, &lengths, shift, &precision, o.output, o.extra,
+        );
     }
+    let (mesh, lengths, shift) = scaled_input(case);
     if !mesh.is_closed() {
         let input = super::uniformize_boundary::Input {
             shown: &shown,

@@ -1,23 +1,35 @@
-//! `penner uniformize SURFACE --sphere [--pole V] [-o RESULT.json] [--obj OUT.obj]
+//! `penner uniformize SURFACE --sphere [--pole V] [-o CLAIM.json] [--obj OUT.obj]
 //! [--svg OUT.svg]`: the conformally equivalent convex polyhedron inscribed in the unit
-//! sphere (notes Thm 9; B74–B76). The disk problem is certified (B76), the planar layout
+//! sphere (notes Thm 9; B74–B76). The disk problem is certified for the surface's exact
+//! metric (B76 on the replayed Euclidean flips, B73, B90) and written with `-o` as a
+//! `sphere_uniformization` claim that `penner certify` re-checks; the planar layout is
 //! certified Delaunay and convex (exact predicates on its binary64 coordinates); the 3-D
-//! positions and the cross-ratio comparison are numerical and labelled so.
+//! positions (`--obj`) and the cross-ratio comparison are numerical and labelled so.
 
 use super::error::{code, CliError};
 use super::files::{create_new, emit};
 use penner::uniformization::certificate::CertificateOutcome;
-use penner::uniformization::dirichlet_certificate::certify_disk;
+use penner::uniformization::dirichlet_certificate::certify_disk_near;
 use penner::uniformization::layout::unproved_faces;
 use penner::uniformization::sphere::{uniformize_sphere, SphereOptions};
 use penner::uniformization::sphere_checks::{cross_ratio_deviation, planar_delaunay};
+use penner::uniformization::sphere_claim::{claim_of, recheck, to_json};
+use penner::uniformization::sphere_refine::{input_disk_metric, prove_disk};
 use penner::uniformization::svg::render_layout_svg;
 use std::fmt::Write as _;
 use std::io::Write;
 use std::path::Path;
 
-/// Interval bits of the disk certificate.
-const BITS: u32 = 128;
+/// The precision of `--sphere`: `f64` (the solve's `u`, certified with 128-bit
+/// intervals) or MPFR bits (refined to `tolerance` at those bits, certified at them).
+pub struct SpherePrecision {
+    /// Interval (and refinement) bits.
+    pub bits: u32,
+    /// Refine in MPFR before certifying.
+    pub refine: bool,
+    /// Refinement tolerance on `max |2π − θ|`.
+    pub tolerance: f64,
+}
 
 fn write_new(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     let mut f = create_new(path)?;
@@ -27,15 +39,20 @@ fn write_new(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     })
 }
 
-/// Run `penner uniformize --sphere` on the triangulation `mesh` with binary64 `lengths`.
+/// Run `penner uniformize --sphere` on `surface` (its exact metric; divided by `2^shift`
+/// when `shift ≠ 0`), solved from its binary64 `lengths`.
 #[allow(clippy::too_many_lines)] // solve, check, certify and write, in order
 pub fn run(
     shown: &str,
-    mesh: &penner::mesh::Mesh,
+    surface: &penner::io::Surface,
     lengths: &[f64],
+    shift: i64,
+    precision: &SpherePrecision,
     output: Option<&Path>,
     extra: &super::args::UniformizeExtra,
 ) -> Result<u8, CliError> {
+    let mesh = &surface.mesh;
+    let bits = precision.bits;
     let (obj, svg) = (extra.obj.as_deref(), extra.svg.as_deref());
     let opts = SphereOptions {
         pole: extra.pole,
@@ -44,6 +61,12 @@ pub fn run(
     let sol = uniformize_sphere(mesh, lengths, &opts)
         .map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
     let mut out = String::new();
+    if shift != 0 {
+        let _ = writeln!(
+            out,
+            "{shown}: lengths divided by 2^{shift} (exactly) before solving; the certificate is about the rescaled surface"
+        );
+    }
     let _ = writeln!(
         out,
         "{shown}: {} Euclidean flips to intrinsic Delaunay; pole v{} ({} link vertices); disk problem: {} Newton steps, {} Ptolemy flips, max |Θ − θ| = {:e} (f64)",
@@ -54,7 +77,21 @@ pub fn run(
         sol.flip_sequence.len(),
         sol.solution.residual_max
     );
-    let (_, outcome) = certify_disk(&sol, BITS);
+    // The disk certificate for the surface's exact metric (its Euclidean flips replayed on
+    // enclosures, B73), near the f64 solution or its MPFR refinement; then its re-check as
+    // the claim that `-o` writes (B90).
+    let (outcome, claim) = match certify(surface, &sol, precision, &mut out) {
+        Ok((data, CertificateOutcome::Holds { residual, .. })) => {
+            let claim = claim_of(surface, &sol, &data, residual);
+            let outcome =
+                recheck(surface, &claim, bits).unwrap_or_else(|e| CertificateOutcome::Undecided {
+                    reason: format!("the certificate does not re-check: {e}"),
+                });
+            (outcome, Some(claim))
+        }
+        Ok((_, undecided)) => (undecided, None),
+        Err(reason) => (CertificateOutcome::Undecided { reason }, None),
+    };
     let cert_ok = matches!(outcome, CertificateOutcome::Holds { .. });
     match &outcome {
         CertificateOutcome::Holds {
@@ -64,7 +101,7 @@ pub fn run(
         } => {
             let _ = writeln!(
                 out,
-                "disk problem certified ({BITS}-bit intervals): an exact solution lies within {distance:e} (2-norm) of u, its disk Delaunay with a convex boundary (Hessian ≥ {mu:e}, ‖Θ − θ(u)‖₂ ≤ {residual:e})"
+                "disk problem certified for the surface's exact metric ({bits}-bit intervals): an exact solution lies within {distance:e} (2-norm) of u, its disk Delaunay with a convex boundary (Hessian ≥ {mu:e}, ‖Θ − θ(u)‖₂ ≤ {residual:e})"
             );
         }
         CertificateOutcome::Undecided { reason } => {
@@ -113,39 +150,61 @@ pub fn run(
         );
     }
     if let Some(path) = output {
-        let (reason, distance) = match &outcome {
-            CertificateOutcome::Holds { distance, .. } => (None, Some(*distance)),
-            CertificateOutcome::Undecided { reason } => (Some(reason.clone()), None),
-        };
-        let doc = serde_json::json!({
-            "kind": "sphere_uniformization",
-            "surface": shown,
-            "pole": sol.pole,
-            "vertices": sol.positions,
-            "faces": sol.mesh.face_list(),
-            "flip_sequence": sol.flip_sequence.iter().map(|e| e.0).collect::<Vec<_>>(),
-            "disk_certificate": {
-                "certified": cert_ok,
-                "bits": BITS,
-                "distance": distance,
-                "reason": reason,
-            },
-            "planar_delaunay": {
-                "certified": planar.holds(),
-                "not_ccw": planar.not_ccw.iter().map(|f| f.0).collect::<Vec<_>>(),
-                "not_delaunay": planar.not_delaunay.iter().map(|e| e.0).collect::<Vec<_>>(),
-                "not_convex": planar.not_convex.iter().map(|v| v.0).collect::<Vec<_>>(),
-            },
-            "numerical": {
-                "residual_max": sol.solution.residual_max,
-                "centroid_norm": sol.centroid_norm,
-                "cross_ratio_deviation": deviation,
-            },
-        });
-        let text = serde_json::to_string_pretty(&doc).unwrap_or_default() + "\n";
-        write_new(path, text.as_bytes())?;
-        let _ = writeln!(out, "result written to {}", path.display());
+        match claim.filter(|_| cert_ok) {
+            Some(claim) => {
+                let doc = to_json(surface, &claim, bits);
+                let text = serde_json::to_string_pretty(&doc).unwrap_or_default() + "\n";
+                write_new(path, text.as_bytes())?;
+                let _ = writeln!(
+                    out,
+                    "certificate written to {} (re-check: penner certify {})",
+                    path.display(),
+                    path.display()
+                );
+            }
+            None => out.push_str("no certificate written\n"),
+        }
     }
     emit(&out)?;
     Ok(status)
+}
+
+/// The disk certificate of `sol` for `surface`'s exact metric at `precision` (after an MPFR
+/// refinement when asked, reported on `out`); `Err(reason)` when the exact metric cannot be
+/// replayed to `T₀` or the refinement fails.
+fn certify(
+    surface: &penner::io::Surface,
+    sol: &penner::uniformization::sphere::SphereUniformization,
+    precision: &SpherePrecision,
+    out: &mut String,
+) -> Result<
+    (
+        penner::uniformization::dirichlet_certificate::DiskCertificateData,
+        CertificateOutcome,
+    ),
+    String,
+> {
+    let bits = precision.bits;
+    let prec = penner::scalar::Precision::new(u64::from(bits)).map_err(|e| e.to_string())?;
+    let enclosures = surface.lengths::<penner::scalar::Interval<penner::scalar::Mpfr>>(prec);
+    let metric = input_disk_metric(sol, &surface.mesh, enclosures)?;
+    if !precision.refine {
+        let u: Vec<rug::Rational> = sol
+            .solution
+            .u
+            .iter()
+            .map(|&x| rug::Rational::from_f64(x).unwrap_or_default())
+            .collect();
+        let residual = sol.solution.residual_max.max(4.0 * f64::EPSILON);
+        return Ok(certify_disk_near(sol, Some(&metric), &u, residual, bits));
+    }
+    let proof =
+        prove_disk(sol, Some(&metric), prec, precision.tolerance).map_err(|e| e.to_string())?;
+    let _ = writeln!(
+        out,
+        "refined at {bits} bits (f64 factor, MPFR residuals): max |Θ − θ| = {:e} after {} steps",
+        proof.history.last().copied().unwrap_or(f64::NAN),
+        proof.history.len().saturating_sub(1)
+    );
+    Ok((proof.data, proof.outcome))
 }

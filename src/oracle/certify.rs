@@ -289,6 +289,11 @@ pub fn certify(claim: &Claim) -> Result<Answer, Unsupported> {
             Ok(summarize(claim, &b, &|_| "x".to_string(), "value of Л(x)"))
         }
         Assertion::Uniformization(u) => Ok(uniformization(claim, u)),
+        Assertion::SphereUniformization(c) => Ok(certificate_answer(
+            claim,
+            crate::uniformization::sphere_claim::recheck(&claim.surface, c, claim.max_bits)
+                .map_err(|e| e.to_string()),
+        )),
         Assertion::CirclePacking { .. } | Assertion::CirclePattern { .. } => {
             super::certify_circles::answer(claim).ok_or(Unsupported(claim.assertion.kind()))
         }
@@ -302,8 +307,18 @@ fn uniformization(
     claim: &Claim,
     u: &crate::uniformization::claim_form::UniformizationClaim,
 ) -> Answer {
-    use crate::uniformization::certificate::CertificateOutcome;
     let outcome = crate::uniformization::claim_form::recheck(&claim.surface, u, claim.max_bits);
+    certificate_answer(claim, outcome.map_err(|e| e.to_string()))
+}
+
+/// The answer to a certificate claim (`uniformization`, `sphere_uniformization`) from its
+/// re-check: `holds` with the proved distance, otherwise `undecided` with the reason (a
+/// malformed certificate, `Err`, as the witness `certificate`). Never `fails`.
+fn certificate_answer(
+    claim: &Claim,
+    outcome: Result<crate::uniformization::certificate::CertificateOutcome, String>,
+) -> Answer {
+    use crate::uniformization::certificate::CertificateOutcome;
     let (verdict, max_discrepancy, witnesses) = match outcome {
         Ok(CertificateOutcome::Holds { distance, .. }) => {
             (ClaimVerdict::Holds, Some(distance), Vec::new())
@@ -317,12 +332,12 @@ fn uniformization(
                 value: f64::NAN,
             }],
         ),
-        Err(e) => (
+        Err(detail) => (
             ClaimVerdict::Undecided,
             None,
             vec![Witness {
                 element: "certificate".into(),
-                detail: e.to_string(),
+                detail,
                 value: f64::NAN,
             }],
         ),

@@ -89,6 +89,12 @@ pub enum Assertion {
     /// norm) of the given `u`, with the surface's lengths carried by the given Ptolemy flips
     /// (notes §1.5.3 Thm 12; certificate and re-check: `uniformization::claim_form`, B71).
     Uniformization(crate::uniformization::claim_form::UniformizationClaim),
+    /// `sphere_uniformization`: the surface (genus 0, its exact metric) is discretely
+    /// conformally equivalent to a convex polyhedron inscribed in the unit sphere: after
+    /// the given Euclidean flips, the disk problem of the pole has an exact solution within
+    /// `radius` of `u` whose flat disk is Delaunay with a convex boundary (notes §1.5.3
+    /// Thm 9; re-check: `uniformization::sphere_claim`, B90, B76, B74).
+    SphereUniformization(crate::uniformization::sphere_claim::SphereClaim),
     /// `circle_packing`: the circles (plane) or caps (sphere) realize the surface's
     /// triangulation as a tangency packing within `epsilon`: every edge's tangency defect
     /// is at most ε, every face's centres are positively oriented and every interior
@@ -126,6 +132,7 @@ impl Assertion {
             Assertion::Energy { .. } => "energy",
             Assertion::Lobachevsky { .. } => "lobachevsky",
             Assertion::Uniformization(_) => "uniformization",
+            Assertion::SphereUniformization(_) => "sphere_uniformization",
             Assertion::CirclePacking { .. } => "circle_packing",
             Assertion::CirclePattern { .. } => "circle_pattern",
         }
@@ -209,7 +216,7 @@ const COMMON_FIELDS: [&str; 5] = ["penner_claim", "id", "kind", "surface", "max_
 
 /// The claim kinds and the fields each may carry besides [`COMMON_FIELDS`]
 /// (`schema/claim-v1.schema.json`).
-const KIND_FIELDS: [(&str, &[&str]); 10] = [
+const KIND_FIELDS: [(&str, &[&str]); 11] = [
     ("intrinsic_delaunay", &[]),
     ("delaunay_flip", &["flips", "result", "epsilon"]),
     ("cone_angles", &["angles", "epsilon"]),
@@ -221,6 +228,18 @@ const KIND_FIELDS: [(&str, &[&str]); 10] = [
         "uniformization",
         &[
             "targets",
+            "flips",
+            "u",
+            "radius",
+            "final_faces",
+            "residual_bound",
+        ],
+    ),
+    (
+        "sphere_uniformization",
+        &[
+            "euclidean_flips",
+            "pole",
             "flips",
             "u",
             "radius",
@@ -333,6 +352,7 @@ fn parse_energy(v: &Value, n: usize) -> Result<Assertion, ClaimError> {
 }
 
 /// Parse a claim document (JSON value); a field the claim's kind does not have is refused.
+#[allow(clippy::too_many_lines)] // the common fields, then one arm per claim kind
 pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
     let Some(obj) = v.as_object() else {
         return Err(err("a claim is a JSON object"));
@@ -365,7 +385,7 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
     let kind = v
         .get("kind")
         .and_then(Value::as_str)
-        .ok_or_else(|| err("kind: required, one of intrinsic_delaunay, delaunay_flip, cone_angles, cotan_laplacian, conformal_equivalence, energy, lobachevsky, uniformization, circle_packing, circle_pattern"))?;
+        .ok_or_else(|| err("kind: required, one of intrinsic_delaunay, delaunay_flip, cone_angles, cotan_laplacian, conformal_equivalence, energy, lobachevsky, uniformization, sphere_uniformization, circle_packing, circle_pattern"))?;
     let Some((_, own)) = KIND_FIELDS.iter().find(|(k, _)| *k == kind) else {
         return Err(err(format!("kind: unknown claim kind {kind:?}")));
     };
@@ -425,6 +445,7 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
             }
         }
         "uniformization" => uniformization_claim(v, &surface)?,
+        "sphere_uniformization" => sphere_claim(v, &surface)?,
         "energy" => parse_energy(v, surface.mesh.n_vertices())?,
         other => return Err(err(format!("kind: unknown claim kind {other:?}"))),
     };
@@ -436,22 +457,26 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
     })
 }
 
-/// The fields of a `uniformization` claim.
-fn uniformization_claim(v: &Value, surface: &Surface) -> Result<Assertion, ClaimError> {
-    let n = surface.mesh.n_vertices();
-    let required = |key: &str| v.get(key).ok_or_else(|| err(format!("{key}: required")));
-    let flips = required("flips")?
+/// The array of edge indices at `key`.
+fn edge_indices(v: &Value, key: &str) -> Result<Vec<usize>, ClaimError> {
+    v.get(key)
+        .ok_or_else(|| err(format!("{key}: required")))?
         .as_array()
-        .ok_or_else(|| err("flips: expected an array of edge indices"))?
+        .ok_or_else(|| err(format!("{key}: expected an array of edge indices")))?
         .iter()
         .enumerate()
         .map(|(k, x)| {
             x.as_u64()
                 .map(|i| i as usize)
-                .ok_or_else(|| err(format!("flips[{k}]: expected a non-negative integer")))
+                .ok_or_else(|| err(format!("{key}[{k}]: expected a non-negative integer")))
         })
-        .collect::<Result<Vec<_>, _>>()?;
-    let final_faces = required("final_faces")?
+        .collect()
+}
+
+/// The array of vertex triples at `final_faces`.
+fn final_faces(v: &Value) -> Result<Vec<[u32; 3]>, ClaimError> {
+    v.get("final_faces")
+        .ok_or_else(|| err("final_faces: required"))?
         .as_array()
         .ok_or_else(|| err("final_faces: expected an array of vertex triples"))?
         .iter()
@@ -466,7 +491,48 @@ fn uniformization_claim(v: &Value, surface: &Surface) -> Result<Assertion, Claim
             ids.map(|i| [i[0], i[1], i[2]])
                 .ok_or_else(|| err(format!("final_faces[{k}]: expected three vertex ids")))
         })
+        .collect()
+}
+
+/// The fields of a `sphere_uniformization` claim.
+fn sphere_claim(v: &Value, surface: &Surface) -> Result<Assertion, ClaimError> {
+    let required = |key: &str| v.get(key).ok_or_else(|| err(format!("{key}: required")));
+    let pole = required("pole")?
+        .as_u64()
+        .and_then(|p| u32::try_from(p).ok())
+        .ok_or_else(|| err("pole: expected a vertex id"))?;
+    let u = required("u")?
+        .as_array()
+        .ok_or_else(|| err("u: expected an array with one entry per vertex"))?
+        .iter()
+        .enumerate()
+        .map(|(i, x)| match x {
+            Value::Null => Ok(None),
+            x => exact_number(x, &format!("u[{i}]"))
+                .map(Some)
+                .map_err(ClaimError::from),
+        })
         .collect::<Result<Vec<_>, _>>()?;
+    let claim = crate::uniformization::sphere_claim::SphereClaim {
+        euclidean_flips: edge_indices(v, "euclidean_flips")?,
+        pole,
+        flips: edge_indices(v, "flips")?,
+        u,
+        radius: exact_number(required("radius")?, "radius")?,
+        final_faces: final_faces(v)?,
+        residual_bound: exact_number(required("residual_bound")?, "residual_bound")?,
+    };
+    crate::uniformization::sphere_claim::validate(surface, &claim)
+        .map_err(|e| err(e.to_string()))?;
+    Ok(Assertion::SphereUniformization(claim))
+}
+
+/// The fields of a `uniformization` claim.
+fn uniformization_claim(v: &Value, surface: &Surface) -> Result<Assertion, ClaimError> {
+    let n = surface.mesh.n_vertices();
+    let required = |key: &str| v.get(key).ok_or_else(|| err(format!("{key}: required")));
+    let flips = edge_indices(v, "flips")?;
+    let final_faces = final_faces(v)?;
     let radius = exact_number(required("radius")?, "radius")?;
     let residual_bound = exact_number(required("residual_bound")?, "residual_bound")?;
     let claim = crate::uniformization::claim_form::UniformizationClaim {

@@ -22,15 +22,13 @@
 use super::cell_boundary::{cell_over_box, Boundary};
 use super::components::Components;
 use super::error::UniformizeError;
-use super::hessian::{grounded_hessian, newton_direction, CholeskyCache};
 use super::newton::validate_input;
 use super::refine::{carry_lengths, carry_lengths_from, flip_to_delaunay_at, scaled, RefineError};
 use super::targets::Targets;
-use super::verified_cholesky::{lambda_min_lower_bound, up, SymmetricLower};
 use crate::geometry::enclosure::angle_sums::enclose_cone_angles;
 use crate::geometry::laplacian::SparseMatrix;
 use crate::mesh::{Edge, Mesh};
-use crate::scalar::{Interval, IntervalBound, Mpfr, Precision, Real, Sign};
+use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
 use rug::float::Round;
 use rug::Rational;
 
@@ -107,7 +105,6 @@ pub(crate) fn to_f64_up(x: &Mpfr) -> f64 {
 /// cotan Laplacian over the box and the enclosed residual at `u` (free vertices, in order).
 pub(crate) struct Prepared {
     pub mesh: Mesh,
-    pub comps: Components,
     pub free: Vec<usize>,
     pub free_idx: Vec<Option<usize>>,
     /// Lengths over the box.
@@ -216,7 +213,6 @@ pub(crate) fn prepare(
     }
     Ok(Ok(Prepared {
         mesh,
-        comps,
         free,
         free_idx,
         box_lengths: lb,
@@ -248,7 +244,6 @@ pub fn check_certificate_on(
         Ok(p) => p,
         Err(reason) => return Ok(CertificateOutcome::Undecided { reason }),
     };
-    let undecided = |reason: String| Ok(CertificateOutcome::Undecided { reason });
     if p.free.is_empty() {
         // Every vertex is grounded (one-vertex components): the box is the point `u`, and
         // Gauss–Bonnet makes the residual at a grounded vertex zero (B71, "The grounded
@@ -259,119 +254,16 @@ pub fn check_certificate_on(
             residual: 0.0,
         });
     }
-    let prec = p.prec;
-    // 2. The Hessian over the box: midpoint and radius matrices of −L.
-    let mut entries = Vec::new();
-    let mut rad_row = vec![0.0f64; p.free.len()];
-    for (i, j, w) in p.laplacian.entries() {
-        let (Some(a), Some(b)) = (p.free_idx[i], p.free_idx[j]) else {
-            continue;
-        };
-        let h = -w.clone();
-        let mid = ((h.lo().clone() + h.hi()) * &h.lo().lit(0.5)).approx_f64();
-        let m = Mpfr::from_f64(mid, prec);
-        let rad = to_f64_up(&h.hi().sub_up(&m)).max(to_f64_up(&m.sub_up(h.lo())));
-        rad_row[a] = up(rad_row[a] + rad);
-        if a >= b {
-            entries.push((a, b, mid));
-        }
-    }
-    let rad_norm = rad_row.iter().copied().fold(0.0, f64::max);
-    let mid = SymmetricLower {
-        n: p.free.len(),
-        entries,
-    };
-    // An estimate of λ_min(H_mid) by inverse iteration, then verified shifts below it.
-    let estimate = smallest_eigenvalue_estimate(&p.mesh, &p.box_lengths, &p.free_idx, &p.comps);
-    let mut bound = None;
-    for frac in [0.5, 0.25, 0.0625] {
-        if let Some(b) = lambda_min_lower_bound(&mid, estimate * frac) {
-            if b.lambda_min > 0.0 {
-                bound = Some(b);
-                break;
-            }
-        }
-    }
-    let Some(bound) = bound else {
-        return undecided("no verified positive lower bound on the Hessian's eigenvalues".into());
-    };
-    let mu = -up(rad_norm - bound.lambda_min); // μ ≤ λ_min − ‖H_rad‖ (rounded down)
-    if mu.is_nan() || mu <= 0.0 {
-        return undecided(format!(
-            "the Hessian's variation over the box ({rad_norm:e}) exceeds its eigenvalue bound ({:e})",
-            bound.lambda_min
-        ));
-    }
-    // 3. ‖residual‖₂, rounded up.
-    let mut sum = Mpfr::from_f64(0.0, prec);
-    for g in &p.residual {
-        let (lo, hi) = (g.lo().abs(), g.hi().abs());
-        let mag = if lo.as_float() > hi.as_float() {
-            lo
-        } else {
-            hi
-        };
-        sum = sum.add_up(&mag.mul_up(&mag));
-    }
-    let gamma = sum.sqrt_up();
-    let mu_m = Mpfr::from_f64(mu, prec);
-    let distance = gamma.div_up(&mu_m);
-    let r = Mpfr::from_rational(&data.radius, prec);
-    // Strict: γ/μ < r (rounded up) implies γ < μr.
-    if distance.as_float() >= r.as_float() {
-        return undecided(format!(
-            "residual bound {:e} / μ {mu:e} = {:e} is not below the radius {:e}",
-            to_f64_up(&gamma),
-            to_f64_up(&distance),
-            r.approx_f64()
-        ));
-    }
-    Ok(CertificateOutcome::Holds {
-        distance: to_f64_up(&distance),
-        mu,
-        residual: to_f64_up(&gamma),
-    })
-}
-
-/// `λ_min` of the grounded Hessian at the midpoint lengths, estimated by inverse iteration
-/// (a heuristic that only picks the shift; the bound itself is verified).
-fn smallest_eigenvalue_estimate(
-    mesh: &Mesh,
-    lengths: &[I],
-    free_idx: &[Option<usize>],
-    comps: &Components,
-) -> f64 {
-    let top = lengths.iter().map(Real::approx_f64).fold(0.0, f64::max);
-    let lf: Vec<f64> = lengths.iter().map(|x| x.approx_f64() / top).collect();
-    let h = grounded_hessian(mesh, &lf, free_idx);
-    let mut cache = CholeskyCache::default();
-    let Some(f) = cache.factor(&h) else {
-        return 0.0;
-    };
-    let n = mesh.n_vertices();
-    let mut x: Vec<f64> = (0..n)
-        .map(|v| {
-            if comps.is_root(v) {
-                0.0
-            } else {
-                1.0 + (v % 7) as f64 / 7.0
-            }
-        })
-        .collect();
-    let mut lambda = 0.0;
-    for _ in 0..30 {
-        // y = H⁻¹ x (newton_direction solves H d = −g: pass g = −x).
-        let minus: Vec<f64> = x.iter().map(|a| -a).collect();
-        let y = newton_direction(&f, &minus, comps);
-        let ny = y.iter().map(|a| a * a).sum::<f64>().sqrt();
-        let nx = x.iter().map(|a| a * a).sum::<f64>().sqrt();
-        if ny.is_nan() || ny <= 0.0 {
-            return 0.0;
-        }
-        lambda = nx / ny;
-        x = y.iter().map(|a| a / ny).collect();
-    }
-    lambda
+    // 2–3. The Hessian over the box and the residual at u: the ball argument.
+    Ok(super::ball_argument::ball_outcome(
+        &p.mesh,
+        &p.box_lengths,
+        &p.laplacian,
+        &p.free_idx,
+        &p.residual,
+        &data.radius,
+        p.prec,
+    ))
 }
 
 /// A proof attempt for a solution: the `u` and radius submitted and the outcome.

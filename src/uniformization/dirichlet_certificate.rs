@@ -17,17 +17,16 @@
 //! flat disk is a Delaunay triangulation of a convex polygon, i.e. the inscribed polyhedron
 //! of `u*` is convex and discretely conformally equivalent to the input (B74, B76).
 
-use super::certificate::{to_f64_up, CertificateOutcome, I};
+use super::ball_argument::{ball_outcome, certified_nonnegative};
+use super::certificate::{CertificateOutcome, I};
 use super::dirichlet::free_index;
-use super::hessian::{grounded_hessian, CholeskyCache};
-use super::refine::{carry_lengths, scaled};
-use super::sphere::SphereUniformization;
-use super::verified_cholesky::{lambda_min_lower_bound, up, SymmetricLower};
+use super::refine::{carry_lengths, carry_lengths_from, scaled};
+use super::sphere::{Disk, SphereUniformization};
 use crate::geometry::cone_angles::cone_angles;
 use crate::geometry::laplacian::cotan_laplacian;
-use crate::mesh::{Edge, Mesh};
+use crate::mesh::{Edge, Mesh, Vertex};
 use crate::predicates::delaunay::{enclose_p, QuadEdges};
-use crate::scalar::{IntervalBound, Mpfr, Precision, Real, Sign};
+use crate::scalar::{Precision, Real, Sign};
 use rug::Rational;
 
 /// The data of a disk certificate, all exact: the disk `D = T₀ − star(v∞)` with its
@@ -52,17 +51,55 @@ pub struct DiskCertificateData {
     pub radius: Rational,
 }
 
-fn lower_nonnegative(x: &I) -> bool {
-    let lo = x.lo().as_float();
-    x.is_valid() && (lo.is_zero() || lo.is_sign_positive())
+impl DiskMetric {
+    /// The metric of `disk` (of `t0` at `pole`, [`super::sphere::disk_of`]) from the
+    /// lengths `l0` of `t0`: the disk's edges through its edge map, the pole lengths per
+    /// link vertex.
+    pub fn of(t0: &Mesh, l0: &[I], disk: &Disk, pole: Vertex) -> DiskMetric {
+        let mut slot = vec![None; t0.n_vertices()];
+        for (k, &v) in disk.vertex.iter().enumerate() {
+            slot[v as usize] = Some(k);
+        }
+        let mut pole_length = vec![None; disk.vertex.len()];
+        for h in t0.outgoing(pole) {
+            if let Some(k) = slot[t0.tip(h).idx()] {
+                pole_length[k] = Some(l0[h.edge().idx()].clone());
+            }
+        }
+        DiskMetric {
+            lengths: disk.edge.iter().map(|e| l0[e.idx()].clone()).collect(),
+            pole_length,
+        }
+    }
+}
+
+/// Enclosures of the disk's metric that replace the binary64 `lengths` and
+/// `pole_length` of a [`DiskCertificateData`] in every enclosure (e.g. the exact input
+/// metric replayed to `T₀`, B73): a `Holds` is then a proof for every metric they enclose.
+#[derive(Clone, Debug)]
+pub struct DiskMetric {
+    /// Enclosures of the disk's lengths `ℓ⁰` (before the flips).
+    pub lengths: Vec<I>,
+    /// Enclosures of `ℓ⁰_{a v∞}` at link vertices, `None` at free vertices.
+    pub pole_length: Vec<Option<I>>,
 }
 
 /// Check a disk certificate at `bits` of interval precision (steps 1–3 of the module
 /// documentation). Malformed data (counts, a flip that does not replay, bits out of range)
 /// is `Undecided` with the reason: this check never claims that no solution exists.
 /// proof: B76
-#[allow(clippy::too_many_lines)] // the three steps of B76, read top to bottom
 pub fn check_disk_certificate(data: &DiskCertificateData, bits: u32) -> CertificateOutcome {
+    check_disk_certificate_on(data, None, bits)
+}
+
+/// [`check_disk_certificate`] for the metric enclosed by `metric` (see [`DiskMetric`]);
+/// its enclosures must have been computed at `bits`. proof: B76, B73
+#[allow(clippy::too_many_lines)] // the three steps of B76, read top to bottom
+pub fn check_disk_certificate_on(
+    data: &DiskCertificateData,
+    metric: Option<&DiskMetric>,
+    bits: u32,
+) -> CertificateOutcome {
     let undecided = |reason: String| CertificateOutcome::Undecided { reason };
     let n = data.disk.n_vertices();
     if data.pole_length.len() != n || data.over_pi.len() != n || data.u.len() != n {
@@ -77,20 +114,47 @@ pub fn check_disk_certificate(data: &DiskCertificateData, bits: u32) -> Certific
     let Ok(prec) = Precision::new(u64::from(bits)) else {
         return undecided(format!("precision of {bits} bits out of range"));
     };
-    let Ok((mesh, base)) = carry_lengths::<I>(&data.disk, &data.lengths, &data.flip_sequence, prec)
-    else {
+    let mut pole_length = Vec::with_capacity(n);
+    for (v, l) in data.pole_length.iter().enumerate() {
+        let Some(l) = l else {
+            pole_length.push(None);
+            continue;
+        };
+        if !(l.is_finite() && *l > 0.0) {
+            return undecided(format!("pole length of v{v} is not positive"));
+        }
+        pole_length.push(Some(I::from_f64(*l, prec)));
+    }
+    let carried = match metric {
+        None => carry_lengths::<I>(&data.disk, &data.lengths, &data.flip_sequence, prec),
+        Some(m) => {
+            let same_link = m.pole_length.len() == n
+                && m.pole_length
+                    .iter()
+                    .zip(&data.pole_length)
+                    .all(|(a, b)| a.is_some() == b.is_some());
+            if m.lengths.len() != data.disk.n_edges() || !same_link {
+                return undecided(
+                    "the enclosed metric does not match the disk (edges or link vertices)".into(),
+                );
+            }
+            pole_length.clone_from(&m.pole_length);
+            carry_lengths_from(&data.disk, m.lengths.clone(), &data.flip_sequence)
+        }
+    };
+    let Ok((mesh, base)) = carried else {
         return undecided("the flip sequence does not replay on the disk".into());
     };
     let markers: Vec<Option<f64>> = data.pole_length.iter().map(|l| l.map(|_| 0.0)).collect();
     let (free, free_idx) = free_index(&markers);
     let mut point = Vec::with_capacity(n);
     let mut boxed = Vec::with_capacity(n);
-    for v in 0..n {
-        if let Some(l) = data.pole_length[v] {
-            if !(l.is_finite() && l > 0.0) {
-                return undecided(format!("pole length of v{v} is not positive"));
+    for (v, pl) in pole_length.iter().enumerate() {
+        if let Some(l) = pl {
+            if l.sign() != Some(Sign::Positive) {
+                return undecided(format!("pole length of v{v} is not enclosed as positive"));
             }
-            let w = I::from_f64(l, prec).ln() * &I::from_f64(-2.0, prec);
+            let w = l.clone().ln() * &I::from_f64(-2.0, prec);
             point.push(w.clone());
             boxed.push(w);
         } else {
@@ -118,7 +182,7 @@ pub fn check_disk_certificate(data: &DiskCertificateData, bits: u32) -> Certific
         let Some(q) = QuadEdges::of(&mesh, e) else {
             continue;
         };
-        if !lower_nonnegative(&enclose_p(&q.lengths(&lb).map(Clone::clone).to_array())) {
+        if !certified_nonnegative(&enclose_p(&q.lengths(&lb).map(Clone::clone).to_array())) {
             return undecided(format!(
                 "edge e{} not certified Delaunay on the whole box",
                 e.0
@@ -129,7 +193,7 @@ pub fn check_disk_certificate(data: &DiskCertificateData, bits: u32) -> Certific
     let pi = I::pi(prec);
     let theta_box = cone_angles(&mesh, &lb);
     for (v, theta_v) in theta_box.iter().enumerate() {
-        if data.pole_length[v].is_some() && !lower_nonnegative(&(pi.clone() - theta_v)) {
+        if data.pole_length[v].is_some() && !certified_nonnegative(&(pi.clone() - theta_v)) {
             return undecided(format!(
                 "the disk's angle at link vertex v{v} is not certified ≤ π on the whole box"
             ));
@@ -143,103 +207,30 @@ pub fn check_disk_certificate(data: &DiskCertificateData, bits: u32) -> Certific
             residual: 0.0,
         };
     }
-    // 3. The Hessian over the box and the residual at u.
+    // 3. The Hessian over the box and the residual at u (B71's ball argument).
     let laplacian = cotan_laplacian(&mesh, &lb);
-    let mut entries = Vec::new();
-    let mut rad_row = vec![0.0f64; free.len()];
-    for (i, j, w) in laplacian.entries() {
-        let (Some(a), Some(b)) = (free_idx[i], free_idx[j]) else {
-            continue;
-        };
-        if !w.is_valid() {
-            return undecided(format!("cotan Laplacian entry ({i}, {j}) not enclosed"));
-        }
-        let h = -w.clone();
-        let mid = ((h.lo().clone() + h.hi()) * &h.lo().lit(0.5)).approx_f64();
-        let m = Mpfr::from_f64(mid, prec);
-        let rad = to_f64_up(&h.hi().sub_up(&m)).max(to_f64_up(&m.sub_up(h.lo())));
-        rad_row[a] = up(rad_row[a] + rad);
-        if a >= b {
-            entries.push((a, b, mid));
-        }
-    }
-    let rad_norm = rad_row.iter().copied().fold(0.0, f64::max);
-    let mid = SymmetricLower {
-        n: free.len(),
-        entries,
-    };
-    let estimate = smallest_eigenvalue_estimate(&mesh, &lb, &free_idx);
-    let bound = [0.5, 0.25, 0.0625]
-        .into_iter()
-        .filter_map(|frac| lambda_min_lower_bound(&mid, estimate * frac))
-        .find(|b| b.lambda_min > 0.0);
-    let Some(bound) = bound else {
-        return undecided("no verified positive lower bound on the Hessian's eigenvalues".into());
-    };
-    let mu = -up(rad_norm - bound.lambda_min);
-    if mu.is_nan() || mu <= 0.0 {
-        return undecided(format!(
-            "the Hessian's variation over the box ({rad_norm:e}) exceeds its eigenvalue bound ({:e})",
-            bound.lambda_min
-        ));
+    if let Some((i, j, _)) = laplacian.entries().find(|(_, _, w)| !w.is_valid()) {
+        return undecided(format!("cotan Laplacian entry ({i}, {j}) not enclosed"));
     }
     let lp = scaled(&mesh, &base, &point);
     let theta = cone_angles(&mesh, &lp);
-    let mut sum = Mpfr::from_f64(0.0, prec);
+    let mut residual = Vec::with_capacity(free.len());
     for &v in &free {
         let g = I::from_rational(&data.over_pi[v], prec) * &pi - &theta[v];
         if !g.is_valid() {
             return undecided(format!("angle sum at v{v} not enclosed"));
         }
-        let (lo, hi) = (g.lo().abs(), g.hi().abs());
-        let mag = if lo.as_float() > hi.as_float() {
-            lo
-        } else {
-            hi
-        };
-        sum = sum.add_up(&mag.mul_up(&mag));
+        residual.push(g);
     }
-    let gamma = sum.sqrt_up();
-    let distance = gamma.div_up(&Mpfr::from_f64(mu, prec));
-    let r = Mpfr::from_rational(&data.radius, prec);
-    if distance.as_float() >= r.as_float() {
-        return undecided(format!(
-            "residual bound {:e} / μ {mu:e} = {:e} is not below the radius {:e}",
-            to_f64_up(&gamma),
-            to_f64_up(&distance),
-            r.approx_f64()
-        ));
-    }
-    CertificateOutcome::Holds {
-        distance: to_f64_up(&distance),
-        mu,
-        residual: to_f64_up(&gamma),
-    }
-}
-
-/// `λ_min` of the Hessian on the free vertices at the midpoint lengths, by inverse
-/// iteration (a heuristic that only picks the shift; the bound itself is verified).
-fn smallest_eigenvalue_estimate(mesh: &Mesh, lengths: &[I], free_idx: &[Option<usize>]) -> f64 {
-    let top = lengths.iter().map(Real::approx_f64).fold(0.0, f64::max);
-    let lf: Vec<f64> = lengths.iter().map(|x| x.approx_f64() / top).collect();
-    let h = grounded_hessian(mesh, &lf, free_idx);
-    let Some(f) = CholeskyCache::default().factor(&h) else {
-        return 0.0;
-    };
-    let m = free_idx.iter().flatten().count();
-    let mut x: Vec<f64> = (0..m).map(|k| 1.0 + (k % 7) as f64 / 7.0).collect();
-    let mut lambda = 0.0;
-    for _ in 0..30 {
-        let y = f.solve(&x);
-        let ny = y.iter().map(|a| a * a).sum::<f64>().sqrt();
-        let nx = x.iter().map(|a| a * a).sum::<f64>().sqrt();
-        if ny.is_nan() || ny <= 0.0 {
-            return 0.0;
-        }
-        lambda = nx / ny;
-        x = y.iter().map(|a| a / ny).collect();
-    }
-    lambda
+    ball_outcome(
+        &mesh,
+        &lb,
+        &laplacian,
+        &free_idx,
+        &residual,
+        &data.radius,
+        prec,
+    )
 }
 
 /// The certificate data of a solved sphere uniformization at the scale factors `u` (one
@@ -260,9 +251,8 @@ pub fn disk_data(
     }
 }
 
-/// Certify the disk problem near the `f64` solution of `sol`: boxes of radius `10⁶`, `10³`
-/// and `10¹⁰` times `max(max |Θ − θ|, 4ε)·√n` (at least `2^(10 − bits)` times those factors) around
-/// `u` taken exactly; the first outcome that holds, or the last, with its data.
+/// Certify the disk problem near the `f64` solution of `sol` ([`certify_disk_near`] at
+/// its `u` and residual, at least `4ε`, on the binary64 lengths).
 pub fn certify_disk(
     sol: &SphereUniformization,
     bits: u32,
@@ -273,14 +263,30 @@ pub fn certify_disk(
         .iter()
         .map(|&x| Rational::from_f64(x).unwrap_or_default())
         .collect();
+    let residual = sol.solution.residual_max.max(4.0 * f64::EPSILON);
+    certify_disk_near(sol, None, &u, residual, bits)
+}
+
+/// Certify the disk problem of `sol` at the scale factors `u` (exact, one per disk vertex,
+/// read at the free ones), whose `max |Θ − θ|` was estimated as `residual_max`, for the
+/// metric `metric` (`None`: the binary64 lengths): boxes of radius `10⁶`, `10³` and `10¹⁰`
+/// times `residual_max·√n` (at least `2^(10 − bits)` times those
+/// factors) around `u`; the first outcome that holds, or the last, with its data.
+pub fn certify_disk_near(
+    sol: &SphereUniformization,
+    metric: Option<&DiskMetric>,
+    u: &[Rational],
+    residual_max: f64,
+    bits: u32,
+) -> (DiskCertificateData, CertificateOutcome) {
     let n = u.len().max(1) as f64;
     let floor = 2f64.powi(-(bits.min(1000) as i32) + 10);
-    let estimate = (sol.solution.residual_max.max(4.0 * f64::EPSILON) * n.sqrt()).max(floor);
+    let estimate = (residual_max * n.sqrt()).max(floor);
     let mut last = None;
     for factor in [1e6, 1e3, 1e10] {
         let radius = Rational::from_f64(estimate * factor).unwrap_or_else(|| Rational::from(1));
-        let data = disk_data(sol, u.clone(), radius);
-        let outcome = check_disk_certificate(&data, bits);
+        let data = disk_data(sol, u.to_vec(), radius);
+        let outcome = check_disk_certificate_on(&data, metric, bits);
         let done = matches!(outcome, CertificateOutcome::Holds { .. });
         last = Some((data, outcome));
         if done {

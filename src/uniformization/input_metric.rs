@@ -14,7 +14,7 @@ use super::newton::Uniformization;
 use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
 use crate::algorithms::flips::flip_euclidean;
 use crate::geometry::triangle::corner_angle;
-use crate::mesh::Mesh;
+use crate::mesh::{Edge, Mesh};
 use crate::predicates::delaunay::{Quad, QuadEdges};
 use crate::scalar::{Interval, Mpfr, Real, Sign};
 
@@ -27,7 +27,7 @@ pub fn input_on_t0(
     mesh: &Mesh,
     lengths: &[f64],
     mut values: Vec<Mpfr>,
-    mut enclosures: Vec<Interval<Mpfr>>,
+    enclosures: Vec<Interval<Mpfr>>,
 ) -> Result<T0Metric, String> {
     if values.len() != mesh.n_edges() || enclosures.len() != mesh.n_edges() {
         return Err("one input length per edge is required".into());
@@ -44,10 +44,30 @@ pub fn input_on_t0(
     if m.face_list() != sol.initial_mesh.face_list() {
         return Err("the Euclidean flips do not reproduce the solve's T₀".into());
     }
-    let mut mi = mesh.clone();
+    let (_, enclosures) = replay_enclosed(mesh, enclosures, &rep.sequence)?;
     let mut mv = mesh.clone();
-    for (k, &e) in rep.sequence.iter().enumerate() {
-        let Some(q) = QuadEdges::of(&mi, e) else {
+    for &e in &rep.sequence {
+        flip_euclidean(&mut mv, &mut values, e).map_err(|err| err.to_string())?;
+    }
+    Ok(T0Metric { values, enclosures })
+}
+
+/// Replay the Euclidean flips `sequence` on `mesh` with the enclosed lengths
+/// `enclosures`, admitting each flip only when its quadrilateral is [`strictly_convex`]
+/// on the enclosures (B73 (a)): the result encloses the exact lengths, on the flipped
+/// triangulation, of every metric in `enclosures`. `Err(reason)` names the first flip
+/// not admitted. proof: B73
+pub fn replay_enclosed(
+    mesh: &Mesh,
+    mut enclosures: Vec<Interval<Mpfr>>,
+    sequence: &[Edge],
+) -> Result<(Mesh, Vec<Interval<Mpfr>>), String> {
+    let mut mi = mesh.clone();
+    for (k, &e) in sequence.iter().enumerate() {
+        let Some(q) = (e.idx() < mi.n_edges())
+            .then(|| QuadEdges::of(&mi, e))
+            .flatten()
+        else {
             return Err(format!(
                 "Euclidean flip {k} (e{}) has no quadrilateral",
                 e.0
@@ -60,9 +80,8 @@ pub fn input_on_t0(
             ));
         }
         flip_euclidean(&mut mi, &mut enclosures, e).map_err(|err| err.to_string())?;
-        flip_euclidean(&mut mv, &mut values, e).map_err(|err| err.to_string())?;
     }
-    Ok(T0Metric { values, enclosures })
+    Ok((mi, enclosures))
 }
 
 /// Whether the quadrilateral `[ij, jk, ki, il, lj]` (faces `ijk`, `jil`) is certified

@@ -9,6 +9,7 @@
 //! - [`targets`]: prescribed angles as exact multiples of π and Gauss–Bonnet.
 //! - [`boundary`]: surfaces with boundary (cone and boundary angles) by the double (B79).
 
+pub(crate) mod ball_argument;
 pub mod boundary;
 pub(crate) mod cell_boundary;
 pub mod certificate;
@@ -30,6 +31,8 @@ pub mod refine;
 pub mod scaling;
 pub mod sphere;
 pub mod sphere_checks;
+pub mod sphere_claim;
+pub mod sphere_refine;
 pub mod svg;
 pub mod targets;
 pub mod verified_cholesky;

@@ -14,7 +14,7 @@
 //! about `10⁻³¹`, which no precision removes (B69).
 
 use super::components::Components;
-use super::hessian::{grounded_hessian, newton_direction, CholeskyCache};
+use super::hessian::{grounded_hessian, CholeskyCache};
 use super::newton::Uniformization;
 use crate::algorithms::flips::flip_ptolemy;
 use crate::geometry::cone_angles::cone_angles;
@@ -236,15 +236,72 @@ pub fn refine_with_flips<T: Real>(
 ) -> Result<(Refinement<T>, Vec<Edge>), RefineError> {
     let (mut mesh, mut base) = carry_lengths_from(&sol.initial_mesh, l0, &sol.flip_sequence)?;
     let theta_target = targets_in::<T>(sol, ctx);
-    let mut u: Vec<T> = sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect();
+    let u: Vec<T> = sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect();
     let comps = Components::of(&mesh);
-    let (_, free_idx) = comps.free_index();
+    let (free, free_idx) = comps.free_index();
+    let every: Vec<usize> = (0..mesh.n_vertices()).collect();
+    let problem = Problem {
+        mesh: &mut mesh,
+        base: &mut base,
+        free: &free,
+        free_idx: &free_idx,
+        theta_target: &theta_target,
+        measured: &every,
+        keep_delaunay: true,
+    };
+    refine_problem(problem, u, ctx, tolerance, max_iterations)
+}
+
+/// A problem for [`refine_problem`]: the final triangulation with its base lengths in `T`,
+/// the free vertices (the others keep their `u`), the targets and the vertices whose
+/// residual `max |Θ − θ|` measures.
+pub struct Problem<'a, T> {
+    /// The final triangulation (Ptolemy-flipped in place when `keep_delaunay`).
+    pub mesh: &'a mut Mesh,
+    /// Its base lengths (before scaling), carried along by the flips.
+    pub base: &'a mut [T],
+    /// The free vertices, in order.
+    pub free: &'a [usize],
+    /// Per vertex, its index among the free ones.
+    pub free_idx: &'a [Option<usize>],
+    /// `Θ_i` per vertex (read at free vertices and at `measured`).
+    pub theta_target: &'a [T],
+    /// The vertices whose `|Θ − θ|` enters `max |Θ − θ|`.
+    pub measured: &'a [usize],
+    /// Keep the triangulation intrinsic Delaunay at every iterate ([`flip_to_delaunay_at`],
+    /// B69); `false` keeps it fixed (a problem whose edges may not all flip, e.g. the
+    /// sphere target's disk, whose star of `v∞` stays).
+    pub keep_delaunay: bool,
+}
+
+/// The refinement loop: the Hessian on the free vertices factored once in `f64` at `u`,
+/// then `u_free ← u_free − H⁻¹(Θ − θ(u))_free` with the residual in `T`, until
+/// `max |Θ − θ| ≤ tolerance` (over `measured`), `max_iterations` steps, or two steps in a
+/// row that do not halve it (the precision's floor). With `keep_delaunay` the
+/// triangulation is flipped to Delaunay at every iterate and the flips are returned in
+/// order (proof: B69); otherwise the returned flips are empty.
+pub fn refine_problem<T: Real>(
+    p: Problem<'_, T>,
+    mut u: Vec<T>,
+    ctx: T::Ctx,
+    tolerance: f64,
+    max_iterations: usize,
+) -> Result<(Refinement<T>, Vec<Edge>), RefineError> {
+    let Problem {
+        mesh,
+        base,
+        free,
+        free_idx,
+        theta_target,
+        measured,
+        keep_delaunay,
+    } = p;
     // The f64 Hessian once, from the lengths divided by the longest (angles are
     // scale-invariant). Flips at near-ties below change it by O(P): a preconditioner.
-    let l = scaled(&mesh, &base, &u);
+    let l = scaled(mesh, base, &u);
     let top = l.iter().map(Real::approx_f64).fold(0.0, f64::max);
     let lf: Vec<f64> = l.iter().map(|x| x.approx_f64() / top).collect();
-    let h = grounded_hessian(&mesh, &lf, &free_idx);
+    let h = grounded_hessian(mesh, &lf, free_idx);
     let mut cache = CholeskyCache::default();
     let factor = cache.factor(&h).ok_or(RefineError::Hessian)?;
     let mut history = Vec::new();
@@ -252,19 +309,21 @@ pub fn refine_with_flips<T: Real>(
     let mut stalls = 0;
     let mut iteration = 0;
     loop {
-        let mut l = scaled(&mesh, &base, &u);
-        flips.extend(flip_to_delaunay_at(&mut mesh, &mut base, &mut l, &u)?);
-        let theta = cone_angles(&mesh, &l);
+        let mut l = scaled(mesh, base, &u);
+        if keep_delaunay {
+            flips.extend(flip_to_delaunay_at(mesh, base, &mut l, &u)?);
+        }
+        let theta = cone_angles(mesh, &l);
         let r: Vec<T> = theta_target
             .iter()
             .zip(&theta)
             .map(|(t, th)| t.clone() - th)
             .collect();
         let rf: Vec<f64> = r.iter().map(Real::approx_f64).collect();
-        if let Some(vertex) = rf.iter().position(|x| !x.is_finite()) {
+        if let Some(&vertex) = measured.iter().find(|&&v| !rf[v].is_finite()) {
             return Err(RefineError::Undefined { vertex });
         }
-        let rmax = rf.iter().fold(0.0, |m: f64, x| m.max(x.abs()));
+        let rmax = measured.iter().fold(0.0, |m: f64, &v| m.max(rf[v].abs()));
         if let Some(&prev) = history.last() {
             stalls = if rmax > 0.5 * prev { stalls + 1 } else { 0 };
         }
@@ -279,10 +338,12 @@ pub fn refine_with_flips<T: Real>(
             };
             return Ok((refinement, flips));
         }
-        // H d = −∇E = −(Θ − θ): the Newton correction from the f64 factor.
-        let d = newton_direction(&factor, &rf, &comps);
-        for (ui, di) in u.iter_mut().zip(&d) {
-            *ui += &T::from_f64(*di, ctx);
+        // H d = −∇E = −(Θ − θ) on the free vertices: the Newton correction from the f64
+        // factor.
+        let rhs: Vec<f64> = free.iter().map(|&v| -rf[v]).collect();
+        let d = factor.solve(&rhs);
+        for (&v, di) in free.iter().zip(&d) {
+            u[v] += &T::from_f64(*di, ctx);
         }
         iteration += 1;
     }

@@ -119,6 +119,8 @@ pub struct SphereUniformization {
     pub initial_lengths: Vec<f64>,
     /// Euclidean flips from the input to `T₀`.
     pub euclidean_flips: usize,
+    /// Those flips, in order (edges of the input; an edge keeps its index when flipped).
+    pub euclidean_sequence: Vec<Edge>,
     /// The pole `v∞` (a vertex of `T₀`).
     pub pole: u32,
     /// The disk `T₀ − star(v∞)`.
@@ -418,13 +420,12 @@ pub fn uniformize_sphere(
     // 1. T₀ (T21, T23).
     let mut t0 = mesh.clone();
     let mut l0 = lengths.to_vec();
-    let rep = flip_to_delaunay(
-        &mut t0,
-        &mut l0,
-        FlipKind::Euclidean,
-        &FlipOptions::default(),
-    )
-    .map_err(UniformizeError::from)?;
+    let record = FlipOptions {
+        record: true,
+        ..FlipOptions::default()
+    };
+    let rep = flip_to_delaunay(&mut t0, &mut l0, FlipKind::Euclidean, &record)
+        .map_err(UniformizeError::from)?;
     if !rep.all_certified_delaunay() {
         return Err(UniformizeError::InitialNotDelaunay {
             undecided: rep.undecided.len() + rep.refused.len(),
@@ -508,6 +509,7 @@ pub fn uniformize_sphere(
         initial_mesh: t0,
         initial_lengths: l0,
         euclidean_flips: rep.flips,
+        euclidean_sequence: rep.sequence,
         pole: pole.0,
         disk,
         fixed,

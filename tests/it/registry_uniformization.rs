@@ -32,7 +32,7 @@ fn mpfr(bits: u64) -> Prec {
 
 /// A noisy icosphere with `20k²` faces given by rational vertex positions (the binary64
 /// coordinates, exactly): its lengths are square roots of rationals, not binary64 numbers.
-fn irrational_sphere(k: u32, seed: u64) -> Surface {
+pub(crate) fn irrational_sphere(k: u32, seed: u64) -> Surface {
     let mut s = icosphere(k);
     let amount = 0.2 * s.mean_edge();
     s.jitter(amount, seed);
@@ -40,7 +40,7 @@ fn irrational_sphere(k: u32, seed: u64) -> Surface {
 }
 
 /// The surface of `s` with its binary64 positions taken exactly (squared lengths rational).
-fn exact_positions(name: &str, s: &crate::meshgen::Embedded) -> Surface {
+pub(crate) fn exact_positions(name: &str, s: &crate::meshgen::Embedded) -> Surface {
     let mesh = s.mesh();
     let pos: Vec<[Rational; 3]> = s
         .pos

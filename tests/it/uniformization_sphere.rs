@@ -6,14 +6,19 @@
 use crate::meshgen::icosphere;
 use crate::support::cases;
 use penner::mesh::{Mesh, Vertex};
+use penner::scalar::{Interval, Mpfr, Precision};
 use penner::uniformization::certificate::CertificateOutcome;
-use penner::uniformization::dirichlet_certificate::{certify_disk, check_disk_certificate};
+use penner::uniformization::dirichlet_certificate::{
+    certify_disk, certify_disk_near, check_disk_certificate,
+};
 use penner::uniformization::sphere::{
     uniformize_sphere, SphereError, SphereOptions, SphereUniformization,
 };
 use penner::uniformization::sphere_checks::{
     chord_lengths, cross_ratio_deviation, planar_delaunay,
 };
+use penner::uniformization::sphere_claim::{claim_of, recheck, to_json};
+use penner::uniformization::sphere_refine::{input_disk_metric, prove_disk};
 use rug::Rational;
 
 /// B75: tolerance of the numerical comparisons of the output polyhedron (chords, log
@@ -164,6 +169,131 @@ fn b76_disk_certificate_holds_and_refuses_a_wrong_u() {
         check_disk_certificate(&wrong, 128),
         CertificateOutcome::Undecided { .. }
     ));
+}
+
+/// B90: the claim of a sphere uniformization re-checks for the input's exact metric
+/// (irrational lengths from rational positions, Euclidean flips replayed on enclosures),
+/// survives the claim parser unchanged, and is refused for a perturbed input, a moved `u`
+/// and a flip of a star edge.
+#[test]
+fn b90_sphere_claim_rechecks_for_the_exact_input_metric() {
+    // The first seed whose input is not intrinsic Delaunay, so that the replay is
+    // exercised, and whose f64 certificate holds.
+    let (s, sol, data, residual) = (1..40)
+        .find_map(|seed| {
+            let mut e = icosphere(2);
+            let amount = 0.45 * e.mean_edge();
+            e.jitter(amount, seed);
+            let s = crate::registry_uniformization::exact_positions("rough sphere", &e);
+            let l = s.lengths::<f64>(());
+            let sol = uniformize_sphere(&s.mesh, &l, &SphereOptions::default()).ok()?;
+            if sol.euclidean_flips == 0 {
+                return None;
+            }
+            // Some rough spheres need a flip at the pole (B74, Limits): not certified.
+            // The certificate for the exact metric (the claim's residual bound is its).
+            let prec = Precision::new(128).unwrap();
+            let metric =
+                input_disk_metric(&sol, &s.mesh, s.lengths::<Interval<Mpfr>>(prec)).ok()?;
+            let u: Vec<Rational> = sol
+                .solution
+                .u
+                .iter()
+                .map(|&x| Rational::from_f64(x).unwrap())
+                .collect();
+            let (data, outcome) =
+                certify_disk_near(&sol, Some(&metric), &u, sol.solution.residual_max, 128);
+            let CertificateOutcome::Holds { residual, .. } = outcome else {
+                return None;
+            };
+            Some((s, sol, data, residual))
+        })
+        .expect("a noisy sphere that needs Euclidean flips");
+    let claim = claim_of(&s, &sol, &data, residual);
+    let exact = recheck(&s, &claim, 128).unwrap();
+    assert!(
+        matches!(exact, CertificateOutcome::Holds { distance, .. } if distance < 1e-9),
+        "{exact:?}"
+    );
+    // The document parses back to the same claim.
+    let doc = to_json(&s, &claim, 128);
+    let parsed = penner::oracle::claim::parse_value(&doc).unwrap();
+    assert_eq!(
+        parsed.assertion,
+        penner::oracle::claim::Assertion::SphereUniformization(claim.clone())
+    );
+    // Negative control: one input length 1% longer (squared length × 1.0201).
+    let mut wrong = s.clone();
+    if let penner::io::Metric::SquaredLengths(sq) = &mut wrong.metric {
+        sq[0] *= Rational::from((10201, 10000));
+    } else {
+        panic!("squared lengths expected");
+    }
+    let out = recheck(&wrong, &claim, 128).unwrap();
+    assert!(
+        matches!(out, CertificateOutcome::Undecided { .. }),
+        "{out:?}"
+    );
+    // Negative control: u moved by 10⁻⁴ at a free vertex.
+    let mut moved = claim.clone();
+    let free = moved.u.iter().position(Option::is_some).unwrap();
+    if let Some(x) = &mut moved.u[free] {
+        *x += Rational::from((1, 10_000));
+    }
+    let out = recheck(&s, &moved, 128).unwrap();
+    assert!(
+        matches!(out, CertificateOutcome::Undecided { .. }),
+        "{out:?}"
+    );
+    // A flip of an edge at the pole is malformed, named by field.
+    let order = penner::io::json::edge_order(&s.mesh);
+    let star = sol
+        .initial_mesh
+        .outgoing(Vertex(sol.pole))
+        .next()
+        .unwrap()
+        .edge();
+    let mut star_flip = claim;
+    star_flip.flips = vec![order.iter().position(|&e| e == star.idx()).unwrap()];
+    let e = recheck(&s, &star_flip, 128).unwrap_err();
+    assert!(e.to_string().contains("flips[0]"), "{e}");
+}
+
+/// B91: the disk problem refined in MPFR-256 (f64 factor) reaches `max |2π − θ| ≤ 10⁻⁶⁰`
+/// and is certified for the exact input metric at 256 bits; its claim re-checks. Negative
+/// control: the same `u` is not a solution for the binary64 rounding of the input (the
+/// rounding moves `u` by about `10⁻¹⁶`, far beyond the box).
+#[test]
+fn b91_sphere_refinement_certifies_to_1e_60_at_256_bits() {
+    let s = crate::registry_uniformization::irrational_sphere(2, 3);
+    let l = s.lengths::<f64>(());
+    let sol = uniformize_sphere(&s.mesh, &l, &SphereOptions::default()).unwrap();
+    let prec = Precision::new(256).unwrap();
+    let metric = input_disk_metric(&sol, &s.mesh, s.lengths::<Interval<Mpfr>>(prec)).unwrap();
+    let proof = prove_disk(&sol, Some(&metric), prec, 2f64.powi(-200)).unwrap();
+    let last = *proof.history.last().unwrap();
+    assert!(last <= 1e-60, "{:?}", proof.history);
+    let CertificateOutcome::Holds {
+        residual, distance, ..
+    } = proof.outcome
+    else {
+        panic!("{:?}", proof.outcome)
+    };
+    assert!(
+        residual <= 1e-59 && distance < 1e-55,
+        "{residual:e} {distance:e}"
+    );
+    let claim = claim_of(&s, &sol, &proof.data, residual);
+    let again = recheck(&s, &claim, 256).unwrap();
+    assert!(
+        matches!(again, CertificateOutcome::Holds { .. }),
+        "{again:?}"
+    );
+    let rounded = check_disk_certificate(&proof.data, 256);
+    assert!(
+        matches!(rounded, CertificateOutcome::Undecided { .. }),
+        "{rounded:?}"
+    );
 }
 
 #[test]
