@@ -289,6 +289,7 @@ pub fn certify(claim: &Claim) -> Result<Answer, Unsupported> {
             Ok(summarize(claim, &b, &|_| "x".to_string(), "value of Л(x)"))
         }
         Assertion::Uniformization(u) => Ok(uniformization(claim, u)),
+        Assertion::HyperbolicUniformization(h) => Ok(super::certify_hyperbolic::answer(claim, h)),
         Assertion::CirclePacking { .. } | Assertion::CirclePattern { .. } => {
             super::certify_circles::answer(claim).ok_or(Unsupported(claim.assertion.kind()))
         }

@@ -89,6 +89,11 @@ pub enum Assertion {
     /// norm) of the given `u`, with the surface's lengths carried by the given Ptolemy flips
     /// (notes §1.5.3 Thm 12; certificate and re-check: `uniformization::claim_form`, B71).
     Uniformization(crate::uniformization::claim_form::UniformizationClaim),
+    /// `hyperbolic_uniformization`: an exact solution `u*` of `θ_hyp(u*) = Θ` (sinh
+    /// scaling, the surface's lengths read as hyperbolic lengths, its own triangulation)
+    /// exists within `radius` (sup norm) of the given `u`, and `‖Θ − θ_hyp(u)‖₂ ≤
+    /// residual_bound` (notes Thm 11; `uniformization::hyperbolic_claim`, B39).
+    HyperbolicUniformization(crate::uniformization::hyperbolic_claim::HyperbolicClaim),
     /// `circle_packing`: the circles (plane) or caps (sphere) realize the surface's
     /// triangulation as a tangency packing within `epsilon`: every edge's tangency defect
     /// is at most ε, every face's centres are positively oriented and every interior
@@ -126,6 +131,7 @@ impl Assertion {
             Assertion::Energy { .. } => "energy",
             Assertion::Lobachevsky { .. } => "lobachevsky",
             Assertion::Uniformization(_) => "uniformization",
+            Assertion::HyperbolicUniformization(_) => "hyperbolic_uniformization",
             Assertion::CirclePacking { .. } => "circle_packing",
             Assertion::CirclePattern { .. } => "circle_pattern",
         }
@@ -209,7 +215,7 @@ const COMMON_FIELDS: [&str; 5] = ["penner_claim", "id", "kind", "surface", "max_
 
 /// The claim kinds and the fields each may carry besides [`COMMON_FIELDS`]
 /// (`schema/claim-v1.schema.json`).
-const KIND_FIELDS: [(&str, &[&str]); 10] = [
+const KIND_FIELDS: [(&str, &[&str]); 11] = [
     ("intrinsic_delaunay", &[]),
     ("delaunay_flip", &["flips", "result", "epsilon"]),
     ("cone_angles", &["angles", "epsilon"]),
@@ -227,6 +233,10 @@ const KIND_FIELDS: [(&str, &[&str]); 10] = [
             "final_faces",
             "residual_bound",
         ],
+    ),
+    (
+        "hyperbolic_uniformization",
+        &["targets", "u", "radius", "residual_bound"],
     ),
     ("circle_packing", &["centres", "radii", "caps", "epsilon"]),
     (
@@ -365,7 +375,7 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
     let kind = v
         .get("kind")
         .and_then(Value::as_str)
-        .ok_or_else(|| err("kind: required, one of intrinsic_delaunay, delaunay_flip, cone_angles, cotan_laplacian, conformal_equivalence, energy, lobachevsky, uniformization, circle_packing, circle_pattern"))?;
+        .ok_or_else(|| err("kind: required, one of intrinsic_delaunay, delaunay_flip, cone_angles, cotan_laplacian, conformal_equivalence, energy, lobachevsky, uniformization, hyperbolic_uniformization, circle_packing, circle_pattern"))?;
     let Some((_, own)) = KIND_FIELDS.iter().find(|(k, _)| *k == kind) else {
         return Err(err(format!("kind: unknown claim kind {kind:?}")));
     };
@@ -425,6 +435,9 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
             }
         }
         "uniformization" => uniformization_claim(v, &surface)?,
+        "hyperbolic_uniformization" => {
+            super::claim_hyperbolic::parse(v, &surface).map(Assertion::HyperbolicUniformization)?
+        }
         "energy" => parse_energy(v, surface.mesh.n_vertices())?,
         other => return Err(err(format!("kind: unknown claim kind {other:?}"))),
     };

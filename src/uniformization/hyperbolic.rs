@@ -180,6 +180,12 @@ pub fn validate_hyperbolic(
         }
         .into());
     }
+    validate_hyperbolic_targets(mesh, targets)?;
+    hyperbolic_gauss_bonnet(mesh, targets)
+}
+
+/// One target per vertex of `mesh`, each `Θ_i > 0` (bad input otherwise).
+pub fn validate_hyperbolic_targets(mesh: &Mesh, targets: &Targets) -> Result<(), HyperbolicError> {
     if targets.len() != mesh.n_vertices() {
         return Err(UniformizeError::TargetCount {
             expected: mesh.n_vertices(),
@@ -196,6 +202,14 @@ pub fn validate_hyperbolic(
             .into());
         }
     }
+    Ok(())
+}
+
+/// Hyperbolic Gauss–Bonnet leaves a positive area: `Σ_{i∈C}(2π − Θ_i) > 2πχ(C)` on every
+/// component `C`, decided exactly on `Θ_i/π` (B38). When it fails no hyperbolic cone metric
+/// on `mesh` has the angles `Θ` ([`HyperbolicError::NoArea`]): the area `Σ_t(π − Σα)` of
+/// strict hyperbolic triangles is positive. `targets` must have one entry per vertex.
+pub fn hyperbolic_gauss_bonnet(mesh: &Mesh, targets: &Targets) -> Result<(), HyperbolicError> {
     let comps = Components::of(mesh);
     for (c, &root) in comps.roots.iter().enumerate() {
         let mut sum = Rational::new();
