@@ -13,6 +13,7 @@
 use super::certificate::to_f64_up;
 use super::hyperbolic::{HyperbolicError, HyperbolicUniformization};
 use super::hyperbolic_kernel::{face_terms_generic, log_length};
+use super::newton_driver::refine_loop;
 use super::refine::Refinement;
 use super::targets::Targets;
 use crate::mesh::Mesh;
@@ -63,49 +64,20 @@ pub fn refine_hyperbolic<T: Real>(
         })?;
     let lengths: Vec<T> = sol.lengths.iter().map(|&x| T::from_f64(x, ctx)).collect();
     let theta_target = targets_in::<T>(sol, ctx);
-    let mut u: Vec<T> = sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect();
-    let mut history = Vec::new();
-    let mut stalls = 0;
-    let mut iteration = 0;
-    loop {
-        let theta = cone_angles(mesh, &scaled_in(mesh, &lengths, &u), false);
-        let r: Vec<T> = theta_target
+    let u: Vec<T> = sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect();
+    let residual = |u: &[T]| -> Vec<T> {
+        let theta = cone_angles(mesh, &scaled_in(mesh, &lengths, u), false);
+        theta_target
             .iter()
             .zip(&theta)
             .map(|(t, th)| t.clone() - th)
-            .collect();
-        let rf: Vec<f64> = r.iter().map(Real::approx_f64).collect();
-        let rmax = rf.iter().fold(0.0, |m: f64, x| m.max(x.abs()));
-        if !rmax.is_finite() {
-            history.push(f64::INFINITY);
-            return Ok(Refinement {
-                u,
-                residual: r,
-                history,
-                reached: false,
-            });
-        }
-        if let Some(&prev) = history.last() {
-            stalls = if rmax > 0.5 * prev { stalls + 1 } else { 0 };
-        }
-        history.push(rmax);
-        let reached = rmax <= tolerance;
-        if reached || iteration >= max_iterations || stalls >= 2 {
-            return Ok(Refinement {
-                u,
-                residual: r,
-                history,
-                reached,
-            });
-        }
-        // H d = −∇E = −(Θ − θ).
-        let minus: Vec<f64> = rf.iter().map(|x| -x).collect();
-        let d = factor.solve(&minus);
-        for (ui, di) in u.iter_mut().zip(&d) {
-            *ui += &T::from_f64(*di, ctx);
-        }
-        iteration += 1;
-    }
+            .collect()
+    };
+    // H d = −∇E = −(Θ − θ).
+    let correction = |r: &[f64]| factor.solve(&r.iter().map(|x| -x).collect::<Vec<_>>());
+    // A residual that stops being finite ends the refinement unreached (history `+∞`).
+    let (refinement, _) = refine_loop(u, ctx, tolerance, max_iterations, residual, correction);
+    Ok(refinement)
 }
 
 /// The first face that is not a strict triangle at `u` (`u32::MAX` if none).
@@ -159,7 +131,9 @@ fn log_lengths_i(mesh: &Mesh, lengths: &[I], u: &[I]) -> Vec<I> {
     mesh.edges()
         .map(|e| {
             let h = e.halfedge();
-            hyperbolic_log_length(&lengths[e.idx()]) + &u[mesh.tail(h).idx()] + &u[mesh.tip(h).idx()]
+            hyperbolic_log_length(&lengths[e.idx()])
+                + &u[mesh.tail(h).idx()]
+                + &u[mesh.tip(h).idx()]
         })
         .collect()
 }
@@ -214,8 +188,7 @@ pub fn enclosed_residual(
         .iter()
         .map(length_from_log)
         .collect();
-    strict_triangles(mesh, &l)
-        .map_err(|f| format!("face f{f} not certified a strict triangle"))?;
+    strict_triangles(mesh, &l).map_err(|f| format!("face f{f} not certified a strict triangle"))?;
     let pi = I::pi(prec);
     let theta = cone_angles(mesh, &l, false);
     let mut residual = Vec::with_capacity(theta.len());

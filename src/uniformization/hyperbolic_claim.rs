@@ -16,13 +16,11 @@
 //! all), or the residual enclosed over the whole box excludes 0 at a vertex (no solution in
 //! the box), or the residual at `u` is enclosed above `residual_bound`.
 
-use super::hyperbolic::{
-    hyperbolic_gauss_bonnet, validate_hyperbolic_targets, HyperbolicError,
-};
+use super::claim_form::exact_decimal;
+use super::hyperbolic::{hyperbolic_gauss_bonnet, validate_hyperbolic_targets, HyperbolicError};
 use super::hyperbolic_certificate::{
     box_around, enclosed_residual, existence_on_box, norm2_bounds, Existence,
 };
-use super::claim_form::exact_decimal;
 use super::targets::Targets;
 use crate::io::json::to_value;
 use crate::io::{Metric, Surface};
@@ -186,7 +184,9 @@ pub fn recheck(
                 sum_over_pi,
                 chi,
             } => {
-                let sum: f64 = sum_over_pi.parse::<Rational>().map_or(f64::NAN, |q| q.to_f64());
+                let sum: f64 = sum_over_pi
+                    .parse::<Rational>()
+                    .map_or(f64::NAN, |q| q.to_f64());
                 (
                     format!("targets (component of v{root})"),
                     (sum - 2.0 * *chi as f64) * std::f64::consts::PI,
@@ -212,9 +212,10 @@ pub fn recheck(
             })
         }
         Ok(g) => {
-            let away = g.iter().enumerate().find(|(_, x)| {
-                matches!(x.sign(), Some(Sign::Positive | Sign::Negative))
-            });
+            let away = g
+                .iter()
+                .enumerate()
+                .find(|(_, x)| matches!(x.sign(), Some(Sign::Positive | Sign::Negative)));
             if let Some((v, x)) = away {
                 return Ok(HyperbolicVerdict::Refuted {
                     element: format!("v{v}"),

@@ -27,6 +27,7 @@ pub mod input_metric;
 pub mod krawczyk;
 pub mod layout;
 pub mod newton;
+pub(crate) mod newton_driver;
 pub mod refine;
 pub mod scaling;
 pub mod sphere;

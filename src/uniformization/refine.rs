@@ -10,6 +10,7 @@
 use super::components::Components;
 use super::hessian::{grounded_hessian, newton_direction, CholeskyCache};
 use super::newton::Uniformization;
+use super::newton_driver::refine_loop;
 use crate::algorithms::flips::flip_ptolemy;
 use crate::geometry::cone_angles::cone_angles;
 use crate::mesh::{Edge, Mesh};
@@ -141,7 +142,7 @@ pub fn refine_on<T: Real>(
 ) -> Result<Refinement<T>, RefineError> {
     let (mesh, base) = carry_lengths_from(&sol.initial_mesh, l0, &sol.flip_sequence)?;
     let theta_target = targets_in::<T>(sol, ctx);
-    let mut u: Vec<T> = sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect();
+    let u: Vec<T> = sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect();
     let comps = Components::of(&mesh);
     let (_, free_idx) = comps.free_index();
     // The f64 Hessian once, from the lengths divided by the longest (angles are
@@ -152,40 +153,18 @@ pub fn refine_on<T: Real>(
     let h = grounded_hessian(&mesh, &lf, &free_idx);
     let mut cache = CholeskyCache::default();
     let factor = cache.factor(&h).ok_or(RefineError::Hessian)?;
-    let mut history = Vec::new();
-    let mut stalls = 0;
-    let mut iteration = 0;
-    loop {
-        let l = scaled(&mesh, &base, &u);
-        let theta = cone_angles(&mesh, &l);
-        let r: Vec<T> = theta_target
+    let residual = |u: &[T]| -> Vec<T> {
+        let theta = cone_angles(&mesh, &scaled(&mesh, &base, u));
+        theta_target
             .iter()
             .zip(&theta)
             .map(|(t, th)| t.clone() - th)
-            .collect();
-        let rf: Vec<f64> = r.iter().map(Real::approx_f64).collect();
-        if let Some(vertex) = rf.iter().position(|x| !x.is_finite()) {
-            return Err(RefineError::Undefined { vertex });
-        }
-        let rmax = rf.iter().fold(0.0, |m: f64, x| m.max(x.abs()));
-        if let Some(&prev) = history.last() {
-            stalls = if rmax > 0.5 * prev { stalls + 1 } else { 0 };
-        }
-        history.push(rmax);
-        let reached = rmax <= tolerance;
-        if reached || iteration >= max_iterations || stalls >= 2 {
-            return Ok(Refinement {
-                u,
-                residual: r,
-                history,
-                reached,
-            });
-        }
-        // H d = −∇E = −(Θ − θ): the Newton correction from the f64 factor.
-        let d = newton_direction(&factor, &rf, &comps);
-        for (ui, di) in u.iter_mut().zip(&d) {
-            *ui += &T::from_f64(*di, ctx);
-        }
-        iteration += 1;
+            .collect()
+    };
+    // H d = −∇E = −(Θ − θ): the Newton correction from the f64 factor.
+    let correction = |r: &[f64]| newton_direction(&factor, r, &comps);
+    match refine_loop(u, ctx, tolerance, max_iterations, residual, correction) {
+        (refinement, None) => Ok(refinement),
+        (_, Some(vertex)) => Err(RefineError::Undefined { vertex }),
     }
 }

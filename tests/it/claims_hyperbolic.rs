@@ -81,7 +81,10 @@ fn b39_hyperbolic_claim_round_trip_holds_and_is_refuted_only_with_a_proof() {
     });
     let genus3 = builders::genus(3).unwrap();
     let random = candidates
-        .chain(std::iter::once((genus3.clone(), random_lengths(&genus3, 1.0, 1.5, 1))))
+        .chain(std::iter::once((
+            genus3.clone(),
+            random_lengths(&genus3, 1.0, 1.5, 1),
+        )))
         .find(|(m, l)| {
             let t = Targets::flat(m.n_vertices());
             uniformize_hyperbolic(m, l, &t, &HyperbolicOptions::default())
@@ -92,7 +95,12 @@ fn b39_hyperbolic_claim_round_trip_holds_and_is_refuted_only_with_a_proof() {
     for (k, (m, l)) in cases.iter().enumerate() {
         let (claim, radius) = certified_claim(m, l, 256);
         let a = answer(&claim);
-        assert_eq!(a.verdict, ClaimVerdict::Holds, "case {k}: {:?}", a.witnesses);
+        assert_eq!(
+            a.verdict,
+            ClaimVerdict::Holds,
+            "case {k}: {:?}",
+            a.witnesses
+        );
         assert!(a.certified && a.kind == "hyperbolic_uniformization");
         let distance = a.max_discrepancy.unwrap();
         assert!(distance <= radius, "case {k}: {distance:e} > {radius:e}");
@@ -162,14 +170,19 @@ fn b39_hyperbolic_claim_of_a_closed_form_holds() {
 fn b39_hyperbolic_claim_without_area_is_refuted_by_gauss_bonnet() {
     use penner::io::{json::to_value, Metric, Surface};
     let lengths = Metric::Lengths(vec![1.into(), 1.into(), Rational::from((3, 2))]);
-    let torus = to_value(&Surface::new("torus", builders::one_vertex_torus(), lengths, None).unwrap());
+    let torus =
+        to_value(&Surface::new("torus", builders::one_vertex_torus(), lengths, None).unwrap());
     let claim = |surface: &Value, targets: Value, u: Value| {
         json!({"penner_claim": 1, "kind": "hyperbolic_uniformization", "surface": surface,
                "targets": targets, "u": u, "radius": "1", "residual_bound": "10"})
     };
     let t = claim(&torus, json!(["2"]), json!(["0"]));
     assert_eq!(refuted_at(&answer(&t)), "targets (component of v0)");
-    let s = claim(&crate::cli::tetrahedron_json(), json!(vec!["2"; 4]), json!(vec!["0"; 4]));
+    let s = claim(
+        &crate::cli::tetrahedron_json(),
+        json!(vec!["2"; 4]),
+        json!(vec!["0"; 4]),
+    );
     assert_eq!(refuted_at(&answer(&s)), "targets (component of v0)");
     // Control: a cone of angle π on the torus leaves area π.
     let c = answer(&claim(&torus, json!(["1"]), json!(["0"])));
