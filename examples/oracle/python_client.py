@@ -50,7 +50,7 @@ def hyperbolic_claim(target, u):
             "radius": "1e-40", "residual_bound": "1e-40"}
 
 
-SCHEMA = os.path.join.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "schema", "claim-v1.schema.json")
+SCHEMA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "schema", "claim-v1.schema.json")
 
 
 def validator():
