@@ -47,9 +47,11 @@ pub fn answer(claim: &Claim, h: &HyperbolicClaim) -> Answer {
         certified: verdict != ClaimVerdict::Undecided,
         precision_bits: claim.max_bits,
         max_discrepancy,
-        counterexample: (verdict == ClaimVerdict::Refuted)
-            .then(|| witnesses.first().cloned())
-            .flatten(),
+        counterexample: if verdict == ClaimVerdict::Refuted {
+            witnesses.first().cloned()
+        } else {
+            None
+        },
         witnesses,
     }
 }

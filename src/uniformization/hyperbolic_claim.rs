@@ -177,28 +177,8 @@ pub fn recheck(
     let mesh = &surface.mesh;
     validate(mesh, claim)?;
     let targets = Targets::from_multiples_of_pi(claim.targets_over_pi.clone());
-    if let Err(e) = hyperbolic_gauss_bonnet(mesh, &targets) {
-        let (element, value) = match &e {
-            HyperbolicError::NoArea {
-                root,
-                sum_over_pi,
-                chi,
-            } => {
-                let sum: f64 = sum_over_pi
-                    .parse::<Rational>()
-                    .map_or(f64::NAN, |q| q.to_f64());
-                (
-                    format!("targets (component of v{root})"),
-                    (sum - 2.0 * *chi as f64) * std::f64::consts::PI,
-                )
-            }
-            _ => ("targets".to_string(), f64::NAN),
-        };
-        return Ok(HyperbolicVerdict::Refuted {
-            element,
-            detail: format!("no hyperbolic metric has these angles: {e}"),
-            value,
-        });
+    if let Some(refuted) = gauss_bonnet_refutation(mesh, &targets) {
+        return Ok(refuted);
     }
     let prec = Precision::new(u64::from(bits)).map_err(|_| HyperbolicClaimError::Bits(bits))?;
     let lengths: Vec<Interval<Mpfr>> = surface.lengths(prec);
@@ -270,4 +250,32 @@ pub fn recheck(
             Existence::Undecided { reason } => HyperbolicVerdict::Undecided { reason },
         },
     )
+}
+
+/// The refutation by hyperbolic Gauss–Bonnet (B38, B39): targets leaving no area on a
+/// component admit no hyperbolic metric at all; `None` when they leave area everywhere.
+fn gauss_bonnet_refutation(mesh: &Mesh, targets: &Targets) -> Option<HyperbolicVerdict> {
+    let e = hyperbolic_gauss_bonnet(mesh, targets).err()?;
+    let (element, value) = match &e {
+        HyperbolicError::NoArea {
+            root,
+            sum_over_pi,
+            chi,
+        } => {
+            let sum: f64 = sum_over_pi
+                .parse::<Rational>()
+                .as_ref()
+                .map_or(f64::NAN, Rational::to_f64);
+            (
+                format!("targets (component of v{root})"),
+                (sum - 2.0 * *chi as f64) * std::f64::consts::PI,
+            )
+        }
+        _ => ("targets".to_string(), f64::NAN),
+    };
+    Some(HyperbolicVerdict::Refuted {
+        element,
+        detail: format!("no hyperbolic metric has these angles: {e}"),
+        value,
+    })
 }

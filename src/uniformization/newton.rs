@@ -249,6 +249,7 @@ pub fn uniformize(
 
 /// [`uniformize`], calling `progress` after every accepted step (the Newton loop and line
 /// search of [`super::newton_driver`]).
+#[allow(clippy::too_many_lines)] // validation, T₀ by Euclidean flips, the driver, the stop
 pub fn uniformize_with_progress(
     mesh: &Mesh,
     lengths: &[f64],
