@@ -232,7 +232,7 @@ pub fn recheck(
             value: lower,
         });
     }
-    if !Rational::from_f64(upper).is_some_and(|h| h <= *bound) {
+    if Rational::from_f64(upper).is_none_or(|h| h > *bound) {
         return Ok(HyperbolicVerdict::Undecided {
             reason: format!(
                 "the enclosed residual ‖Θ − θ_hyp(u)‖₂ ≤ {upper:e} is not below the claimed residual_bound {:e}",

@@ -110,6 +110,9 @@ pub(crate) struct DriverRun<E, F> {
     pub stop: DriverStop<F>,
 }
 
+/// An accepted step: `u + td`, its evaluation, `t` and the halvings before it.
+pub(crate) type Accepted<E> = (Vec<f64>, E, f64, usize);
+
 /// The line search (module doc) from `u` along `d`, `n0 = |∇E(u)|₂`: the accepted
 /// `(u + td, its evaluation, t, halvings)`, or the last fault when no step is accepted.
 pub(crate) fn line_search<S: NewtonSystem>(
@@ -119,7 +122,7 @@ pub(crate) fn line_search<S: NewtonSystem>(
     u: &[f64],
     d: &[f64],
     max_halvings: usize,
-) -> Result<(Vec<f64>, S::Eval, f64, usize), Option<S::Fault>> {
+) -> Result<Accepted<S::Eval>, Option<S::Fault>> {
     let n0 = over.norm2(S::gradient(at));
     let mut t = 1.0;
     let mut fault = None;
