@@ -1,7 +1,7 @@
 // Using penner as an oracle from C++17 (no dependencies).
 //
-// Writes claims about a unit tetrahedron (cone angles) and about a unit square (flipping to
-// intrinsic Delaunay), runs `penner certify` on each, and reads the verdict from the JSON
+// Writes claims about a unit tetrahedron (cone angles, its hyperbolic uniformization) and
+// about a unit square (flipping to intrinsic Delaunay), runs `penner certify` on each, and reads the verdict from the JSON
 // answer and the exit code. Usage:
 //
 //     g++ -std=c++17 -O2 -o cpp_client examples/oracle/cpp_client.cpp
@@ -90,6 +90,20 @@ std::string flip_claim(const std::string& result) {
            kSquare + R"(, "result": )" + result + "}";
 }
 
+// A `hyperbolic_uniformization` claim about kSurface read as a hyperbolic metric (all
+// sides 1): cone angles `targets` (multiples of pi) reached by the sinh scaling with u at
+// every vertex. For targets pi/2 the exact u* = ln((1 + sqrt 3)/sinh^2(1/2))/2 (each
+// equilateral corner pi/6); `u` below is it to 60 digits, as another solver would give it.
+std::string hyperbolic_claim(const std::string& target, const std::string& u) {
+    const std::string t = "\"" + target + "\"";
+    const std::string v = "\"" + u + "\"";
+    return std::string(R"({"penner_claim": 1, "kind": "hyperbolic_uniformization", "max_bits": 256, "surface": )") +
+           kSurface + R"(, "targets": [)" + t + "," + t + "," + t + "," + t + R"(], "u": [)" + v + "," + v + "," + v +
+           "," + v + R"(], "radius": "1e-40", "residual_bound": "1e-40"})";
+}
+
+const char* kHyperbolicU = "1.15434859531821770494944538371704252297809856750939233242797";
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -134,6 +148,11 @@ int main(int argc, char** argv) {
              R"(, "euclidean_flips": [], "pole": 0, "flips": [], "u": [null,null,null,null],)"
              R"( "radius": "1e-9", "final_faces": [[0,1,2],[0,2,3],[0,3,1],[1,3,2]], "residual_bound": "0"})",
          "holds", 0},
+        {"hyperbolic tetrahedron: cone angles pi/2 at u to 60 digits", hyperbolic_claim("1/2", kHyperbolicU),
+         "holds", 0},
+        {"hyperbolic tetrahedron: u rounded to 1.154349", hyperbolic_claim("1/2", "1.154349"), "refuted", 1},
+        {"hyperbolic target 2 pi on a sphere (Gauss-Bonnet leaves no area)", hyperbolic_claim("2", "0"),
+         "refuted", 1},
     };
     int failures = 0;
     for (const auto& c : cases) {

@@ -2,7 +2,9 @@
 //! the hyperbolic target (notes Thm 11; B38, B39). The input lengths (rounded to binary64)
 //! are read as hyperbolic lengths of the same triangulation; Newton on the fixed
 //! triangulation, refinement, the residual enclosed in MPFR intervals and an existence
-//! radius (certified); the Gauss–Bonnet area by L'Huilier is numerical and says so.
+//! radius (certified); the Gauss–Bonnet area by L'Huilier is numerical and says so. With
+//! `-o`, a certified result is written as a `hyperbolic_uniformization` claim that
+//! `penner certify` re-checks from scratch.
 
 use super::error::{code, CliError};
 use super::files::{create_new, emit};
@@ -14,6 +16,7 @@ use penner::uniformization::hyperbolic::{
 use penner::uniformization::hyperbolic_certificate::{
     certify_hyperbolic, refine_hyperbolic, total_area_lhuilier, Existence,
 };
+use penner::uniformization::hyperbolic_claim::to_claim;
 use penner::uniformization::Targets;
 use rug::Rational;
 use std::fmt::Write as _;
@@ -120,40 +123,47 @@ pub fn run(
         area.map_or("undefined".to_string(), |a| a.to_string())
     );
     if let Some(path) = o.output {
-        let (certified, distance, reason) = match &cert.existence {
-            Existence::Holds { distance, .. } => (true, Some(*distance), None),
-            Existence::Undecided { reason } => (false, None, Some(reason.clone())),
-        };
-        let doc = serde_json::json!({
-            "kind": "hyperbolic_uniformization",
-            "surface": shown,
-            "faces": mesh.face_list(),
-            "lengths": lengths,
-            "u": u.iter().map(Rational::to_f64).collect::<Vec<_>>(),
-            "u_exact": u.iter().map(ToString::to_string).collect::<Vec<_>>(),
-            "scaled_lengths": scaled,
-            "certificate": {
-                "bits": bits,
-                "residual_max": cert.residual_max,
-                "residual_norm2": cert.residual_norm2,
-                "existence_certified": certified,
-                "distance": distance,
-                "reason": reason,
-            },
-            "numerical": {
-                "residual_max_f64": sol.residual_max,
-                "area_lhuilier": area,
-                "area_gauss_bonnet": gauss_bonnet,
-            },
-        });
-        let text = serde_json::to_string_pretty(&doc).unwrap_or_default() + "\n";
-        let mut f = create_new(path)?;
-        f.write_all(text.as_bytes()).map_err(|e| CliError::Write {
-            path: path.to_path_buf(),
-            reason: e.to_string(),
-        })?;
-        let _ = writeln!(out, "result written to {}", path.display());
+        write_claim(&mut out, path, &sol, &u, &cert, bits)?;
     }
     emit(&out)?;
     Ok(status)
+}
+
+/// Write the certificate as a `hyperbolic_uniformization` claim (`penner certify`
+/// re-checks it from scratch, B39) when the existence radius is certified; never over an
+/// existing file. Otherwise say that no certificate was written.
+fn write_claim(
+    out: &mut String,
+    path: &std::path::Path,
+    sol: &penner::uniformization::hyperbolic::HyperbolicUniformization,
+    u: &[Rational],
+    cert: &penner::uniformization::hyperbolic_certificate::HyperbolicCertificate,
+    bits: u32,
+) -> Result<(), CliError> {
+    let Existence::Holds { radius, .. } = &cert.existence else {
+        out.push_str("no certificate written\n");
+        return Ok(());
+    };
+    let claim = to_claim(
+        &sol.mesh,
+        &sol.lengths,
+        &sol.targets,
+        u,
+        *radius,
+        cert.residual_norm2,
+        bits,
+    );
+    let text = serde_json::to_string_pretty(&claim).unwrap_or_default() + "\n";
+    let mut f = create_new(path)?;
+    f.write_all(text.as_bytes()).map_err(|e| CliError::Write {
+        path: path.to_path_buf(),
+        reason: e.to_string(),
+    })?;
+    let _ = writeln!(
+        out,
+        "certificate written to {} (re-check: penner certify {})",
+        path.display(),
+        path.display()
+    );
+    Ok(())
 }

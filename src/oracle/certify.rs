@@ -294,6 +294,7 @@ pub fn certify(claim: &Claim) -> Result<Answer, Unsupported> {
             crate::uniformization::sphere_claim::recheck(&claim.surface, c, claim.max_bits)
                 .map_err(|e| e.to_string()),
         )),
+        Assertion::HyperbolicUniformization(h) => Ok(super::certify_hyperbolic::answer(claim, h)),
         Assertion::CirclePacking { .. } | Assertion::CirclePattern { .. } => {
             super::certify_circles::answer(claim).ok_or(Unsupported(claim.assertion.kind()))
         }

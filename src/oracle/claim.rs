@@ -95,6 +95,11 @@ pub enum Assertion {
     /// `radius` of `u` whose flat disk is Delaunay with a convex boundary (notes §1.5.3
     /// Thm 9; re-check: `uniformization::sphere_claim`, B90, B76, B74).
     SphereUniformization(crate::uniformization::sphere_claim::SphereClaim),
+    /// `hyperbolic_uniformization`: an exact solution `u*` of `θ_hyp(u*) = Θ` (sinh
+    /// scaling, the surface's lengths read as hyperbolic lengths, its own triangulation)
+    /// exists within `radius` (sup norm) of the given `u`, and `‖Θ − θ_hyp(u)‖₂ ≤
+    /// residual_bound` (notes Thm 11; `uniformization::hyperbolic_claim`, B39).
+    HyperbolicUniformization(crate::uniformization::hyperbolic_claim::HyperbolicClaim),
     /// `circle_packing`: the circles (plane) or caps (sphere) realize the surface's
     /// triangulation as a tangency packing within `epsilon`: every edge's tangency defect
     /// is at most ε, every face's centres are positively oriented and every interior
@@ -133,6 +138,7 @@ impl Assertion {
             Assertion::Lobachevsky { .. } => "lobachevsky",
             Assertion::Uniformization(_) => "uniformization",
             Assertion::SphereUniformization(_) => "sphere_uniformization",
+            Assertion::HyperbolicUniformization(_) => "hyperbolic_uniformization",
             Assertion::CirclePacking { .. } => "circle_packing",
             Assertion::CirclePattern { .. } => "circle_pattern",
         }
@@ -216,7 +222,7 @@ const COMMON_FIELDS: [&str; 5] = ["penner_claim", "id", "kind", "surface", "max_
 
 /// The claim kinds and the fields each may carry besides [`COMMON_FIELDS`]
 /// (`schema/claim-v1.schema.json`).
-const KIND_FIELDS: [(&str, &[&str]); 11] = [
+const KIND_FIELDS: [(&str, &[&str]); 12] = [
     ("intrinsic_delaunay", &[]),
     ("delaunay_flip", &["flips", "result", "epsilon"]),
     ("cone_angles", &["angles", "epsilon"]),
@@ -246,6 +252,10 @@ const KIND_FIELDS: [(&str, &[&str]); 11] = [
             "final_faces",
             "residual_bound",
         ],
+    ),
+    (
+        "hyperbolic_uniformization",
+        &["targets", "u", "radius", "residual_bound"],
     ),
     ("circle_packing", &["centres", "radii", "caps", "epsilon"]),
     (
@@ -385,7 +395,7 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
     let kind = v
         .get("kind")
         .and_then(Value::as_str)
-        .ok_or_else(|| err("kind: required, one of intrinsic_delaunay, delaunay_flip, cone_angles, cotan_laplacian, conformal_equivalence, energy, lobachevsky, uniformization, sphere_uniformization, circle_packing, circle_pattern"))?;
+        .ok_or_else(|| err("kind: required, one of intrinsic_delaunay, delaunay_flip, cone_angles, cotan_laplacian, conformal_equivalence, energy, lobachevsky, uniformization, sphere_uniformization, hyperbolic_uniformization, circle_packing, circle_pattern"))?;
     let Some((_, own)) = KIND_FIELDS.iter().find(|(k, _)| *k == kind) else {
         return Err(err(format!("kind: unknown claim kind {kind:?}")));
     };
@@ -446,6 +456,9 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
         }
         "uniformization" => uniformization_claim(v, &surface)?,
         "sphere_uniformization" => sphere_claim(v, &surface)?,
+        "hyperbolic_uniformization" => {
+            super::claim_hyperbolic::parse(v, &surface).map(Assertion::HyperbolicUniformization)?
+        }
         "energy" => parse_energy(v, surface.mesh.n_vertices())?,
         other => return Err(err(format!("kind: unknown claim kind {other:?}"))),
     };

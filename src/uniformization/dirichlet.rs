@@ -16,6 +16,7 @@ use super::components::Components;
 use super::error::UniformizeError;
 use super::hessian::{grounded_hessian, CholeskyCache};
 use super::newton::{evaluate, Evaluation, StepReport, Stop, UniformizeOptions};
+use super::newton_driver::{drive, DriverStop, Limits, NewtonSystem, Over};
 use crate::mesh::{Edge, Mesh};
 use crate::scalar::exp_length::MAX_LOG_SCALE;
 
@@ -88,11 +89,7 @@ pub fn free_index(fixed: &[Option<f64>]) -> (Vec<usize>, Vec<Option<usize>>) {
 }
 
 fn max_free(grad: &[f64], free: &[usize]) -> f64 {
-    free.iter().fold(0.0, |m, &v| m.max(grad[v].abs()))
-}
-
-fn norm2_free(grad: &[f64], free: &[usize]) -> f64 {
-    free.iter().map(|&v| grad[v] * grad[v]).sum::<f64>().sqrt()
+    Over(Some(free)).max_abs(grad)
 }
 
 fn validate(
@@ -195,12 +192,12 @@ pub fn solve_dirichlet(
 ) -> Result<DirichletSolution, DirichletError> {
     validate(mesh, base, fixed, theta_target, start)?;
     let (free, free_idx) = free_index(fixed);
-    let mut u: Vec<f64> = start
+    let u: Vec<f64> = start
         .iter()
         .zip(fixed)
         .map(|(s, w)| w.unwrap_or(*s))
         .collect();
-    let mut steps = Vec::new();
+    let steps = Vec::new();
     let mut sequence = Vec::new();
     let finish = |ev: Evaluation, u, steps, sequence, stop| DirichletSolution {
         residual_max: max_free(&ev.grad, &free),
@@ -212,7 +209,7 @@ pub fn solve_dirichlet(
         steps,
         stop,
     };
-    let mut ev = match evaluate(mesh, base, &u, theta_target) {
+    let ev = match evaluate(mesh, base, &u, theta_target) {
         Ok(ev) => ev,
         Err(reason) => {
             let ev = Evaluation {
@@ -227,68 +224,73 @@ pub fn solve_dirichlet(
         }
     };
     sequence.extend_from_slice(&ev.flips);
-    let mut cache = CholeskyCache::default();
-    for iteration in 1..=opts.max_iterations + 1 {
-        if max_free(&ev.grad, &free) <= opts.tolerance {
-            return Ok(finish(ev, u, steps, sequence, Stop::Converged));
-        }
-        if iteration > opts.max_iterations {
-            break;
-        }
-        let h = grounded_hessian(&ev.mesh, &ev.lengths, &free_idx);
-        let Some(factor) = cache.factor(&h) else {
-            let reason = "the Hessian on the free vertices is not numerically positive definite";
-            return Ok(finish(
-                ev,
-                u,
-                steps,
-                sequence,
-                Stop::DegenerateStep(reason.into()),
-            ));
+    let mut sys = Fixed {
+        theta_target,
+        free: &free,
+        free_idx: &free_idx,
+        cache: CholeskyCache::default(),
+        sequence,
+    };
+    let limits = Limits {
+        tolerance: opts.tolerance,
+        max_iterations: opts.max_iterations,
+        max_halvings: opts.max_halvings,
+    };
+    let run = drive(&mut sys, Over(Some(&free)), u, ev, limits, &mut |_| {});
+    let stop = match run.stop {
+        DriverStop::Converged => Stop::Converged,
+        DriverStop::IterationCap => Stop::IterationCap,
+        DriverStop::Factor(reason) => Stop::DegenerateStep(reason),
+        DriverStop::LineSearch(last) => Stop::DegenerateStep(format!(
+            "line search: {} after {} halvings at max residual {:e}",
+            last.unwrap_or_else(|| "no decrease of |∇E|".into()),
+            opts.max_halvings,
+            max_free(&run.eval.grad, &free)
+        )),
+    };
+    Ok(finish(run.eval, run.u, run.steps, sys.sequence, stop))
+}
+
+/// The Dirichlet Newton system for [`drive`]: evaluation with Ptolemy flips, the Hessian
+/// on the free vertices, the flips recorded.
+struct Fixed<'a> {
+    theta_target: &'a [f64],
+    free: &'a [usize],
+    free_idx: &'a [Option<usize>],
+    cache: CholeskyCache,
+    sequence: Vec<Edge>,
+}
+
+impl NewtonSystem for Fixed<'_> {
+    type Eval = Evaluation;
+    type Fault = String;
+
+    fn gradient(ev: &Evaluation) -> &[f64] {
+        &ev.grad
+    }
+
+    fn evaluate(&mut self, at: &Evaluation, u: &[f64]) -> Result<Evaluation, String> {
+        evaluate(&at.mesh, &at.base, u, self.theta_target)
+    }
+
+    fn direction(&mut self, ev: &Evaluation) -> Result<Vec<f64>, String> {
+        let h = grounded_hessian(&ev.mesh, &ev.lengths, self.free_idx);
+        let Some(factor) = self.cache.factor(&h) else {
+            return Err(
+                "the Hessian on the free vertices is not numerically positive definite".into(),
+            );
         };
-        let rhs: Vec<f64> = free.iter().map(|&v| -ev.grad[v]).collect();
+        let rhs: Vec<f64> = self.free.iter().map(|&v| -ev.grad[v]).collect();
         let x = factor.solve(&rhs);
-        let mut d = vec![0.0; u.len()];
-        for (k, &v) in free.iter().enumerate() {
+        let mut d = vec![0.0; ev.grad.len()];
+        for (k, &v) in self.free.iter().enumerate() {
             d[v] = x[k];
         }
-        let n0 = norm2_free(&ev.grad, &free);
-        let mut t = 1.0;
-        let mut accepted = None;
-        let mut last_reason = String::from("no decrease of |∇E|");
-        for halvings in 0..=opts.max_halvings {
-            let trial: Vec<f64> = u.iter().zip(&d).map(|(a, b)| a + t * b).collect();
-            match evaluate(&ev.mesh, &ev.base, &trial, theta_target) {
-                Ok(new) => {
-                    let n1 = norm2_free(&new.grad, &free);
-                    let slope: f64 = free.iter().map(|&v| new.grad[v] * d[v]).sum();
-                    if n1 < n0 && (slope <= 0.0 || n1 <= 0.5 * n0) {
-                        accepted = Some((trial, new, halvings));
-                        break;
-                    }
-                }
-                Err(reason) => last_reason = reason,
-            }
-            t *= 0.5;
-        }
-        let Some((trial, new, halvings)) = accepted else {
-            let reason = format!(
-                "line search: {last_reason} after {} halvings at max residual {:e}",
-                opts.max_halvings,
-                max_free(&ev.grad, &free)
-            );
-            return Ok(finish(ev, u, steps, sequence, Stop::DegenerateStep(reason)));
-        };
-        u = trial;
-        sequence.extend_from_slice(&new.flips);
-        steps.push(StepReport {
-            iteration,
-            residual_max: max_free(&new.grad, &free),
-            step: t,
-            halvings,
-            flips: new.flips.len(),
-        });
-        ev = new;
+        Ok(d)
     }
-    Ok(finish(ev, u, steps, sequence, Stop::IterationCap))
+
+    fn accept(&mut self, new: &Evaluation) -> usize {
+        self.sequence.extend_from_slice(&new.flips);
+        new.flips.len()
+    }
 }

@@ -25,6 +25,7 @@ use super::error::UniformizeError;
 use super::hessian::{CholeskyCache, GroundedHessian};
 use super::hyperbolic_kernel::{face_terms, log_length};
 use super::newton::StepReport;
+use super::newton_driver::{drive, DriverStop, Limits, NewtonSystem, Over};
 use super::targets::Targets;
 use crate::mesh::Mesh;
 use faer::sparse::{SparseColMat, Triplet};
@@ -180,6 +181,12 @@ pub fn validate_hyperbolic(
         }
         .into());
     }
+    validate_hyperbolic_targets(mesh, targets)?;
+    hyperbolic_gauss_bonnet(mesh, targets)
+}
+
+/// One target per vertex of `mesh`, each `Θ_i > 0` (bad input otherwise).
+pub fn validate_hyperbolic_targets(mesh: &Mesh, targets: &Targets) -> Result<(), HyperbolicError> {
     if targets.len() != mesh.n_vertices() {
         return Err(UniformizeError::TargetCount {
             expected: mesh.n_vertices(),
@@ -196,6 +203,14 @@ pub fn validate_hyperbolic(
             .into());
         }
     }
+    Ok(())
+}
+
+/// Hyperbolic Gauss–Bonnet leaves a positive area: `Σ_{i∈C}(2π − Θ_i) > 2πχ(C)` on every
+/// component `C`, decided exactly on `Θ_i/π` (B38). When it fails no hyperbolic cone metric
+/// on `mesh` has the angles `Θ` ([`HyperbolicError::NoArea`]): the area `Σ_t(π − Σα)` of
+/// strict hyperbolic triangles is positive. `targets` must have one entry per vertex.
+pub fn hyperbolic_gauss_bonnet(mesh: &Mesh, targets: &Targets) -> Result<(), HyperbolicError> {
     let comps = Components::of(mesh);
     for (c, &root) in comps.roots.iter().enumerate() {
         let mut sum = Rational::new();
@@ -320,19 +335,10 @@ fn evaluate(mesh: &Mesh, lambda0: &[f64], u: &[f64], theta: &[f64]) -> Result<Ev
     Ok(Evaluation { grad, weight, t2 })
 }
 
-fn norm2(x: &[f64]) -> f64 {
-    x.iter().map(|a| a * a).sum::<f64>().sqrt()
-}
-
-fn max_abs(x: &[f64]) -> f64 {
-    x.iter().fold(0.0, |m, a| m.max(a.abs()))
-}
-
 /// Solve `θ_hyp(u) = Θ` on the fixed triangulation `mesh` with hyperbolic edge lengths
 /// `lengths` (module doc: convention, line search, no flips). Bad input is a typed error;
 /// a solve that does not reach `opts.tolerance` returns `Ok` with the reason
 /// ([`HyperbolicStop`]), never a panic. proof: B38
-#[allow(clippy::too_many_lines)] // one Newton loop with its line search, read top to bottom
 pub fn uniformize_hyperbolic(
     mesh: &Mesh,
     lengths: &[f64],
@@ -340,7 +346,7 @@ pub fn uniformize_hyperbolic(
     opts: &HyperbolicOptions,
 ) -> Result<HyperbolicUniformization, HyperbolicError> {
     validate_hyperbolic(mesh, lengths, targets)?;
-    let mut u = match &opts.start {
+    let u = match &opts.start {
         None => vec![0.0; mesh.n_vertices()],
         Some(s) if s.len() != mesh.n_vertices() => {
             return Err(UniformizeError::TargetCount {
@@ -362,93 +368,80 @@ pub fn uniformize_hyperbolic(
     };
     let lambda0: Vec<f64> = lengths.iter().map(|&l| log_length(l)).collect();
     let theta = targets.radians_f64();
-    let mut ev = evaluate(mesh, &lambda0, &u, &theta)
+    let ev = evaluate(mesh, &lambda0, &u, &theta)
         .map_err(|face| HyperbolicError::NotATriangle { face })?;
-    let assembly = Assembly::new(mesh);
-    let mut cache = CholeskyCache::default();
-    let mut steps = Vec::new();
-    let finish =
-        |u: Vec<f64>, grad: &[f64], steps, stop, cache: &CholeskyCache| HyperbolicUniformization {
-            mesh: mesh.clone(),
-            lengths: lengths.to_vec(),
-            u,
-            targets: targets.clone(),
-            steps,
-            stop,
-            residual_max: max_abs(grad),
-            factorizations: (cache.symbolic_count, cache.numeric_count),
-        };
-    for iteration in 1..=opts.max_iterations + 1 {
-        if max_abs(&ev.grad) <= opts.tolerance {
-            return Ok(finish(
-                u,
-                &ev.grad,
-                steps,
-                HyperbolicStop::Converged,
-                &cache,
-            ));
-        }
-        if iteration > opts.max_iterations {
-            break;
-        }
-        let factor = assembly
-            .matrix(&ev.weight, &ev.t2)
-            .and_then(|h| cache.factor(&h));
-        let Some(factor) = factor else {
-            let stop = HyperbolicStop::DegenerateStep(
-                "the hyperbolic Hessian is not numerically positive definite".into(),
-            );
-            return Ok(finish(u, &ev.grad, steps, stop, &cache));
-        };
-        let minus_g: Vec<f64> = ev.grad.iter().map(|g| -g).collect();
-        let d = factor.solve(&minus_g);
-        let n0 = norm2(&ev.grad);
-        let mut t = 1.0;
-        let mut accepted = None;
-        let mut degenerate = None;
-        for halvings in 0..=opts.max_halvings {
-            let trial: Vec<f64> = u.iter().zip(&d).map(|(a, b)| a + t * b).collect();
-            match evaluate(mesh, &lambda0, &trial, &theta) {
-                Ok(new) => {
-                    let n1 = norm2(&new.grad);
-                    let slope: f64 = new.grad.iter().zip(&d).map(|(g, x)| g * x).sum();
-                    if n1 < n0 && (slope <= 0.0 || n1 <= 0.5 * n0) {
-                        accepted = Some((trial, new, halvings));
-                        break;
-                    }
-                }
-                Err(face) => degenerate = Some(face),
-            }
-            t *= 0.5;
-        }
-        let Some((trial, new, halvings)) = accepted else {
-            let stop = match degenerate {
-                Some(face) => HyperbolicStop::NeedsFlips { face },
-                None => HyperbolicStop::DegenerateStep(format!(
-                    "line search: no decrease of |∇E| after {} halvings at max residual {:e}",
-                    opts.max_halvings,
-                    max_abs(&ev.grad)
-                )),
-            };
-            return Ok(finish(u, &ev.grad, steps, stop, &cache));
-        };
-        u = trial;
-        steps.push(StepReport {
-            iteration,
-            residual_max: max_abs(&new.grad),
-            step: t,
-            halvings,
-            flips: 0,
-        });
-        ev = new;
+    let mut sys = Hyperbolic {
+        mesh,
+        lambda0: &lambda0,
+        theta: &theta,
+        assembly: Assembly::new(mesh),
+        cache: CholeskyCache::default(),
+    };
+    let limits = Limits {
+        tolerance: opts.tolerance,
+        max_iterations: opts.max_iterations,
+        max_halvings: opts.max_halvings,
+    };
+    let run = drive(&mut sys, Over::ALL, u, ev, limits, &mut |_| {});
+    let residual_max = Over::ALL.max_abs(&run.eval.grad);
+    let stop = match run.stop {
+        DriverStop::Converged => HyperbolicStop::Converged,
+        DriverStop::IterationCap => HyperbolicStop::IterationCap,
+        DriverStop::Factor(reason) => HyperbolicStop::DegenerateStep(reason),
+        DriverStop::LineSearch(Some(face)) => HyperbolicStop::NeedsFlips { face },
+        DriverStop::LineSearch(None) => HyperbolicStop::DegenerateStep(format!(
+            "line search: no decrease of |∇E| after {} halvings at max residual {residual_max:e}",
+            opts.max_halvings,
+        )),
+    };
+    Ok(HyperbolicUniformization {
+        mesh: mesh.clone(),
+        lengths: lengths.to_vec(),
+        u: run.u,
+        targets: targets.clone(),
+        steps: run.steps,
+        stop,
+        residual_max,
+        factorizations: (sys.cache.symbolic_count, sys.cache.numeric_count),
+    })
+}
+
+/// The hyperbolic Newton system for [`drive`]: the fixed triangulation, the Hessian of
+/// B38 assembled on its pattern and factored (symbolic factorization kept); an evaluation
+/// fault is a face that is not a strict triangle.
+struct Hyperbolic<'a> {
+    mesh: &'a Mesh,
+    lambda0: &'a [f64],
+    theta: &'a [f64],
+    assembly: Assembly,
+    cache: CholeskyCache,
+}
+
+impl NewtonSystem for Hyperbolic<'_> {
+    type Eval = Evaluation;
+    type Fault = u32;
+
+    fn gradient(ev: &Evaluation) -> &[f64] {
+        &ev.grad
     }
-    Ok(finish(
-        u,
-        &ev.grad,
-        steps,
-        HyperbolicStop::IterationCap,
-        &cache,
-    ))
+
+    fn evaluate(&mut self, _: &Evaluation, u: &[f64]) -> Result<Evaluation, u32> {
+        evaluate(self.mesh, self.lambda0, u, self.theta)
+    }
+
+    fn direction(&mut self, ev: &Evaluation) -> Result<Vec<f64>, String> {
+        let factor = self
+            .assembly
+            .matrix(&ev.weight, &ev.t2)
+            .and_then(|h| self.cache.factor(&h))
+            .ok_or("the hyperbolic Hessian is not numerically positive definite")?;
+        let minus_g: Vec<f64> = ev.grad.iter().map(|g| -g).collect();
+        Ok(factor.solve(&minus_g))
+    }
+
+    fn accept(&mut self, _: &Evaluation) -> usize {
+        0
+    }
 }
 
 /// The binary64 Hessian of `E_hyp` at `u` as a dense matrix (B38; for tests and small

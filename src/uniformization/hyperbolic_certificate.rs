@@ -13,7 +13,9 @@
 use super::certificate::to_f64_up;
 use super::hyperbolic::{HyperbolicError, HyperbolicUniformization};
 use super::hyperbolic_kernel::{face_terms_generic, log_length};
+use super::newton_driver::{refine_loop, Over};
 use super::refine::Refinement;
+use super::targets::Targets;
 use crate::mesh::Mesh;
 use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
 use crate::variational::hyperbolic::{cone_angles, hyperbolic_log_length, length_from_log};
@@ -62,49 +64,21 @@ pub fn refine_hyperbolic<T: Real>(
         })?;
     let lengths: Vec<T> = sol.lengths.iter().map(|&x| T::from_f64(x, ctx)).collect();
     let theta_target = targets_in::<T>(sol, ctx);
-    let mut u: Vec<T> = sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect();
-    let mut history = Vec::new();
-    let mut stalls = 0;
-    let mut iteration = 0;
-    loop {
-        let theta = cone_angles(mesh, &scaled_in(mesh, &lengths, &u), false);
-        let r: Vec<T> = theta_target
+    let u: Vec<T> = sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect();
+    let residual = |u: &[T]| -> Result<Vec<T>, std::convert::Infallible> {
+        let theta = cone_angles(mesh, &scaled_in(mesh, &lengths, u), false);
+        Ok(theta_target
             .iter()
             .zip(&theta)
             .map(|(t, th)| t.clone() - th)
-            .collect();
-        let rf: Vec<f64> = r.iter().map(Real::approx_f64).collect();
-        let rmax = rf.iter().fold(0.0, |m: f64, x| m.max(x.abs()));
-        if !rmax.is_finite() {
-            history.push(f64::INFINITY);
-            return Ok(Refinement {
-                u,
-                residual: r,
-                history,
-                reached: false,
-            });
-        }
-        if let Some(&prev) = history.last() {
-            stalls = if rmax > 0.5 * prev { stalls + 1 } else { 0 };
-        }
-        history.push(rmax);
-        let reached = rmax <= tolerance;
-        if reached || iteration >= max_iterations || stalls >= 2 {
-            return Ok(Refinement {
-                u,
-                residual: r,
-                history,
-                reached,
-            });
-        }
-        // H d = −∇E = −(Θ − θ).
-        let minus: Vec<f64> = rf.iter().map(|x| -x).collect();
-        let d = factor.solve(&minus);
-        for (ui, di) in u.iter_mut().zip(&d) {
-            *ui += &T::from_f64(*di, ctx);
-        }
-        iteration += 1;
-    }
+            .collect())
+    };
+    // H d = −∇E = −(Θ − θ).
+    let correction = |r: &[f64]| factor.solve(&r.iter().map(|x| -x).collect::<Vec<_>>());
+    // A residual that stops being finite ends the refinement unreached (history `+∞`).
+    let limits = (tolerance, max_iterations);
+    let Ok((refinement, _)) = refine_loop(u, ctx, limits, Over::ALL, residual, correction);
+    Ok(refinement)
 }
 
 /// The first face that is not a strict triangle at `u` (`u32::MAX` if none).
@@ -152,12 +126,13 @@ pub struct HyperbolicCertificate {
     pub existence: Existence,
 }
 
-/// `λ̃` over intervals of `u`.
-fn log_lengths_i(mesh: &Mesh, lengths: &[f64], u: &[I], prec: Precision) -> Vec<I> {
+/// `λ̃_ij = 2 log sinh(ℓ_ij/2) + u_i + u_j` over enclosed input lengths `ℓ` and intervals
+/// of `u`.
+fn log_lengths_i(mesh: &Mesh, lengths: &[I], u: &[I]) -> Vec<I> {
     mesh.edges()
         .map(|e| {
             let h = e.halfedge();
-            hyperbolic_log_length(&I::from_f64(lengths[e.idx()], prec))
+            hyperbolic_log_length(&lengths[e.idx()])
                 + &u[mesh.tail(h).idx()]
                 + &u[mesh.tip(h).idx()]
         })
@@ -185,6 +160,74 @@ fn to_f64_down(x: &Mpfr) -> f64 {
     x.as_float().to_f64_round(rug::float::Round::Down)
 }
 
+/// A lower bound of `min |x|` over the interval (0 when it contains 0).
+fn mig_down(x: &I) -> f64 {
+    match x.sign() {
+        Some(Sign::Positive) => to_f64_down(x.lo()),
+        Some(Sign::Negative) => -to_f64_up(x.hi()),
+        _ => 0.0,
+    }
+}
+
+/// The input lengths (binary64, taken exactly) as point intervals.
+fn lengths_i(lengths: &[f64], prec: Precision) -> Vec<I> {
+    lengths.iter().map(|&x| I::from_f64(x, prec)).collect()
+}
+
+/// `Θ − θ_hyp` enclosed over `u` (points or a box) for the hyperbolic input lengths
+/// `lengths` (enclosed), by the inclusion property (B20): every value of the residual at a
+/// point of the box lies in the returned intervals. `Err` with the reason when a face is not
+/// certified a strict triangle on all of `u` or an angle sum is not enclosed. proof: B39
+pub fn enclosed_residual(
+    mesh: &Mesh,
+    lengths: &[I],
+    targets: &Targets,
+    u: &[I],
+    prec: Precision,
+) -> Result<Vec<I>, String> {
+    let l: Vec<I> = log_lengths_i(mesh, lengths, u)
+        .iter()
+        .map(length_from_log)
+        .collect();
+    strict_triangles(mesh, &l).map_err(|f| format!("face f{f} not certified a strict triangle"))?;
+    let pi = I::pi(prec);
+    let theta = cone_angles(mesh, &l, false);
+    let mut residual = Vec::with_capacity(theta.len());
+    for (v, th) in theta.iter().enumerate() {
+        let g = I::from_rational(&targets.over_pi()[v], prec) * &pi - th;
+        if !g.is_valid() {
+            return Err(format!("angle sum at v{v} not enclosed"));
+        }
+        residual.push(g);
+    }
+    Ok(residual)
+}
+
+/// Bounds `(lower, upper)` of `‖g‖₂` over the enclosures `g` (directed rounding; the
+/// lower bound from `min |g_i|`, 0 where `g_i` contains 0).
+pub fn norm2_bounds(g: &[I], prec: Precision) -> (f64, f64) {
+    let mut lo = I::from_f64(0.0, prec);
+    let mut hi = I::from_f64(0.0, prec);
+    for x in g {
+        let a = I::from_f64(mig_down(x), prec);
+        lo += &(a.clone() * &a);
+        let b = I::from_f64(abs_up(x), prec);
+        hi += &(b.clone() * &b);
+    }
+    (to_f64_down(lo.sqrt().lo()), to_f64_up(hi.sqrt().hi()))
+}
+
+/// The box `{v : |v_i − u_i| ≤ r}` (outward rounded).
+pub fn box_around(u: &[Rational], r: &Rational, prec: Precision) -> Vec<I> {
+    u.iter()
+        .map(|q| {
+            let lo = I::from_rational(&Rational::from(q - r), prec);
+            let hi = I::from_rational(&Rational::from(q + r), prec);
+            I::new(lo.lo().clone(), hi.hi().clone())
+        })
+        .collect()
+}
+
 /// Enclose `Θ − θ_hyp(u)` at the exact `u` (`bits` of MPFR intervals) and try an existence
 /// radius (module doc, B39). Bad input is a typed error; anything not certified is
 /// reported in the result, never as a failure.
@@ -204,42 +247,24 @@ pub fn certify_hyperbolic(
         .into());
     }
     let prec = Precision::new(u64::from(bits)).map_err(|_| HyperbolicError::Bits(bits))?;
-    let undecided = |reason: String| HyperbolicCertificate {
-        residual: Vec::new(),
-        residual_max: f64::INFINITY,
-        residual_norm2: f64::INFINITY,
-        existence: Existence::Undecided { reason },
-    };
+    let lengths = lengths_i(&sol.lengths, prec);
     let point: Vec<I> = u.iter().map(|q| I::from_rational(q, prec)).collect();
-    let lp: Vec<I> = log_lengths_i(mesh, &sol.lengths, &point, prec)
-        .iter()
-        .map(length_from_log)
-        .collect();
-    if let Err(f) = strict_triangles(mesh, &lp) {
-        return Ok(undecided(format!(
-            "face f{f} not certified a strict triangle at u"
-        )));
-    }
-    let pi = I::pi(prec);
-    let theta = cone_angles(mesh, &lp, false);
-    let mut residual = Vec::with_capacity(n);
-    for (v, th) in theta.iter().enumerate() {
-        let g = I::from_rational(&sol.targets.over_pi()[v], prec) * &pi - th;
-        if !g.is_valid() {
-            return Ok(undecided(format!("angle sum at v{v} not enclosed")));
+    let residual = match enclosed_residual(mesh, &lengths, &sol.targets, &point, prec) {
+        Ok(r) => r,
+        Err(reason) => {
+            return Ok(HyperbolicCertificate {
+                residual: Vec::new(),
+                residual_max: f64::INFINITY,
+                residual_norm2: f64::INFINITY,
+                existence: Existence::Undecided {
+                    reason: format!("{reason} at u"),
+                },
+            })
         }
-        residual.push(g);
-    }
-    // ‖g‖₂ from the upper ends of |g_i| (a product g·g of an interval around 0 would
-    // have a negative lower end).
-    let mut sq = I::from_f64(0.0, prec);
-    for g in &residual {
-        let a = I::from_f64(abs_up(g), prec);
-        sq += &(a.clone() * &a);
-    }
-    let residual_norm2 = to_f64_up(sq.sqrt().hi());
+    };
+    let (_, residual_norm2) = norm2_bounds(&residual, prec);
     let residual_max = residual.iter().map(abs_up).fold(0.0, f64::max);
-    let existence = existence(sol, u, prec, residual_norm2);
+    let existence = existence(sol, &lengths, u, prec, residual_norm2);
     Ok(HyperbolicCertificate {
         residual,
         residual_max,
@@ -248,43 +273,61 @@ pub fn certify_hyperbolic(
     })
 }
 
-/// The existence radius of B39 (module doc).
+/// The existence radius of B39 (module doc): the box radius from the binary64 Gershgorin
+/// estimate at `u`, then [`existence_on_box`].
 fn existence(
     sol: &HyperbolicUniformization,
+    lengths: &[I],
     u: &[Rational],
     prec: Precision,
     norm2: f64,
 ) -> Existence {
-    let und = |reason: String| Existence::Undecided { reason };
     let mesh = &sol.mesh;
     let uf: Vec<f64> = u.iter().map(Rational::to_f64).collect();
     let Some(mu_estimate) = super::hyperbolic::gershgorin_estimate(mesh, &sol.lengths, &uf) else {
-        return und("a face is not a triangle at u".into());
+        return Existence::Undecided {
+            reason: "a face is not a triangle at u".into(),
+        };
     };
     if mu_estimate.is_nan() || mu_estimate <= 0.0 || !norm2.is_finite() {
-        return und(format!(
-            "the Hessian is not diagonally dominant at u (Gershgorin bound {mu_estimate:e})"
-        ));
+        return Existence::Undecided {
+            reason: format!(
+                "the Hessian is not diagonally dominant at u (Gershgorin bound {mu_estimate:e})"
+            ),
+        };
     }
     // The box radius: twice the distance the estimate predicts, at least 2⁻⁽ᵇⁱᵗˢ⁻⁸⁾.
     let floor = 2f64.powi(-(prec.bits() as i32 - 8));
     let radius = (2.0 * norm2 / mu_estimate).max(floor);
     let Some(r) = Rational::from_f64(radius) else {
-        return und(format!("box radius {radius:e} not finite"));
+        return Existence::Undecided {
+            reason: format!("box radius {radius:e} not finite"),
+        };
     };
-    let boxed: Vec<I> = u
-        .iter()
-        .map(|q| {
-            let lo = I::from_rational(&Rational::from(q - &r), prec);
-            let hi = I::from_rational(&Rational::from(q + &r), prec);
-            I::new(lo.lo().clone(), hi.hi().clone())
-        })
-        .collect();
-    let lam = log_lengths_i(mesh, &sol.lengths, &boxed, prec);
+    existence_on_box(mesh, lengths, u, &r, norm2, prec)
+}
+
+/// B39 on the box of sup-norm radius `radius` around the exact `u`, with `norm2 ≥
+/// ‖Θ − θ_hyp(u)‖₂`: every face certified a strict triangle on the box, the interval
+/// Hessian's Gershgorin bound `μ > 0` on the box, and `norm2/μ ≤ radius` (compared
+/// exactly). Then an exact solution lies within `norm2/μ` (2-norm, so also sup norm) of
+/// `u`. Anything not certified is [`Existence::Undecided`] with the reason. proof: B39
+pub fn existence_on_box(
+    mesh: &Mesh,
+    lengths: &[I],
+    u: &[Rational],
+    radius: &Rational,
+    norm2: f64,
+    prec: Precision,
+) -> Existence {
+    let und = |reason: String| Existence::Undecided { reason };
+    let radius_f = radius.to_f64();
+    let boxed = box_around(u, radius, prec);
+    let lam = log_lengths_i(mesh, lengths, &boxed);
     let lb: Vec<I> = lam.iter().map(length_from_log).collect();
     if let Err(f) = strict_triangles(mesh, &lb) {
         return und(format!(
-            "face f{f} not certified a strict triangle on the box of radius {radius:e}"
+            "face f{f} not certified a strict triangle on the box of radius {radius_f:e}"
         ));
     }
     let n = mesh.n_vertices();
@@ -336,15 +379,16 @@ fn existence(
         let q = I::from_f64(norm2, prec) / &I::from_f64(mu, prec);
         to_f64_up(q.hi())
     };
-    if distance <= radius {
+    let within = Rational::from_f64(distance).is_some_and(|d| d <= *radius);
+    if within {
         Existence::Holds {
             distance,
             mu,
-            radius,
+            radius: radius_f,
         }
     } else {
         und(format!(
-            "‖Θ − θ(u)‖₂/μ = {distance:e} exceeds the box radius {radius:e}"
+            "‖Θ − θ(u)‖₂/μ = {distance:e} exceeds the box radius {radius_f:e}"
         ))
     }
 }

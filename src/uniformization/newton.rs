@@ -18,6 +18,7 @@
 use super::components::Components;
 use super::error::UniformizeError;
 use super::hessian::{CholeskyCache, GroundedPattern};
+use super::newton_driver::{drive, DriverStop, Limits, NewtonSystem, Over};
 use super::scaling::scaled_fast;
 use super::targets::Targets;
 use crate::algorithms::flip_scaled::flip_to_delaunay_exp;
@@ -198,12 +199,8 @@ pub(crate) fn evaluate(
     })
 }
 
-fn norm2(x: &[f64]) -> f64 {
-    x.iter().map(|a| a * a).sum::<f64>().sqrt()
-}
-
 fn max_abs(x: &[f64]) -> f64 {
-    x.iter().fold(0.0, |m, a| m.max(a.abs()))
+    Over::ALL.max_abs(x)
 }
 
 /// Check the inputs shared by the solver and the certificate.
@@ -250,8 +247,9 @@ pub fn uniformize(
     uniformize_with_progress(mesh, lengths, targets, opts, &mut |_| {})
 }
 
-/// [`uniformize`], calling `progress` after every accepted step.
-#[allow(clippy::too_many_lines)] // one Newton loop with its line search, read top to bottom
+/// [`uniformize`], calling `progress` after every accepted step (the Newton loop and line
+/// search of [`super::newton_driver`]).
+#[allow(clippy::too_many_lines)] // validation, T₀ by Euclidean flips, the driver, the stop
 pub fn uniformize_with_progress(
     mesh: &Mesh,
     lengths: &[f64],
@@ -260,7 +258,7 @@ pub fn uniformize_with_progress(
     progress: &mut dyn FnMut(&StepReport),
 ) -> Result<Uniformization, UniformizeError> {
     validate_input(mesh, lengths, targets)?;
-    let mut u = match &opts.start {
+    let u = match &opts.start {
         None => vec![0.0; mesh.n_vertices()],
         Some(s) => {
             if s.len() != mesh.n_vertices() {
@@ -295,8 +293,8 @@ pub fn uniformize_with_progress(
     let comps = Components::of(&t0);
     let (free, free_idx) = comps.free_index();
     let theta_target = targets.radians_f64();
-    let mut cache = CholeskyCache::default();
-    let mut steps = Vec::new();
+    let cache = CholeskyCache::default();
+    let steps = Vec::new();
     let mut sequence = Vec::new();
     let finish = |ev: Evaluation,
                   u: Vec<f64>,
@@ -317,7 +315,7 @@ pub fn uniformize_with_progress(
         stop,
         factorizations: (cache.symbolic_count, cache.numeric_count),
     };
-    let mut ev = match evaluate(&t0, &l0, &u, &theta_target) {
+    let ev = match evaluate(&t0, &l0, &u, &theta_target) {
         Ok(ev) => ev,
         Err(reason) => {
             // Degenerate at the start: report the unflipped T₀.
@@ -342,79 +340,82 @@ pub fn uniformize_with_progress(
     sequence.extend_from_slice(&ev.flips);
     // The Hessian's pattern on the current triangulation and its value buffer, rebuilt
     // only after flips (its symbolic factorization kept when the pattern is unchanged).
-    let mut pattern = GroundedPattern::new(&ev.mesh, &free_idx);
-    let mut values = Vec::new();
-    for iteration in 1..=opts.max_iterations + 1 {
-        if max_abs(&ev.grad) <= opts.tolerance {
-            return Ok(finish(ev, u, steps, sequence, Stop::Converged, &cache));
-        }
-        if iteration > opts.max_iterations {
-            break;
-        }
-        pattern.fill(&ev.cot, &mut values);
-        if !pattern.factor(&values, &mut cache) {
-            let reason = "the grounded Hessian is not numerically positive definite".to_string();
-            return Ok(finish(
-                ev,
-                u,
-                steps,
-                sequence,
-                Stop::DegenerateStep(reason),
-                &cache,
-            ));
-        }
-        let d = pattern.newton_direction(&ev.grad, &free);
-        let n0 = norm2(&ev.grad);
-        let mut t = 1.0;
-        let mut accepted = None;
-        let mut last_reason = String::from("no decrease of |∇E|");
-        for halvings in 0..=opts.max_halvings {
-            let trial: Vec<f64> = u.iter().zip(&d).map(|(a, b)| a + t * b).collect();
-            match evaluate(&ev.mesh, &ev.base, &trial, &theta_target) {
-                Ok(new) => {
-                    let n1 = norm2(&new.grad);
-                    let slope: f64 = new.grad.iter().zip(&d).map(|(g, x)| g * x).sum();
-                    if n1 < n0 && (slope <= 0.0 || n1 <= 0.5 * n0) {
-                        accepted = Some((trial, new, halvings));
-                        break;
-                    }
-                }
-                Err(reason) => last_reason = reason,
-            }
-            t *= 0.5;
-        }
-        let Some((trial, new, halvings)) = accepted else {
-            let reason = format!(
-                "line search: {last_reason} after {} halvings at max residual {:e}",
-                opts.max_halvings,
-                max_abs(&ev.grad)
-            );
-            return Ok(finish(
-                ev,
-                u,
-                steps,
-                sequence,
-                Stop::DegenerateStep(reason),
-                &cache,
-            ));
-        };
-        u = trial;
-        sequence.extend_from_slice(&new.flips);
-        if !new.flips.is_empty() {
-            let mut p = GroundedPattern::new(&new.mesh, &free_idx);
-            p.adopt_symbolic(&mut pattern);
-            pattern = p;
-        }
-        let report = StepReport {
-            iteration,
-            residual_max: max_abs(&new.grad),
-            step: t,
-            halvings,
-            flips: new.flips.len(),
-        };
-        progress(&report);
-        steps.push(report);
-        ev = new;
+    let mut sys = Ptolemy {
+        theta_target: &theta_target,
+        free: &free,
+        free_idx: &free_idx,
+        pattern: GroundedPattern::new(&ev.mesh, &free_idx),
+        values: Vec::new(),
+        cache,
+        sequence,
+    };
+    let limits = Limits {
+        tolerance: opts.tolerance,
+        max_iterations: opts.max_iterations,
+        max_halvings: opts.max_halvings,
+    };
+    let run = drive(&mut sys, Over::ALL, u, ev, limits, progress);
+    let stop = match run.stop {
+        DriverStop::Converged => Stop::Converged,
+        DriverStop::IterationCap => Stop::IterationCap,
+        DriverStop::Factor(reason) => Stop::DegenerateStep(reason),
+        DriverStop::LineSearch(last) => Stop::DegenerateStep(format!(
+            "line search: {} after {} halvings at max residual {:e}",
+            last.unwrap_or_else(|| "no decrease of |∇E|".into()),
+            opts.max_halvings,
+            max_abs(&run.eval.grad)
+        )),
+    };
+    Ok(finish(
+        run.eval,
+        run.u,
+        run.steps,
+        sys.sequence,
+        stop,
+        &sys.cache,
+    ))
+}
+
+/// The Euclidean Newton system for [`drive`]: evaluation with Ptolemy flips, the grounded
+/// Hessian on the current triangulation (pattern rebuilt after flips, its symbolic
+/// factorization adopted), the flips recorded.
+struct Ptolemy<'a> {
+    theta_target: &'a [f64],
+    free: &'a [usize],
+    free_idx: &'a [Option<usize>],
+    pattern: GroundedPattern,
+    values: Vec<f64>,
+    cache: CholeskyCache,
+    sequence: Vec<Edge>,
+}
+
+impl NewtonSystem for Ptolemy<'_> {
+    type Eval = Evaluation;
+    type Fault = String;
+
+    fn gradient(ev: &Evaluation) -> &[f64] {
+        &ev.grad
     }
-    Ok(finish(ev, u, steps, sequence, Stop::IterationCap, &cache))
+
+    fn evaluate(&mut self, at: &Evaluation, u: &[f64]) -> Result<Evaluation, String> {
+        evaluate(&at.mesh, &at.base, u, self.theta_target)
+    }
+
+    fn direction(&mut self, ev: &Evaluation) -> Result<Vec<f64>, String> {
+        self.pattern.fill(&ev.cot, &mut self.values);
+        if !self.pattern.factor(&self.values, &mut self.cache) {
+            return Err("the grounded Hessian is not numerically positive definite".into());
+        }
+        Ok(self.pattern.newton_direction(&ev.grad, self.free))
+    }
+
+    fn accept(&mut self, new: &Evaluation) -> usize {
+        self.sequence.extend_from_slice(&new.flips);
+        if !new.flips.is_empty() {
+            let mut p = GroundedPattern::new(&new.mesh, self.free_idx);
+            p.adopt_symbolic(&mut self.pattern);
+            self.pattern = p;
+        }
+        new.flips.len()
+    }
 }

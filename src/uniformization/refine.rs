@@ -16,6 +16,7 @@
 use super::components::Components;
 use super::hessian::{grounded_hessian, CholeskyCache};
 use super::newton::Uniformization;
+use super::newton_driver::{refine_loop, Over};
 use crate::algorithms::flips::flip_ptolemy;
 use crate::geometry::cone_angles::cone_angles;
 use crate::mesh::{Edge, Mesh};
@@ -282,7 +283,7 @@ pub struct Problem<'a, T> {
 /// order (proof: B69); otherwise the returned flips are empty.
 pub fn refine_problem<T: Real>(
     p: Problem<'_, T>,
-    mut u: Vec<T>,
+    u: Vec<T>,
     ctx: T::Ctx,
     tolerance: f64,
     max_iterations: usize,
@@ -304,47 +305,33 @@ pub fn refine_problem<T: Real>(
     let h = grounded_hessian(mesh, &lf, free_idx);
     let mut cache = CholeskyCache::default();
     let factor = cache.factor(&h).ok_or(RefineError::Hessian)?;
-    let mut history = Vec::new();
     let mut flips = Vec::new();
-    let mut stalls = 0;
-    let mut iteration = 0;
-    loop {
-        let mut l = scaled(mesh, base, &u);
+    let residual = |u: &[T]| -> Result<Vec<T>, RefineError> {
+        let mut l = scaled(mesh, base, u);
         if keep_delaunay {
-            flips.extend(flip_to_delaunay_at(mesh, base, &mut l, &u)?);
+            flips.extend(flip_to_delaunay_at(mesh, base, &mut l, u)?);
         }
         let theta = cone_angles(mesh, &l);
-        let r: Vec<T> = theta_target
+        Ok(theta_target
             .iter()
             .zip(&theta)
             .map(|(t, th)| t.clone() - th)
-            .collect();
-        let rf: Vec<f64> = r.iter().map(Real::approx_f64).collect();
-        if let Some(&vertex) = measured.iter().find(|&&v| !rf[v].is_finite()) {
-            return Err(RefineError::Undefined { vertex });
-        }
-        let rmax = measured.iter().fold(0.0, |m: f64, &v| m.max(rf[v].abs()));
-        if let Some(&prev) = history.last() {
-            stalls = if rmax > 0.5 * prev { stalls + 1 } else { 0 };
-        }
-        history.push(rmax);
-        let reached = rmax <= tolerance;
-        if reached || iteration >= max_iterations || stalls >= 2 {
-            let refinement = Refinement {
-                u,
-                residual: r,
-                history,
-                reached,
-            };
-            return Ok((refinement, flips));
-        }
-        // H d = −∇E = −(Θ − θ) on the free vertices: the Newton correction from the f64
-        // factor.
+            .collect())
+    };
+    // H d = −∇E = −(Θ − θ) on the free vertices: the Newton correction from the f64
+    // factor (zero at the vertices that keep their `u`).
+    let correction = |rf: &[f64]| {
         let rhs: Vec<f64> = free.iter().map(|&v| -rf[v]).collect();
-        let d = factor.solve(&rhs);
-        for (&v, di) in free.iter().zip(&d) {
-            u[v] += &T::from_f64(*di, ctx);
+        let mut d = vec![0.0; rf.len()];
+        for (&v, dv) in free.iter().zip(factor.solve(&rhs)) {
+            d[v] = dv;
         }
-        iteration += 1;
+        d
+    };
+    let limits = (tolerance, max_iterations);
+    let over = Over(Some(measured));
+    match refine_loop(u, ctx, limits, over, residual, correction)? {
+        (refinement, None) => Ok((refinement, flips)),
+        (_, Some(vertex)) => Err(RefineError::Undefined { vertex }),
     }
 }

@@ -13,6 +13,7 @@ mod circles_stopping;
 mod claims;
 mod claims_circles;
 mod claims_energy;
+mod claims_hyperbolic;
 mod claims_lobachevsky;
 mod cli;
 mod cli_controls;
