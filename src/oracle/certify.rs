@@ -137,12 +137,24 @@ pub(crate) fn summarize(
     } else {
         (ClaimVerdict::Holds, Vec::new())
     };
+    decided_answer(claim, verdict, b.bits, max_discrepancy, witnesses)
+}
+
+/// The answer to `claim` with `verdict` at `bits`: certified unless undecided, and the
+/// first witness as the counterexample of a refutation.
+pub(crate) fn decided_answer(
+    claim: &Claim,
+    verdict: ClaimVerdict,
+    bits: u32,
+    max_discrepancy: Option<f64>,
+    witnesses: Vec<Witness>,
+) -> Answer {
     Answer {
         id: claim.id.clone(),
         kind: claim.assertion.kind(),
         verdict,
         certified: verdict != ClaimVerdict::Undecided,
-        precision_bits: b.bits,
+        precision_bits: bits,
         max_discrepancy,
         counterexample: if verdict == ClaimVerdict::Refuted {
             witnesses.first().cloned()

@@ -1,7 +1,7 @@
 //! Answering `hyperbolic_uniformization` claims (protocol v1) by the from-scratch re-check
 //! of [`crate::uniformization::hyperbolic_claim::recheck`] (B39) at the claim's `max_bits`.
 
-use super::certify::{Answer, ClaimVerdict};
+use super::certify::{decided_answer, Answer, ClaimVerdict};
 use super::claim::Claim;
 use crate::theorems::Witness;
 use crate::uniformization::hyperbolic_claim::{recheck, HyperbolicClaim, HyperbolicVerdict};
@@ -40,18 +40,5 @@ pub fn answer(claim: &Claim, h: &HyperbolicClaim) -> Answer {
             vec![witness("certificate".into(), e.to_string(), f64::NAN)],
         ),
     };
-    Answer {
-        id: claim.id.clone(),
-        kind: claim.assertion.kind(),
-        verdict,
-        certified: verdict != ClaimVerdict::Undecided,
-        precision_bits: claim.max_bits,
-        max_discrepancy,
-        counterexample: if verdict == ClaimVerdict::Refuted {
-            witnesses.first().cloned()
-        } else {
-            None
-        },
-        witnesses,
-    }
+    decided_answer(claim, verdict, claim.max_bits, max_discrepancy, witnesses)
 }
