@@ -18,7 +18,9 @@ use super::refine::Refinement;
 use super::targets::Targets;
 use crate::mesh::Mesh;
 use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
-use crate::variational::hyperbolic::{cone_angles, hyperbolic_log_length, length_from_log};
+use crate::variational::hyperbolic::{
+    cone_angles, hyperbolic_log_length, length_from_log, scaled_lengths,
+};
 use rug::Rational;
 
 type I = Interval<Mpfr>;
@@ -30,19 +32,6 @@ fn targets_in<T: Real>(sol: &HyperbolicUniformization, ctx: T::Ctx) -> Vec<T> {
         .over_pi()
         .iter()
         .map(|q| T::from_rational(q, ctx) * &pi)
-        .collect()
-}
-
-/// The hyperbolic lengths of `mesh` at `u` in `T` (`ℓ` taken exactly from binary64).
-fn scaled_in<T: Real>(mesh: &Mesh, lengths: &[T], u: &[T]) -> Vec<T> {
-    mesh.edges()
-        .map(|e| {
-            let h = e.halfedge();
-            let lam = hyperbolic_log_length(&lengths[e.idx()])
-                + &u[mesh.tail(h).idx()]
-                + &u[mesh.tip(h).idx()];
-            length_from_log(&lam)
-        })
         .collect()
 }
 
@@ -66,7 +55,7 @@ pub fn refine_hyperbolic<T: Real>(
     let theta_target = targets_in::<T>(sol, ctx);
     let u: Vec<T> = sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect();
     let residual = |u: &[T]| -> Result<Vec<T>, std::convert::Infallible> {
-        let theta = cone_angles(mesh, &scaled_in(mesh, &lengths, u), false);
+        let theta = cone_angles(mesh, &scaled_lengths(mesh, &lengths, u), false);
         Ok(theta_target
             .iter()
             .zip(&theta)
