@@ -64,10 +64,12 @@ pub struct Source {
     pub text: String,
 }
 
-/// Whether `s` is an ID: `B` or `T` followed by exactly two digits.
+/// Whether `s` is an ID: `B` or `T` followed by two or three digits (`B07`, `B104`).
 fn is_id(s: &str) -> bool {
     let b = s.as_bytes();
-    b.len() == 3 && (b[0] == b'B' || b[0] == b'T') && b[1].is_ascii_digit() && b[2].is_ascii_digit()
+    (b.len() == 3 || b.len() == 4)
+        && (b[0] == b'B' || b[0] == b'T')
+        && b[1..].iter().all(u8::is_ascii_digit)
 }
 
 /// The ID a proofs file name starts with (`B07-slug.md` → `B07`).
@@ -103,15 +105,15 @@ fn is_ident_byte(b: u8) -> bool {
     b.is_ascii_alphanumeric() || b == b'_'
 }
 
-/// The ID a test name starts with (`t21_flip_terminates` → `T21`).
+/// The ID a test name starts with (`t21_flip_terminates` → `T21`, `b104_…` → `B104`).
 fn id_of_test_name(name: &str) -> Option<String> {
     let b = name.as_bytes();
-    let ok = b.len() > 4
+    let digits = b.iter().skip(1).take_while(|c| c.is_ascii_digit()).count();
+    let ok = (digits == 2 || digits == 3)
+        && b.len() > digits + 2
         && (b[0] == b'b' || b[0] == b't')
-        && b[1].is_ascii_digit()
-        && b[2].is_ascii_digit()
-        && b[3] == b'_';
-    ok.then(|| name[..3].to_ascii_uppercase())
+        && b[digits + 1] == b'_';
+    ok.then(|| name[..=digits].to_ascii_uppercase())
 }
 
 /// IDs cited by `proof:` comments in `text`, with their 1-based line numbers. A citation
