@@ -1,6 +1,7 @@
 //! `penner uniformize SURFACE --sphere [--pole V] [-o CLAIM.json] [--obj OUT.obj]
 //! [--svg OUT.svg]`: the conformally equivalent convex polyhedron inscribed in the unit
-//! sphere (notes Thm 9; B74–B76). The disk problem is certified for the surface's exact
+//! sphere (notes Thm 9; B74–B76; edges at the pole flipped when the disk is not convex,
+//! B93). The disk problem is certified for the surface's exact
 //! metric (B76 on the replayed Euclidean flips, B73, B90) and written with `-o` as a
 //! `sphere_uniformization` claim that `penner certify` re-checks; the planar layout is
 //! certified Delaunay and convex (exact predicates on its binary64 coordinates); the 3-D
@@ -69,14 +70,23 @@ pub fn run(
     }
     let _ = writeln!(
         out,
-        "{shown}: {} Euclidean flips to intrinsic Delaunay; pole v{} ({} link vertices); disk problem: {} Newton steps, {} Ptolemy flips, max |Θ − θ| = {:e} (f64)",
+        "{shown}: {} Euclidean flips to intrinsic Delaunay; pole v{} ({} link vertices); disk problem: {} Newton steps, {} Ptolemy flips ({} of edges at the pole, B93), max |Θ − θ| = {:e} (f64)",
         sol.euclidean_flips,
         sol.pole,
         sol.disk.pole_length.iter().flatten().count(),
         sol.solution.steps.len(),
         sol.flip_sequence.len(),
+        sol.star_flips.len(),
         sol.solution.residual_max
     );
+    if !sol.reflex.is_empty() {
+        let names: Vec<String> = sol.reflex.iter().map(|v| format!("v{v}")).collect();
+        let _ = writeln!(
+            out,
+            "{shown}: the disk is not convex at link vertex {} (angle > π after the flips at the pole): the inscribed polyhedron would not be convex",
+            names.join(", ")
+        );
+    }
     // The disk certificate for the surface's exact metric (its Euclidean flips replayed on
     // enclosures, B73), near the f64 solution or its MPFR refinement; then its re-check as
     // the claim that `-o` writes (B90).

@@ -52,6 +52,20 @@ pub struct DiskCertificateData {
 }
 
 impl DiskMetric {
+    /// The metric of `sol.disk` from enclosures `l0` of the lengths of `sol`'s `T₀`: `l0`
+    /// carried by Ptolemy flips through `sol.flip_sequence[..sol.star_prefix]` (the disk
+    /// flips and the flips at the pole before the last disk problem, B93; none when no
+    /// edge at the pole flipped), then [`DiskMetric::of`]. Each Ptolemy length is
+    /// `(ac + bd)/e` of positive enclosures, so the result encloses the carried exact
+    /// lengths of every metric in `l0`. `Err(reason)` when the flips do not replay.
+    /// proof: B93, B90
+    pub fn of_solution(sol: &SphereUniformization, l0: Vec<I>) -> Result<DiskMetric, String> {
+        let prefix = &sol.flip_sequence[..sol.star_prefix.min(sol.flip_sequence.len())];
+        let (t, l) =
+            carry_lengths_from(&sol.initial_mesh, l0, prefix).map_err(|e| e.to_string())?;
+        Ok(DiskMetric::of(&t, &l, &sol.disk, Vertex(sol.pole)))
+    }
+
     /// The metric of `disk` (of `t0` at `pole`, [`super::sphere::disk_of`]) from the
     /// lengths `l0` of `t0`: the disk's edges through its edge map, the pole lengths per
     /// link vertex.
@@ -269,8 +283,9 @@ pub fn certify_disk(
 
 /// Certify the disk problem of `sol` at the scale factors `u` (exact, one per disk vertex,
 /// read at the free ones), whose `max |Θ − θ|` was estimated as `residual_max`, for the
-/// metric `metric` (`None`: the binary64 lengths): boxes of radius `10⁶`, `10³` and `10¹⁰`
-/// times `residual_max·√n` (at least `2^(10 − bits)` times those
+/// metric `metric` (`None`: the binary64 lengths of `T₀`, carried through the flips at the
+/// pole in intervals by [`DiskMetric::of_solution`] when there are any): boxes of radius
+/// `10⁶`, `10³` and `10¹⁰` times `residual_max·√n` (at least `2^(10 − bits)` times those
 /// factors) around `u`; the first outcome that holds, or the last, with its data.
 pub fn certify_disk_near(
     sol: &SphereUniformization,
@@ -279,6 +294,24 @@ pub fn certify_disk_near(
     residual_max: f64,
     bits: u32,
 ) -> (DiskCertificateData, CertificateOutcome) {
+    let own = match (metric, Precision::new(u64::from(bits))) {
+        (None, Ok(prec)) if sol.star_prefix > 0 => {
+            let l0 = sol
+                .initial_lengths
+                .iter()
+                .map(|&x| I::from_f64(x, prec))
+                .collect();
+            match DiskMetric::of_solution(sol, l0) {
+                Ok(m) => Some(m),
+                Err(reason) => {
+                    let data = disk_data(sol, u.to_vec(), Rational::from(1));
+                    return (data, CertificateOutcome::Undecided { reason });
+                }
+            }
+        }
+        _ => None,
+    };
+    let metric = metric.or(own.as_ref());
     let n = u.len().max(1) as f64;
     let floor = 2f64.powi(-(bits.min(1000) as i32) + 10);
     let estimate = (residual_max * n.sqrt()).max(floor);

@@ -19,9 +19,19 @@
 //!    centroid of the vertices at the origin (the conformal barycentre, unique up to
 //!    rotation), by iterating the ball automorphism `φ_c` with `c` half the centroid.
 //!
-//! The final triangulation is `T₀` with the Ptolemy flips of `D` (the star of `v∞` is kept).
+//! When the solved disk is not convex at a link vertex `a` (its angle `θ_a > π`, so the
+//! inscribed polyhedron would fold along the edge `v∞a`), the edge `v∞a` is Ptolemy-flipped
+//! in the whole surface (B93): `a` leaves the link and becomes a free interior vertex of the
+//! new disk, whose new boundary edge `bc` has disk length `ℓ̃_ab + ℓ̃_ac` (a degenerate
+//! triangle at `u_a = w_a`); the disk is rebuilt from the new star and re-solved from the
+//! previous `u` with `u_a = w_a +` [`STAR_FLIP_START_OFFSET`], until the link is convex
+//! ([`SphereOptions::star_flips`]).
+//!
+//! The final triangulation is `T₀` with all Ptolemy flips in order: the disk's and those of
+//! edges at the pole.
 
 use super::dirichlet::{solve_dirichlet, DirichletError, DirichletSolution};
+use crate::algorithms::flips::flip_ptolemy;
 use super::error::UniformizeError;
 use super::layout::{unfold, Layout};
 use super::newton::{validate_input, Stop, UniformizeOptions};
@@ -38,6 +48,10 @@ pub struct SphereOptions {
     pub normalize: bool,
     /// Newton options of the disk problem.
     pub newton: UniformizeOptions,
+    /// Flip the edge `v∞a` and re-solve while a link vertex `a` has disk angle `θ_a > π`
+    /// (B93); when `false`, the star of `v∞` is kept and such a result is returned as it is
+    /// (never certified, B74 "Limits").
+    pub star_flips: bool,
 }
 
 impl Default for SphereOptions {
@@ -49,6 +63,7 @@ impl Default for SphereOptions {
                 tolerance: 1e-12,
                 ..UniformizeOptions::default()
             },
+            star_flips: true,
         }
     }
 }
@@ -94,19 +109,20 @@ pub enum SphereError {
     Layout(String),
 }
 
-/// The disk `D = T₀ − star(v∞)` with its maps back to `T₀`.
+/// The disk `D = T − star(v∞)` of a triangulation `T` of the sphere (`T₀`, or `T₀` after
+/// Ptolemy flips) with its maps back to `T`.
 #[derive(Clone, Debug)]
 pub struct Disk {
-    /// The disk (vertices renumbered: `T₀`'s without `v∞`).
+    /// The disk (vertices renumbered: `T`'s without `v∞`).
     pub mesh: Mesh,
-    /// `ℓ⁰` restricted to the disk.
+    /// The lengths of `T` restricted to the disk.
     pub lengths: Vec<f64>,
-    /// Per disk vertex, the vertex of `T₀`.
+    /// Per disk vertex, the vertex of `T` (and of `T₀`: flips keep vertices).
     pub vertex: Vec<u32>,
-    /// Per disk edge, the edge of `T₀` (edge indices survive flips, so this map holds for
-    /// the flipped disk and the flipped `T₀` alike).
+    /// Per disk edge, the edge of `T` (edge indices survive flips, so this map holds for
+    /// the flipped disk and the flipped `T` alike).
     pub edge: Vec<Edge>,
-    /// Per disk vertex on the link of `v∞`: the length `ℓ⁰_{a v∞}`; `None` inside.
+    /// Per disk vertex on the link of `v∞` in `T`: the length `ℓ_{a v∞}`; `None` inside.
     pub pole_length: Vec<Option<f64>>,
 }
 
@@ -123,20 +139,31 @@ pub struct SphereUniformization {
     pub euclidean_sequence: Vec<Edge>,
     /// The pole `v∞` (a vertex of `T₀`).
     pub pole: u32,
-    /// The disk `T₀ − star(v∞)`.
+    /// The disk `T − star(v∞)` of the last disk problem, `T` being `T₀` with the flips
+    /// `flip_sequence[..star_prefix]` (`T₀` itself when no edge at the pole flipped).
     pub disk: Disk,
-    /// The Dirichlet values `w_a = −2 log ℓ⁰_{a v∞}` per disk vertex (`None` inside).
+    /// The Dirichlet values `w_a = −2 log ℓ_{a v∞}` per vertex of `disk` (`None` inside).
     pub fixed: Vec<Option<f64>>,
-    /// The solved disk problem.
+    /// The solved disk problem on `disk` (its flips are edges of `disk`).
     pub solution: DirichletSolution,
+    /// The flips of edges at the pole (B93), as edges of `T₀`, in order; each is also in
+    /// `flip_sequence`.
+    pub star_flips: Vec<Edge>,
+    /// `flip_sequence[..star_prefix]` ends with the last flip at the pole (`0`: none).
+    pub star_prefix: usize,
+    /// Link vertices (of `T₀`) where the returned disk's angle exceeds `π` by more than
+    /// [`STAR_FLIP_MARGIN`] in `f64`: empty when the boundary is numerically convex (a
+    /// heuristic; only the certificate, B76, proves convexity).
+    pub reflex: Vec<u32>,
     /// The layout of the final disk triangulation.
     pub layout: Layout,
     /// Per disk vertex, its planar position (centroid 0, mean squared radius 1), the
     /// stereographic preimage of its output position before the Möbius normalisation.
     pub planar: Vec<[f64; 2]>,
-    /// The final triangulation of the sphere: `T₀` with the disk's Ptolemy flips.
+    /// The final triangulation of the sphere: `T₀` with `flip_sequence`.
     pub mesh: Mesh,
-    /// The disk's flips as edges of `T₀`, in order.
+    /// All Ptolemy flips from `T₀` to `mesh` as edges of `T₀`, in order: the disk flips of
+    /// each disk problem, and between them the flips at the pole (B93).
     pub flip_sequence: Vec<Edge>,
     /// Per vertex of `T₀`, its position on the unit sphere.
     pub positions: Vec<[f64; 3]>,
@@ -190,26 +217,158 @@ pub fn pole_candidates(mesh: &Mesh) -> Vec<Vertex> {
 /// How many default poles [`uniformize_sphere`] tries.
 pub const POLE_ATTEMPTS: usize = 4;
 
-/// The disk of `pole`, its Dirichlet values `w_a = −2 log ℓ_{a v∞}` and the solved disk
-/// problem.
+/// A link vertex counts as reflex when its disk angle exceeds `π` by more than this (in
+/// radians, `f64`): far above the solver's residual `10⁻¹²`, so that a rounding error at a
+/// tie `θ_a = π` does not flip an edge whose new triangle would stay degenerate. A
+/// heuristic steering the solve; the certificate (B76) decides. proof: B93
+pub const STAR_FLIP_MARGIN: f64 = 1e-9;
+
+/// The start of `u_a` after the flip of `v∞a` is `w_a` plus this: the new triangle `abc`
+/// is degenerate at `u_a = w_a` (angle `π` at `a`, B93), its angles at `b` and `c` grow
+/// like `√(u_a − w_a)` (about `0.05` rad here for comparable sides), so the cotangent
+/// Hessian is finite and no `NaN` appears; the angle sum at `a` still exceeds `2π`, and
+/// Newton increases `u_a`. proof: B93
+pub const STAR_FLIP_START_OFFSET: f64 = 1.0 / 512.0;
+
+/// One pole's outcome: the disk problems and the flips at the pole.
+struct PoleSolve {
+    disk: Disk,
+    fixed: Vec<Option<f64>>,
+    solution: DirichletSolution,
+    /// Flips (edges of `T₀`) before the last disk problem.
+    sequence: Vec<Edge>,
+    star_flips: Vec<Edge>,
+    /// Disk vertices with `θ > π + STAR_FLIP_MARGIN`, most reflex first.
+    reflex: Vec<usize>,
+}
+
+/// The Dirichlet values `w_a = −2 log ℓ_{a v∞}` per disk vertex.
+fn dirichlet_values(disk: &Disk) -> Vec<Option<f64>> {
+    disk.pole_length
+        .iter()
+        .map(|l| l.map(|l| -2.0 * l.ln()))
+        .collect()
+}
+
+/// Link vertices of `disk` whose angle sum in `solution` exceeds `π + STAR_FLIP_MARGIN`,
+/// most reflex first.
+fn reflex_link(fixed: &[Option<f64>], solution: &DirichletSolution) -> Vec<usize> {
+    let theta = crate::geometry::cone_angles::cone_angles::<f64>(&solution.mesh, &solution.lengths);
+    let mut out: Vec<(usize, f64)> = theta
+        .iter()
+        .enumerate()
+        .filter(|&(v, t)| {
+            fixed[v].is_some() && !(*t <= std::f64::consts::PI + STAR_FLIP_MARGIN)
+        })
+        .map(|(v, &t)| (v, t))
+        .collect();
+    out.sort_by(|x, y| y.1.total_cmp(&x.1));
+    out.into_iter().map(|(v, _)| v).collect()
+}
+
+/// Solve the disk problem of `pole` and, while a link vertex is reflex (and `star_flips`),
+/// flip its edge to the pole in the whole surface and re-solve (B93). `Err` when the first
+/// disk problem fails; a later failure keeps the last solved (reflex) state.
 fn solve_for_pole(
     t0: &Mesh,
     l0: &[f64],
     pole: Vertex,
-    newton: &UniformizeOptions,
-) -> Result<(Disk, Vec<Option<f64>>, DirichletSolution), SphereError> {
-    let disk = disk_of(t0, l0, pole).map_err(|reason| SphereError::Pole {
+    opts: &SphereOptions,
+) -> Result<PoleSolve, SphereError> {
+    let pole_err = |reason| SphereError::Pole {
         vertex: pole.0,
         reason,
-    })?;
-    let fixed: Vec<Option<f64>> = disk
-        .pole_length
-        .iter()
-        .map(|l| l.map(|l| -2.0 * l.ln()))
-        .collect();
+    };
+    let disk = disk_of(t0, l0, pole).map_err(pole_err)?;
+    let fixed = dirichlet_values(&disk);
     let theta = vec![2.0 * std::f64::consts::PI; disk.mesh.n_vertices()];
-    let solution = solve_by_continuation(&disk, &fixed, &theta, newton)?;
-    Ok((disk, fixed, solution))
+    let solution = solve_by_continuation(&disk, &fixed, &theta, &opts.newton)?;
+    let reflex = reflex_link(&fixed, &solution);
+    let mut state = PoleSolve {
+        disk,
+        fixed,
+        solution,
+        sequence: Vec::new(),
+        star_flips: Vec::new(),
+        reflex,
+    };
+    // The triangulation T of the current disk, with its f64 lengths (T₀'s carried by the
+    // Ptolemy flips, T28).
+    let (mut t, mut l) = (t0.clone(), l0.to_vec());
+    while opts.star_flips {
+        let Some(next) = star_flip_step(&t, &l, pole, &state, &theta, &opts.newton) else {
+            break;
+        };
+        (t, l) = (next.0, next.1);
+        state = next.2;
+    }
+    Ok(state)
+}
+
+/// One round of B93 on `state` (solved on the disk of `(t, l)`): the disk's flips and the
+/// flip of `v∞a` (`a` the most reflex link vertex) applied to `t`, the new disk, and its
+/// problem solved from the previous `u` with `u_a = w_a + STAR_FLIP_START_OFFSET` (by
+/// continuation when that fails). `None` when nothing is reflex, the link has three
+/// vertices, or a step fails.
+fn star_flip_step(
+    t: &Mesh,
+    l: &[f64],
+    pole: Vertex,
+    state: &PoleSolve,
+    theta: &[f64],
+    newton: &UniformizeOptions,
+) -> Option<(Mesh, Vec<f64>, PoleSolve)> {
+    let &a = state.reflex.first()?;
+    if state.fixed.iter().flatten().count() <= 3 {
+        return None;
+    }
+    let (mut t, mut l) = (t.clone(), l.to_vec());
+    let mut sequence = state.sequence.clone();
+    for e in &state.solution.flip_sequence {
+        let e = state.disk.edge[e.idx()];
+        flip_ptolemy(&mut t, &mut l, e).ok()?;
+        sequence.push(e);
+    }
+    let target = Vertex(state.disk.vertex[a]);
+    let star = t.outgoing(pole).find(|&h| t.tip(h) == target)?.edge();
+    flip_ptolemy(&mut t, &mut l, star).ok()?;
+    sequence.push(star);
+    check_pole(&t, pole).ok()?;
+    let disk = disk_of(&t, &l, pole).ok()?;
+    let fixed = dirichlet_values(&disk);
+    let start: Vec<f64> = state
+        .solution
+        .u
+        .iter()
+        .enumerate()
+        .map(|(v, &x)| {
+            if v == a {
+                x + STAR_FLIP_START_OFFSET
+            } else {
+                x
+            }
+        })
+        .collect();
+    let warm = solve_dirichlet(&disk.mesh, &disk.lengths, &fixed, theta, &start, newton).ok();
+    let solution = match warm {
+        Some(s) if s.stop == Stop::Converged => s,
+        _ => solve_by_continuation(&disk, &fixed, theta, newton).ok()?,
+    };
+    let reflex = reflex_link(&fixed, &solution);
+    let mut star_flips = state.star_flips.clone();
+    star_flips.push(star);
+    Some((
+        t,
+        l,
+        PoleSolve {
+            disk,
+            fixed,
+            solution,
+            sequence,
+            star_flips,
+            reflex,
+        },
+    ))
 }
 
 /// The disk `mesh − star(pole)` (the pole already checked by [`check_pole`]).
@@ -439,23 +598,38 @@ pub fn uniformize_sphere(
         }
         None => pole_candidates(&t0),
     };
-    // 2. The Dirichlet problem on the disk, for the first candidate pole that converges.
+    // 2. The Dirichlet problem on the disk, for the first candidate pole that converges
+    //    with a convex link (after flips at the pole, B93); failing that, the first pole
+    //    that converged (its reflex link vertices are reported, never certified).
     let mut first_error = None;
     let mut found = None;
+    let mut reflex_fallback = None;
     for &pole in &candidates {
-        match solve_for_pole(&t0, &l0, pole, &opts.newton) {
-            Ok(x) => {
+        match solve_for_pole(&t0, &l0, pole, opts) {
+            Ok(x) if x.reflex.is_empty() || !opts.star_flips => {
                 found = Some((pole, x));
                 break;
+            }
+            Ok(x) => {
+                reflex_fallback.get_or_insert((pole, x));
             }
             Err(e) => {
                 first_error.get_or_insert(e);
             }
         }
     }
-    let Some((pole, (disk, fixed, solution))) = found else {
+    let Some((pole, solved)) = found.or(reflex_fallback) else {
         return Err(first_error.unwrap_or(SphereError::NoPole));
     };
+    let PoleSolve {
+        disk,
+        fixed,
+        solution,
+        sequence,
+        star_flips,
+        reflex,
+    } = solved;
+    let reflex: Vec<u32> = reflex.iter().map(|&v| disk.vertex[v]).collect();
     // 3. Layout, centroid 0 and mean squared radius 1.
     let layout = unfold(&solution.mesh, &solution.lengths, Face(0));
     let placed = layout.vertex_positions(&solution.mesh);
@@ -493,13 +667,11 @@ pub fn uniformize_sphere(
     } else {
         norm(centroid(&positions))
     };
-    // The final triangulation: the disk's flips on T₀.
+    // The final triangulation: all flips on T₀.
+    let star_prefix = sequence.len();
+    let mut flip_sequence = sequence;
+    flip_sequence.extend(solution.flip_sequence.iter().map(|e| disk.edge[e.idx()]));
     let mut final_mesh = t0.clone();
-    let flip_sequence: Vec<Edge> = solution
-        .flip_sequence
-        .iter()
-        .map(|e| disk.edge[e.idx()])
-        .collect();
     for &e in &flip_sequence {
         final_mesh
             .flip(e)
@@ -516,6 +688,9 @@ pub fn uniformize_sphere(
         solution,
         layout,
         planar,
+        star_flips,
+        star_prefix,
+        reflex,
         mesh: final_mesh,
         flip_sequence,
         positions,

@@ -6,21 +6,26 @@
 //! squared lengths or positions): `euclidean_flips` (the flips from `surface` to its
 //! intrinsic Delaunay triangulation `T₀`, as indices into the surface's edge order — an
 //! edge keeps its index when flipped), `pole` (the vertex `v∞`), `flips` (the Ptolemy flips
-//! of the disk `T₀ − star(v∞)`, same indexing), `u` (one entry per vertex: an exact
-//! decimal at the free vertices, `null` at the pole and its link, whose values
-//! `−2 log ℓ_{a v∞}` are fixed), `radius` (the sup-norm box), `final_faces` (the sphere's
-//! final triangulation, `T₀` with the disk's flips) and `residual_bound` (a claimed upper
-//! bound on `‖2π − θ(u)‖₂` over the free vertices).
+//! of the whole sphere from `T₀` to the final triangulation `T_F`, same indexing: the
+//! disk's and those of edges at the pole, B93), `u` (one entry per vertex: an exact
+//! decimal at the free vertices, `null` at the pole and its link in `T_F`, whose values
+//! `−2 log ℓ_{a v∞}` are fixed), `radius` (the sup-norm box), `final_faces` (the faces of
+//! `T_F`) and `residual_bound` (a claimed upper bound on `‖2π − θ(u)‖₂` over the free
+//! vertices).
 //!
 //! The re-check (B90): the Euclidean flips replayed on enclosures of the exact input
 //! lengths, each admitted only on a certified strictly convex quadrilateral (B73 (a));
-//! `T₀` certified intrinsic Delaunay; the pole's star a disk with a simple link; the disk
-//! certificate (B76) on the replayed enclosures; the residual bound.
+//! `T₀` certified intrinsic Delaunay; the Ptolemy flips replayed formally on the
+//! enclosures of the whole sphere (T28); the pole's final star a disk with a simple link;
+//! the disk certificate (B76) on the disk `T_F − star(v∞)` with the carried enclosures; the
+//! residual bound. Claims whose flips avoid the star (the only ones written before B93)
+//! are re-checked as before: their final star is `T₀`'s.
 
 use super::certificate::{CertificateOutcome, I};
 use super::claim_form::exact_decimal;
 use super::dirichlet_certificate::{check_disk_certificate_on, DiskCertificateData, DiskMetric};
 use super::input_metric::replay_enclosed;
+use super::refine::{carry_lengths_from, RefineError};
 use super::sphere::{check_pole, disk_of, SphereUniformization};
 use crate::io::json::{edge_order, to_value};
 use crate::io::Surface;
@@ -103,16 +108,8 @@ pub enum SphereClaimError {
         /// What is wrong.
         what: &'static str,
     },
-    /// A disk flip names an edge of the pole's star (those edges are kept).
-    #[error("flips[{position}]: edge {index} is an edge of the pole's star in T₀, which the disk problem keeps")]
-    StarFlip {
-        /// Position in `flips`.
-        position: usize,
-        /// The index.
-        index: usize,
-    },
-    /// The disk flips do not replay.
-    #[error("flips[{position}]: the flip of edge {index} does not replay on the disk")]
+    /// The Ptolemy flips do not replay.
+    #[error("flips[{position}]: the flip of edge {index} does not replay on the surface")]
     Replay {
         /// Position in `flips`.
         position: usize,
@@ -226,34 +223,31 @@ pub fn recheck(
             "edge {k} of T₀ is not certified intrinsic Delaunay for the surface's metric"
         ));
     }
-    // The pole and the disk T₀ − star(v∞).
+    // The pole, the Ptolemy flips of the whole sphere (B93: edges at the pole included)
+    // replayed formally on the enclosures (T28), and the disk T_F − star(v∞).
     let pole = Vertex(claim.pole);
     let pole_err = |reason| SphereClaimError::Pole {
         vertex: claim.pole,
         reason,
     };
     check_pole(&t0, pole).map_err(pole_err)?;
-    let mids: Vec<f64> = l0.iter().map(Real::approx_f64).collect();
-    let disk = disk_of(&t0, &mids, pole).map_err(pole_err)?;
-    let mut of_t0 = vec![None; t0.n_edges()];
-    for (d, e) in disk.edge.iter().enumerate() {
-        of_t0[e.idx()] = Some(Edge(d as u32));
-    }
-    let mut disk_flips = Vec::with_capacity(claim.flips.len());
-    let mut final_mesh = t0.clone();
-    for (position, &index) in claim.flips.iter().enumerate() {
-        let e = edge(index);
-        let Some(d) = of_t0[e.idx()] else {
-            return Err(SphereClaimError::StarFlip { position, index });
-        };
-        final_mesh
-            .flip(e)
-            .map_err(|_| SphereClaimError::Replay { position, index })?;
-        disk_flips.push(d);
-    }
+    let flips: Vec<Edge> = claim.flips.iter().map(|&k| edge(k)).collect();
+    let (final_mesh, lf) = carry_lengths_from(&t0, l0, &flips).map_err(|e| match e {
+        RefineError::Replay { index, .. } => SphereClaimError::Replay {
+            position: index,
+            index: claim.flips.get(index).copied().unwrap_or_default(),
+        },
+        _ => SphereClaimError::Replay {
+            position: 0,
+            index: claim.flips.first().copied().unwrap_or_default(),
+        },
+    })?;
     if final_mesh.face_list() != claim.final_faces {
         return Err(SphereClaimError::FinalFaces);
     }
+    check_pole(&final_mesh, pole).map_err(pole_err)?;
+    let mids: Vec<f64> = lf.iter().map(Real::approx_f64).collect();
+    let disk = disk_of(&final_mesh, &mids, pole).map_err(pole_err)?;
     // u per disk vertex; null exactly at the pole and the link.
     let mut u = Vec::with_capacity(disk.vertex.len());
     if claim.u[pole.idx()].is_some() {
@@ -280,13 +274,13 @@ pub fn recheck(
             (x, _) => u.push(x.clone().unwrap_or_default()),
         }
     }
-    let metric = DiskMetric::of(&t0, &l0, &disk, pole);
+    let metric = DiskMetric::of(&final_mesh, &lf, &disk, pole);
     let data = DiskCertificateData {
         over_pi: vec![Rational::from(2); disk.vertex.len()],
         disk: disk.mesh,
         lengths: disk.lengths,
         pole_length: disk.pole_length,
-        flip_sequence: disk_flips,
+        flip_sequence: Vec::new(),
         u,
         radius: claim.radius.clone(),
     };

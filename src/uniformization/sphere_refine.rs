@@ -15,14 +15,14 @@ use super::dirichlet_certificate::{certify_disk_near, DiskCertificateData, DiskM
 use super::input_metric::replay_enclosed;
 use super::refine::{carry_lengths_from, refine_problem, Problem, RefineError, Refinement};
 use super::sphere::SphereUniformization;
-use crate::mesh::Vertex;
 use crate::scalar::{Mpfr, Precision, Real};
 use rug::Rational;
 
 /// The exact input metric of `sol` as a [`DiskMetric`]: `enclosures` enclose the lengths of
 /// the surface `sol` was solved from (on its triangulation `mesh`), replayed through the
-/// solve's Euclidean flips with certified convex quadrilaterals (B73 (a)). `Err(reason)`
-/// when a flip is not admitted or the flips do not reach the solve's `T₀`.
+/// solve's Euclidean flips with certified convex quadrilaterals (B73 (a)), then through its
+/// Ptolemy flips up to the last flip at the pole ([`DiskMetric::of_solution`], B93).
+/// `Err(reason)` when a flip is not admitted or the flips do not reach the solve's `T₀`.
 pub fn input_disk_metric(
     sol: &SphereUniformization,
     mesh: &crate::mesh::Mesh,
@@ -32,7 +32,7 @@ pub fn input_disk_metric(
     if t0.face_list() != sol.initial_mesh.face_list() {
         return Err("the Euclidean flips do not reproduce the solve's T₀".into());
     }
-    Ok(DiskMetric::of(&t0, &l0, &sol.disk, Vertex(sol.pole)))
+    DiskMetric::of_solution(sol, l0)
 }
 
 /// The midpoint of an enclosure, in MPFR.
@@ -42,8 +42,9 @@ fn mid(x: &I) -> Mpfr {
 
 /// Refine the disk problem of `sol` in MPFR at `prec` to `max |2π − θ| ≤ tolerance` over
 /// the free vertices (at most `max_iterations` steps), for `metric` (midpoints) or, when
-/// `None`, the binary64 lengths of the solve. The Dirichlet values are `−2 log ℓ_{a v∞}`
-/// in MPFR.
+/// `None`, the binary64 lengths of `T₀` (carried through the flips at the pole in
+/// intervals when there are any, as the certificate takes them). The Dirichlet values are
+/// `−2 log ℓ_{a v∞}` in MPFR.
 pub fn refine_disk(
     sol: &SphereUniformization,
     metric: Option<&DiskMetric>,
@@ -52,6 +53,20 @@ pub fn refine_disk(
     max_iterations: usize,
 ) -> Result<Refinement<Mpfr>, RefineError> {
     let disk = &sol.disk;
+    let own = if metric.is_none() && sol.star_prefix > 0 {
+        let l0 = sol
+            .initial_lengths
+            .iter()
+            .map(|&x| I::from_f64(x, prec))
+            .collect();
+        Some(DiskMetric::of_solution(sol, l0).map_err(|_| RefineError::Replay {
+            index: 0,
+            edge: sol.flip_sequence.first().map_or(0, |e| e.0),
+        })?)
+    } else {
+        None
+    };
+    let metric = metric.or(own.as_ref());
     let (lengths, pole): (Vec<Mpfr>, Vec<Option<Mpfr>>) = match metric {
         Some(m) => (
             m.lengths.iter().map(mid).collect(),

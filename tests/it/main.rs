@@ -85,6 +85,7 @@ mod uniformization_hyperbolic;
 mod uniformization_layout;
 mod uniformization_speed;
 mod uniformization_sphere;
+mod uniformization_sphere_star;
 mod uniformization_ties;
 mod variational;
 mod variational_fast;
