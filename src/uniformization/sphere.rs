@@ -31,12 +31,12 @@
 //! edges at the pole.
 
 use super::dirichlet::{solve_dirichlet, DirichletError, DirichletSolution};
-use crate::algorithms::flips::flip_ptolemy;
 use super::error::UniformizeError;
 use super::layout::{unfold, Layout};
 use super::newton::{validate_input, Stop, UniformizeOptions};
 use super::targets::Targets;
 use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
+use crate::algorithms::flips::flip_ptolemy;
 use crate::mesh::{Edge, Face, HalfEdge, Mesh, Vertex};
 
 /// Options of [`uniformize_sphere`].
@@ -225,7 +225,7 @@ pub const STAR_FLIP_MARGIN: f64 = 1e-9;
 
 /// The start of `u_a` after the flip of `v∞a` is `w_a` plus this: the new triangle `abc`
 /// is degenerate at `u_a = w_a` (angle `π` at `a`, B93), its angles at `b` and `c` grow
-/// like `√(u_a − w_a)` (about `0.05` rad here for comparable sides), so the cotangent
+/// like `√(u_a − w_a)` (about `0.04` rad here for equal sides), so the cotangent
 /// Hessian is finite and no `NaN` appears; the angle sum at `a` still exceeds `2π`, and
 /// Newton increases `u_a`. proof: B93
 pub const STAR_FLIP_START_OFFSET: f64 = 1.0 / 512.0;
@@ -257,9 +257,7 @@ fn reflex_link(fixed: &[Option<f64>], solution: &DirichletSolution) -> Vec<usize
     let mut out: Vec<(usize, f64)> = theta
         .iter()
         .enumerate()
-        .filter(|&(v, t)| {
-            fixed[v].is_some() && !(*t <= std::f64::consts::PI + STAR_FLIP_MARGIN)
-        })
+        .filter(|&(v, t)| fixed[v].is_some() && !(*t <= std::f64::consts::PI + STAR_FLIP_MARGIN))
         .map(|(v, &t)| (v, t))
         .collect();
     out.sort_by(|x, y| y.1.total_cmp(&x.1));

@@ -59,10 +59,12 @@ pub fn refine_disk(
             .iter()
             .map(|&x| I::from_f64(x, prec))
             .collect();
-        Some(DiskMetric::of_solution(sol, l0).map_err(|_| RefineError::Replay {
-            index: 0,
-            edge: sol.flip_sequence.first().map_or(0, |e| e.0),
-        })?)
+        Some(
+            DiskMetric::of_solution(sol, l0).map_err(|_| RefineError::Replay {
+                index: 0,
+                edge: sol.flip_sequence.first().map_or(0, |e| e.0),
+            })?,
+        )
     } else {
         None
     };

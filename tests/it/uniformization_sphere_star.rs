@@ -60,8 +60,7 @@ fn certify_exact(s: &Surface, sol: &SphereUniformization) -> (CertificateOutcome
         .iter()
         .map(|&x| Rational::from_f64(x).unwrap())
         .collect();
-    let (data, outcome) =
-        certify_disk_near(sol, Some(&metric), &u, sol.solution.residual_max, 128);
+    let (data, outcome) = certify_disk_near(sol, Some(&metric), &u, sol.solution.residual_max, 128);
     let residual = match outcome {
         CertificateOutcome::Holds { residual, .. } => residual,
         CertificateOutcome::Undecided { .. } => 1.0,
