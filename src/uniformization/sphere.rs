@@ -257,7 +257,7 @@ fn reflex_link(fixed: &[Option<f64>], solution: &DirichletSolution) -> Vec<usize
     let mut out: Vec<(usize, f64)> = theta
         .iter()
         .enumerate()
-        .filter(|&(v, t)| fixed[v].is_some() && !(*t <= std::f64::consts::PI + STAR_FLIP_MARGIN))
+        .filter(|&(v, t)| fixed[v].is_some() && *t > std::f64::consts::PI + STAR_FLIP_MARGIN)
         .map(|(v, &t)| (v, t))
         .collect();
     out.sort_by(|x, y| y.1.total_cmp(&x.1));
@@ -293,12 +293,11 @@ fn solve_for_pole(
     // The triangulation T of the current disk, with its f64 lengths (T₀'s carried by the
     // Ptolemy flips, T28).
     let (mut t, mut l) = (t0.clone(), l0.to_vec());
-    while opts.star_flips {
-        let Some(next) = star_flip_step(&t, &l, pole, &state, &theta, &opts.newton) else {
-            break;
-        };
-        (t, l) = (next.0, next.1);
-        state = next.2;
+    if opts.star_flips {
+        while let Some(next) = star_flip_step(&t, &l, pole, &state, &theta, &opts.newton) {
+            (t, l) = (next.0, next.1);
+            state = next.2;
+        }
     }
     Ok(state)
 }
