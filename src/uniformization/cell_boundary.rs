@@ -21,6 +21,7 @@
 //! `U`-edge, the configuration certified Delaunay there, or the hull of both
 //! ([`Boundary::correct_angle_sums`]).
 
+use super::ball_argument::certified_nonnegative as nonnegative;
 use super::certificate::I;
 use crate::algorithms::flips::ptolemy_length_enclosure;
 use crate::geometry::enclosure::cotans::enclose_halfedge_cotans;
@@ -51,12 +52,6 @@ pub(crate) struct Boundary {
     flipped: Mesh,
     /// The base (unscaled) Ptolemy lengths of the flipped `U`-edges, in the order of `edges`.
     flipped_base: Vec<I>,
-}
-
-/// Whether `p` is certified `≥ 0`.
-fn nonnegative(p: &I) -> bool {
-    let lo = p.lo().as_float();
-    p.is_valid() && (lo.is_zero() || lo.is_sign_positive())
 }
 
 /// The smallest interval holding `a` and `b` (both valid).

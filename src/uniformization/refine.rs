@@ -14,7 +14,7 @@
 //! about `10⁻³¹`, which no precision removes (B69).
 
 use super::components::Components;
-use super::hessian::{grounded_hessian, CholeskyCache};
+use super::hessian::{grounded_hessian, newton_direction, CholeskyCache};
 use super::newton::Uniformization;
 use super::newton_driver::{refine_loop, Over};
 use crate::algorithms::flips::flip_ptolemy;
@@ -320,14 +320,7 @@ pub fn refine_problem<T: Real>(
     };
     // H d = −∇E = −(Θ − θ) on the free vertices: the Newton correction from the f64
     // factor (zero at the vertices that keep their `u`).
-    let correction = |rf: &[f64]| {
-        let rhs: Vec<f64> = free.iter().map(|&v| -rf[v]).collect();
-        let mut d = vec![0.0; rf.len()];
-        for (&v, dv) in free.iter().zip(factor.solve(&rhs)) {
-            d[v] = dv;
-        }
-        d
-    };
+    let correction = |rf: &[f64]| newton_direction(&factor, rf, free);
     let limits = (tolerance, max_iterations);
     let over = Over(Some(measured));
     match refine_loop(u, ctx, limits, over, residual, correction)? {
