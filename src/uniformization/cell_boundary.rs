@@ -76,7 +76,7 @@ fn face_of(mesh: &Mesh, h: HalfEdge) -> [HalfEdge; 3] {
 }
 
 /// `e^{(u_a+u_b)/2}·ℓ` for the ends `a, b` of `h`.
-fn scale(mesh: &Mesh, h: HalfEdge, base: &I, u: &[I]) -> I {
+pub(crate) fn scale(mesh: &Mesh, h: HalfEdge, base: &I, u: &[I]) -> I {
     let s = (u[mesh.tail(h).idx()].clone() + &u[mesh.tip(h).idx()]) * &base.lit(0.5);
     s.exp() * base
 }

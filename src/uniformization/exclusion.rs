@@ -11,7 +11,7 @@
 //! angles. A vertex whose target `Θ_v` (enclosed) is disjoint from that enclosure has
 //! `θ_v(u') ≠ Θ_v` for every `u' ∈ B`: the box holds no solution.
 
-use super::certificate::{prepare, CertificateData, CertificateError, I};
+use super::certificate::{prepare, CertificateData, CertificateError, Rung, I};
 use crate::geometry::enclosure::angle_sums::enclose_cone_angles;
 use crate::scalar::{Interval, Mpfr, Real};
 
@@ -36,7 +36,7 @@ pub fn excluded_vertices(
     base0: Option<&[Interval<Mpfr>]>,
     bits: u32,
 ) -> Result<Result<Vec<ExcludedVertex>, String>, CertificateError> {
-    let p = match prepare(data, base0, bits)? {
+    let p = match prepare(data, base0, bits, Rung::Mpfr)? {
         Ok(p) => p,
         Err(reason) => return Ok(Err(reason)),
     };

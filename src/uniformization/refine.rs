@@ -101,10 +101,19 @@ pub fn carry_lengths_from<T: Real>(
     Ok((m, l))
 }
 
-/// The scaled lengths `e^{(u_i+u_j)/2}·ℓ_ij` in `T`.
+/// The scaled lengths `e^{(u_i+u_j)/2}·ℓ_ij = e^{u_i/2}·e^{u_j/2}·ℓ_ij` in `T`: one
+/// exponential per vertex, two products per edge (on intervals, an enclosure by B20).
 pub fn scaled<T: Real>(mesh: &Mesh, base: &[T], u: &[T]) -> Vec<T> {
+    let Some(first) = base.first() else {
+        return Vec::new();
+    };
+    let half = first.lit(0.5);
+    let factor: Vec<T> = u.iter().map(|x| (x.clone() * &half).exp()).collect();
     mesh.edges()
-        .map(|e| scaled_edge(mesh, base, u, e))
+        .map(|e| {
+            let h = e.halfedge();
+            factor[mesh.tail(h).idx()].clone() * &factor[mesh.tip(h).idx()] * &base[e.idx()]
+        })
         .collect()
 }
 
