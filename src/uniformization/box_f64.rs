@@ -30,10 +30,7 @@ fn exp_pm_radius(radius: &Rational) -> Option<(f64, f64)> {
     let r = Float::with_val_round(64, radius, Round::Up).0;
     let up = Float::with_val_round(64, r.exp_ref(), Round::Up).0;
     let down = Float::with_val_round(64, (-r).exp_ref(), Round::Down).0;
-    let (lo, hi) = (
-        down.to_f64_round(Round::Down),
-        up.to_f64_round(Round::Up),
-    );
+    let (lo, hi) = (down.to_f64_round(Round::Down), up.to_f64_round(Round::Up));
     (lo > 0.0 && hi.is_finite()).then_some((lo, hi))
 }
 
@@ -103,7 +100,10 @@ pub(crate) fn cell_over_box(
         }
     }
     let cot = halfedge_cotans(mesh, lb);
-    if !cot.iter().all(|c| c.is_valid() && c.lo().is_finite() && c.hi().is_finite()) {
+    if !cot
+        .iter()
+        .all(|c| c.is_valid() && c.lo().is_finite() && c.hi().is_finite())
+    {
         return None;
     }
     let lap = laplacian_from_halfedge_cotans(mesh, &cot);
@@ -139,7 +139,10 @@ mod tests {
             .edges()
             .map(|e| {
                 let h = e.halfedge();
-                let (a, b) = (&s.positions[s.mesh.tail(h).idx()], &s.positions[s.mesh.tip(h).idx()]);
+                let (a, b) = (
+                    &s.positions[s.mesh.tail(h).idx()],
+                    &s.positions[s.mesh.tip(h).idx()],
+                );
                 let sq: Rational = (0..3).map(|k| Rational::from(&a[k] - &b[k]).square()).sum();
                 I::from_rational(&sq, p).sqrt()
             })
@@ -167,12 +170,16 @@ mod tests {
     }
 
     fn contains(outer: &F, inner: &I) -> bool {
-        let (lo, hi) = (Mpfr::from_f64(*outer.lo(), inner.lo().precision()), Mpfr::from_f64(*outer.hi(), inner.lo().precision()));
+        let (lo, hi) = (
+            Mpfr::from_f64(*outer.lo(), inner.lo().precision()),
+            Mpfr::from_f64(*outer.hi(), inner.lo().precision()),
+        );
         lo.as_float() <= inner.lo().as_float() && inner.hi().as_float() <= hi.as_float()
     }
 
     fn contains_point(outer: &F, x: &Mpfr) -> bool {
-        *outer.lo() <= x.approx_f64() && x.approx_f64() <= *outer.hi()
+        *outer.lo() <= x.approx_f64()
+            && x.approx_f64() <= *outer.hi()
             && Mpfr::from_f64(*outer.lo(), x.precision()).as_float() <= x.as_float()
             && x.as_float() <= Mpfr::from_f64(*outer.hi(), x.precision()).as_float()
     }
@@ -206,7 +213,11 @@ mod tests {
             let at0 = mesh.tail(h).idx() == 0 || mesh.tip(h).idx() == 0;
             at0 && !contains_point(&lb[e.idx()], lm[e.idx()].lo())
         });
-        assert_eq!(outside.count(), 5, "all five edges at vertex 0 leave the box");
+        assert_eq!(
+            outside.count(),
+            5,
+            "all five edges at vertex 0 leave the box"
+        );
     }
 
     /// The binary64 Laplacian over the box contains the cotan Laplacian at the box's
@@ -250,7 +261,10 @@ mod tests {
         }
         let mut moved = u.clone();
         moved[0] += Rational::from(100) * &r;
-        assert!(!inside(&at(&moved)), "u + 100r at v0 must leave the enclosure");
+        assert!(
+            !inside(&at(&moved)),
+            "u + 100r at v0 must leave the enclosure"
+        );
     }
 
     /// Step 1 refuses what is not Delaunay: two copies of an obtuse triangle glued along
@@ -272,7 +286,12 @@ mod tests {
             let lp = scaled(&mesh, &base, &points(&u));
             let lb = box_lengths(&lp, &r).unwrap();
             let bx = boxed(&u, &r);
-            cell_over_box(&mesh, &lb, |e| scale(&mesh, e.halfedge(), &base[e.idx()], &bx), p)
+            cell_over_box(
+                &mesh,
+                &lb,
+                |e| scale(&mesh, e.halfedge(), &base[e.idx()], &bx),
+                p,
+            )
         };
         assert!(run([1.0, 1.0, 1.0]).is_some());
         assert!(run([1.0, 1.0, 1.9]).is_none());

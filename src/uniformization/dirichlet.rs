@@ -231,7 +231,14 @@ pub fn solve_dirichlet(
         cache: CholeskyCache::default(),
         sequence,
     };
-    let run = drive(&mut sys, Over(Some(&free)), u, ev, opts.limits(), &mut |_| {});
+    let run = drive(
+        &mut sys,
+        Over(Some(&free)),
+        u,
+        ev,
+        opts.limits(),
+        &mut |_| {},
+    );
     let stop = Stop::of_driver(run.stop, opts, max_free(&run.eval.grad, &free));
     Ok(finish(run.eval, run.u, run.steps, sys.sequence, stop))
 }
