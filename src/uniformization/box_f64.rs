@@ -58,6 +58,7 @@ fn nonnegative(x: &F) -> bool {
 
 /// Whether the face of `h` is a strict triangle for every length in `len`'s enclosures:
 /// `y + z − x > 0` certified for each side `x`.
+#[allow(clippy::let_and_return)] // the borrows of `a, b, c` must end before they drop
 fn strict<B: IntervalBound>(mesh: &Mesh, h: HalfEdge, len: impl Fn(Edge) -> Interval<B>) -> bool {
     let n = mesh.next(h);
     let [a, b, c] = [h, n, mesh.next(n)].map(|x| len(x.edge()));
@@ -254,7 +255,7 @@ mod tests {
                 .enumerate()
                 .map(|(v, q)| {
                     let s = if v % 2 == 0 { sign } else { -sign };
-                    Rational::from(q + Rational::from(s) * &r)
+                    q + Rational::from(s) * &r
                 })
                 .collect();
             assert!(inside(&at(&corner)), "corner {sign}");

@@ -206,20 +206,17 @@ pub(crate) fn prepare(
         }),
         Rung::Mpfr => None,
     };
-    let (lb, cell) = match binary64 {
-        Some((lb, laplacian)) => (
-            lb,
-            CellOverBox {
-                laplacian,
-                boundary: None,
-            },
-        ),
-        None => {
-            let lb = scaled(&mesh, &base, &boxed);
-            match cell_over_box(&mesh, &base, &boxed, &lb) {
-                Ok(c) => (lb, c),
-                Err(reason) => return Ok(Err(reason)),
-            }
+    let (lb, cell) = if let Some((lb, laplacian)) = binary64 {
+        let cell = CellOverBox {
+            laplacian,
+            boundary: None,
+        };
+        (lb, cell)
+    } else {
+        let lb = scaled(&mesh, &base, &boxed);
+        match cell_over_box(&mesh, &base, &boxed, &lb) {
+            Ok(c) => (lb, c),
+            Err(reason) => return Ok(Err(reason)),
         }
     };
     let laplacian = cell.laplacian;
