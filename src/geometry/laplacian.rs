@@ -92,6 +92,16 @@ impl<T: Real> SparseMatrix<T> {
         }
     }
 
+    /// The matrix with the same pattern and every stored value mapped by `f`.
+    pub fn map_values<U: Real>(&self, f: impl FnMut(&T) -> U) -> SparseMatrix<U> {
+        SparseMatrix {
+            n: self.n,
+            row_ptr: self.row_ptr.clone(),
+            col: self.col.clone(),
+            val: self.val.iter().map(f).collect(),
+        }
+    }
+
     /// The dimension `n`.
     pub fn dim(&self) -> usize {
         self.n

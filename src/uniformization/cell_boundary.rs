@@ -21,6 +21,7 @@
 //! `U`-edge, the configuration certified Delaunay there, or the hull of both
 //! ([`Boundary::correct_angle_sums`]).
 
+use super::ball_argument::certified_nonnegative as nonnegative;
 use super::certificate::I;
 use crate::algorithms::flips::ptolemy_length_enclosure;
 use crate::geometry::enclosure::cotans::enclose_halfedge_cotans;
@@ -53,12 +54,6 @@ pub(crate) struct Boundary {
     flipped_base: Vec<I>,
 }
 
-/// Whether `p` is certified `≥ 0`.
-fn nonnegative(p: &I) -> bool {
-    let lo = p.lo().as_float();
-    p.is_valid() && (lo.is_zero() || lo.is_sign_positive())
-}
-
 /// The smallest interval holding `a` and `b` (both valid).
 fn hull(a: &I, b: &I) -> I {
     let lo = if a.lo().as_float() <= b.lo().as_float() {
@@ -81,7 +76,7 @@ fn face_of(mesh: &Mesh, h: HalfEdge) -> [HalfEdge; 3] {
 }
 
 /// `e^{(u_a+u_b)/2}·ℓ` for the ends `a, b` of `h`.
-fn scale(mesh: &Mesh, h: HalfEdge, base: &I, u: &[I]) -> I {
+pub(crate) fn scale(mesh: &Mesh, h: HalfEdge, base: &I, u: &[I]) -> I {
     let s = (u[mesh.tail(h).idx()].clone() + &u[mesh.tip(h).idx()]) * &base.lit(0.5);
     s.exp() * base
 }

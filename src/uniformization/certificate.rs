@@ -19,7 +19,8 @@
 //! on the Euclidean ball of radius `r` inside `B`), and `T` (across boundaries: `T` with
 //! the edges of `U` whose `P < 0` at `u*` flipped, B35) is Delaunay for `u*`.
 
-use super::cell_boundary::{cell_over_box, Boundary};
+use super::box_f64;
+use super::cell_boundary::{cell_over_box, scale, Boundary, CellOverBox};
 use super::components::Components;
 use super::error::UniformizeError;
 use super::newton::validate_input;
@@ -120,6 +121,16 @@ pub(crate) struct Prepared {
     pub boxed: Vec<I>,
 }
 
+/// How [`prepare`] encloses step 1 and the Laplacian over the box.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Rung {
+    /// Binary64 enclosures first, MPFR per face or edge they leave open, the MPFR path of
+    /// B35 when the box is not certified inside one Penner cell (B36).
+    Binary64First,
+    /// MPFR enclosures at the certificate's precision throughout.
+    Mpfr,
+}
+
 /// Validate `data`, carry the lengths, and check the Penner cell on the box (B71 step 1,
 /// across cell boundaries B35);
 /// `Ok(Err(reason))` when a step is not certified. `base0`, when given, encloses the
@@ -130,6 +141,7 @@ pub(crate) fn prepare(
     data: &CertificateData,
     base0: Option<&[I]>,
     bits: u32,
+    rung: Rung,
 ) -> Result<Result<Prepared, String>, CertificateError> {
     validate_input(&data.t0, &data.l0, &data.targets)?;
     let n = data.t0.n_vertices();
@@ -179,12 +191,33 @@ pub(crate) fn prepare(
             }
         })
         .collect();
+    // The lengths at u, enclosed (for the residual, and the binary64 rung's box lengths).
+    let lp = scaled(&mesh, &base, &point);
     // 1. One Penner cell, or cell boundaries crossed as B35 allows: strict triangles,
-    // Delaunay edges and the Laplacian over the whole box.
-    let lb = scaled(&mesh, &base, &boxed);
-    let cell = match cell_over_box(&mesh, &base, &boxed, &lb) {
-        Ok(c) => c,
-        Err(reason) => return Ok(Err(reason)),
+    // Delaunay edges and the Laplacian over the whole box; binary64 first when asked
+    // (B36), MPFR for what it leaves open.
+    let binary64 = match rung {
+        Rung::Binary64First => box_f64::box_lengths(&lp, &data.radius).and_then(|lb| {
+            let exact = |e: Edge| scale(&mesh, e.halfedge(), &base[e.idx()], &boxed);
+            let laplacian = box_f64::cell_over_box(&mesh, &lb, exact, prec)?;
+            let to_mpfr = |x: &f64| Mpfr::from_f64(*x, prec);
+            let lb = lb.iter().map(|x| I::new(to_mpfr(x.lo()), to_mpfr(x.hi())));
+            Some((lb.collect(), laplacian))
+        }),
+        Rung::Mpfr => None,
+    };
+    let (lb, cell) = if let Some((lb, laplacian)) = binary64 {
+        let cell = CellOverBox {
+            laplacian,
+            boundary: None,
+        };
+        (lb, cell)
+    } else {
+        let lb = scaled(&mesh, &base, &boxed);
+        match cell_over_box(&mesh, &base, &boxed, &lb) {
+            Ok(c) => (lb, c),
+            Err(reason) => return Ok(Err(reason)),
+        }
     };
     let laplacian = cell.laplacian;
     if let Some((i, j, _)) = laplacian.entries().find(|(_, _, w)| !w.is_valid()) {
@@ -193,7 +226,6 @@ pub(crate) fn prepare(
         )));
     }
     // The residual at u, enclosed.
-    let lp = scaled(&mesh, &base, &point);
     // One enclosed argument per vertex, per-corner fallback where not certified (B33).
     let mut theta = enclose_cone_angles(&mesh, &lp).theta;
     if let Some(b) = &cell.boundary {
@@ -240,7 +272,7 @@ pub fn check_certificate_on(
     base0: Option<&[I]>,
     bits: u32,
 ) -> Result<CertificateOutcome, CertificateError> {
-    let p = match prepare(data, base0, bits)? {
+    let p = match prepare(data, base0, bits, Rung::Binary64First)? {
         Ok(p) => p,
         Err(reason) => return Ok(CertificateOutcome::Undecided { reason }),
     };

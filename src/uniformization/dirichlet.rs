@@ -14,9 +14,9 @@
 
 use super::components::Components;
 use super::error::UniformizeError;
-use super::hessian::{grounded_hessian, CholeskyCache};
+use super::hessian::{grounded_hessian, newton_direction, CholeskyCache};
 use super::newton::{evaluate, Evaluation, StepReport, Stop, UniformizeOptions};
-use super::newton_driver::{drive, DriverStop, Limits, NewtonSystem, Over};
+use super::newton_driver::{drive, NewtonSystem, Over};
 use crate::mesh::{Edge, Mesh};
 use crate::scalar::exp_length::MAX_LOG_SCALE;
 
@@ -231,23 +231,15 @@ pub fn solve_dirichlet(
         cache: CholeskyCache::default(),
         sequence,
     };
-    let limits = Limits {
-        tolerance: opts.tolerance,
-        max_iterations: opts.max_iterations,
-        max_halvings: opts.max_halvings,
-    };
-    let run = drive(&mut sys, Over(Some(&free)), u, ev, limits, &mut |_| {});
-    let stop = match run.stop {
-        DriverStop::Converged => Stop::Converged,
-        DriverStop::IterationCap => Stop::IterationCap,
-        DriverStop::Factor(reason) => Stop::DegenerateStep(reason),
-        DriverStop::LineSearch(last) => Stop::DegenerateStep(format!(
-            "line search: {} after {} halvings at max residual {:e}",
-            last.unwrap_or_else(|| "no decrease of |∇E|".into()),
-            opts.max_halvings,
-            max_free(&run.eval.grad, &free)
-        )),
-    };
+    let run = drive(
+        &mut sys,
+        Over(Some(&free)),
+        u,
+        ev,
+        opts.limits(),
+        &mut |_| {},
+    );
+    let stop = Stop::of_driver(run.stop, opts, max_free(&run.eval.grad, &free));
     Ok(finish(run.eval, run.u, run.steps, sys.sequence, stop))
 }
 
@@ -280,13 +272,7 @@ impl NewtonSystem for Fixed<'_> {
                 "the Hessian on the free vertices is not numerically positive definite".into(),
             );
         };
-        let rhs: Vec<f64> = self.free.iter().map(|&v| -ev.grad[v]).collect();
-        let x = factor.solve(&rhs);
-        let mut d = vec![0.0; ev.grad.len()];
-        for (k, &v) in self.free.iter().enumerate() {
-            d[v] = x[k];
-        }
-        Ok(d)
+        Ok(newton_direction(&factor, &ev.grad, self.free))
     }
 
     fn accept(&mut self, new: &Evaluation) -> usize {

@@ -4,13 +4,15 @@
 //!
 //! After step 1 of B71 (the final triangulation `T` is Delaunay and every face a strict
 //! triangle for every `u' ∈ B`, so the angle sums at `u'` are those of `T`), the angle sum
-//! `θ_v` of every vertex is enclosed over the whole box (across cell boundaries, B35: per
-//! edge not certified Delaunay on the box, the hull of both configurations' angles) by interval arithmetic on the box
-//! lengths. A vertex whose target `Θ_v` (enclosed) is disjoint from that enclosure has
+//! `θ_v` of every vertex is enclosed over the whole box from the box lengths by the kernel
+//! of the certificate's residual, one enclosed argument per vertex (B33, per-corner
+//! fallback where its quarter count is not certified); across cell boundaries (B35) each
+//! edge not certified Delaunay on the box contributes the hull of both configurations'
+//! angles. A vertex whose target `Θ_v` (enclosed) is disjoint from that enclosure has
 //! `θ_v(u') ≠ Θ_v` for every `u' ∈ B`: the box holds no solution.
 
-use super::certificate::{prepare, CertificateData, CertificateError, I};
-use crate::geometry::cone_angles::cone_angles;
+use super::certificate::{prepare, CertificateData, CertificateError, Rung, I};
+use crate::geometry::enclosure::angle_sums::enclose_cone_angles;
 use crate::scalar::{Interval, Mpfr, Real};
 
 /// A vertex whose target lies outside the enclosure of its angle sum over the box.
@@ -24,7 +26,8 @@ pub struct ExcludedVertex {
     pub angle_sum: (f64, f64),
 }
 
-/// Every vertex whose target `Θ_v` is certified outside `θ_v(B)` (B73); an empty list when
+/// Every vertex whose target `Θ_v` is certified outside `θ_v(B)` (B73, `θ_v(B)` enclosed by
+/// B33's kernel on the box lengths); an empty list when
 /// none is (no conclusion). `Ok(Err(reason))` when the box is not certified inside one
 /// Penner cell (then nothing is concluded). `base0` as in
 /// [`super::certificate::check_certificate_on`].
@@ -33,11 +36,12 @@ pub fn excluded_vertices(
     base0: Option<&[Interval<Mpfr>]>,
     bits: u32,
 ) -> Result<Result<Vec<ExcludedVertex>, String>, CertificateError> {
-    let p = match prepare(data, base0, bits)? {
+    let p = match prepare(data, base0, bits, Rung::Mpfr)? {
         Ok(p) => p,
         Err(reason) => return Ok(Err(reason)),
     };
-    let mut theta = cone_angles(&p.mesh, &p.box_lengths);
+    // One enclosed argument per vertex over the box lengths (B33), as for the residual.
+    let mut theta = enclose_cone_angles(&p.mesh, &p.box_lengths).theta;
     if let Some(b) = &p.boundary {
         // Across cell boundaries the angle sums are those of the Delaunay `T_S` (B35).
         if let Err(reason) = b.correct_angle_sums(&p.mesh, &p.boxed, &p.box_lengths, &mut theta) {

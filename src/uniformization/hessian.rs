@@ -3,12 +3,11 @@
 //! On a fixed triangulation the Hessian of `E(u)` is `H = −L`, `L` the cotan Laplacian of the
 //! scaled metric (MATH.md §7: `H_ij = −w_ij`, `H_ii = Σ_j w_ij`); it is positive
 //! semidefinite with the constants per component in its kernel. Fixing `u` at one vertex
-//! per component (the *grounded* vertices, [`Components`]) leaves a positive definite
+//! per component (the *grounded* vertices, [`Components`](super::components::Components)) leaves a positive definite
 //! matrix on the free vertices when all weights are positive, factored by faer's sparse
 //! `LLᵀ`. The symbolic factorization depends only on the sparsity pattern and is reused
 //! while flips leave the pattern unchanged.
 
-use super::components::Components;
 use crate::geometry::laplacian::{cotan_laplacian, SparseMatrix};
 use crate::mesh::Mesh;
 use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
@@ -102,10 +101,9 @@ impl Factor {
     }
 }
 
-/// The Newton direction on all vertices: `d = −H⁻¹ g` on the free vertices, `0` on the
-/// grounded ones.
-pub fn newton_direction(factor: &Factor, grad: &[f64], comps: &Components) -> Vec<f64> {
-    let (free, _) = comps.free_index();
+/// The Newton direction on all vertices: `d = −H⁻¹ g` on the free vertices `free` (in the
+/// order of the factored matrix), `0` on the others (grounded or fixed).
+pub fn newton_direction(factor: &Factor, grad: &[f64], free: &[usize]) -> Vec<f64> {
     let b: Vec<f64> = free.iter().map(|&v| -grad[v]).collect();
     let x = factor.solve(&b);
     let mut d = vec![0.0; grad.len()];

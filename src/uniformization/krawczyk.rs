@@ -74,7 +74,7 @@ fn inverse(mut a: Vec<Vec<f64>>) -> Option<Vec<Vec<f64>>> {
 /// Run the Krawczyk test on the box of `data` at `bits` of MPFR precision for the
 /// enclosures. proof: B72
 pub fn krawczyk(data: &CertificateData, bits: u32) -> Result<KrawczykOutcome, CertificateError> {
-    let p = match prepare(data, None, bits)? {
+    let p = match prepare(data, None, bits, super::certificate::Rung::Mpfr)? {
         Ok(p) => p,
         Err(reason) => return Ok(KrawczykOutcome::Undecided { reason }),
     };

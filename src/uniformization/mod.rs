@@ -11,6 +11,7 @@
 
 pub(crate) mod ball_argument;
 pub mod boundary;
+pub(crate) mod box_f64;
 pub(crate) mod cell_boundary;
 pub mod certificate;
 pub mod claim_form;

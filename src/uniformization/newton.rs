@@ -52,6 +52,17 @@ impl Default for UniformizeOptions {
     }
 }
 
+impl UniformizeOptions {
+    /// The Newton driver's limits (tolerance, iteration cap, halvings).
+    pub(crate) fn limits(&self) -> Limits {
+        Limits {
+            tolerance: self.tolerance,
+            max_iterations: self.max_iterations,
+            max_halvings: self.max_halvings,
+        }
+    }
+}
+
 /// One accepted Newton step.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct StepReport {
@@ -77,6 +88,27 @@ pub enum Stop {
     /// No acceptable step: the Hessian could not be factored, or the line search found
     /// no decrease, or the metric degenerated (a face not a triangle, lengths out of range).
     DegenerateStep(String),
+}
+
+impl Stop {
+    /// The stop of a Euclidean solve (closed surface or Dirichlet problem) from the
+    /// driver's, `residual_max` the last `max |Θ − θ|` (for the line search's message).
+    pub(crate) fn of_driver(
+        stop: DriverStop<String>,
+        opts: &UniformizeOptions,
+        residual_max: f64,
+    ) -> Stop {
+        match stop {
+            DriverStop::Converged => Stop::Converged,
+            DriverStop::IterationCap => Stop::IterationCap,
+            DriverStop::Factor(reason) => Stop::DegenerateStep(reason),
+            DriverStop::LineSearch(last) => Stop::DegenerateStep(format!(
+                "line search: {} after {} halvings at max residual {residual_max:e}",
+                last.unwrap_or_else(|| "no decrease of |∇E|".into()),
+                opts.max_halvings,
+            )),
+        }
+    }
 }
 
 /// The result of [`uniformize`]. `u` is meaningful only with [`Uniformization::converged`];
@@ -349,23 +381,8 @@ pub fn uniformize_with_progress(
         cache,
         sequence,
     };
-    let limits = Limits {
-        tolerance: opts.tolerance,
-        max_iterations: opts.max_iterations,
-        max_halvings: opts.max_halvings,
-    };
-    let run = drive(&mut sys, Over::ALL, u, ev, limits, progress);
-    let stop = match run.stop {
-        DriverStop::Converged => Stop::Converged,
-        DriverStop::IterationCap => Stop::IterationCap,
-        DriverStop::Factor(reason) => Stop::DegenerateStep(reason),
-        DriverStop::LineSearch(last) => Stop::DegenerateStep(format!(
-            "line search: {} after {} halvings at max residual {:e}",
-            last.unwrap_or_else(|| "no decrease of |∇E|".into()),
-            opts.max_halvings,
-            max_abs(&run.eval.grad)
-        )),
-    };
+    let run = drive(&mut sys, Over::ALL, u, ev, opts.limits(), progress);
+    let stop = Stop::of_driver(run.stop, opts, max_abs(&run.eval.grad));
     Ok(finish(
         run.eval,
         run.u,

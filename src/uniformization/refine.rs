@@ -14,7 +14,7 @@
 //! about `10⁻³¹`, which no precision removes (B69).
 
 use super::components::Components;
-use super::hessian::{grounded_hessian, CholeskyCache};
+use super::hessian::{grounded_hessian, newton_direction, CholeskyCache};
 use super::newton::Uniformization;
 use super::newton_driver::{refine_loop, Over};
 use crate::algorithms::flips::flip_ptolemy;
@@ -101,10 +101,19 @@ pub fn carry_lengths_from<T: Real>(
     Ok((m, l))
 }
 
-/// The scaled lengths `e^{(u_i+u_j)/2}·ℓ_ij` in `T`.
+/// The scaled lengths `e^{(u_i+u_j)/2}·ℓ_ij = e^{u_i/2}·e^{u_j/2}·ℓ_ij` in `T`: one
+/// exponential per vertex, two products per edge (on intervals, an enclosure by B20).
 pub fn scaled<T: Real>(mesh: &Mesh, base: &[T], u: &[T]) -> Vec<T> {
+    let Some(first) = base.first() else {
+        return Vec::new();
+    };
+    let half = first.lit(0.5);
+    let factor: Vec<T> = u.iter().map(|x| (x.clone() * &half).exp()).collect();
     mesh.edges()
-        .map(|e| scaled_edge(mesh, base, u, e))
+        .map(|e| {
+            let h = e.halfedge();
+            factor[mesh.tail(h).idx()].clone() * &factor[mesh.tip(h).idx()] * &base[e.idx()]
+        })
         .collect()
 }
 
@@ -320,14 +329,7 @@ pub fn refine_problem<T: Real>(
     };
     // H d = −∇E = −(Θ − θ) on the free vertices: the Newton correction from the f64
     // factor (zero at the vertices that keep their `u`).
-    let correction = |rf: &[f64]| {
-        let rhs: Vec<f64> = free.iter().map(|&v| -rf[v]).collect();
-        let mut d = vec![0.0; rf.len()];
-        for (&v, dv) in free.iter().zip(factor.solve(&rhs)) {
-            d[v] = dv;
-        }
-        d
-    };
+    let correction = |rf: &[f64]| newton_direction(&factor, rf, free);
     let limits = (tolerance, max_iterations);
     let over = Over(Some(measured));
     match refine_loop(u, ctx, limits, over, residual, correction)? {

@@ -92,7 +92,7 @@ pub struct EigenLowerBound {
 )] // the factorization reads as in CSparse
 pub fn lambda_min_lower_bound(a: &SymmetricLower, sigma: f64) -> Option<EigenLowerBound> {
     let n = a.n;
-    if n == 0 {
+    if n == 0 || u32::try_from(n).is_err() {
         return None;
     }
     let perm = ordering(a);
@@ -132,23 +132,22 @@ pub fn lambda_min_lower_bound(a: &SymmetricLower, sigma: f64) -> Option<EigenLow
             }
         }
     }
-    // Up-looking Cholesky: row k of L from a sparse triangular solve.
-    let mut cols: Vec<Vec<(usize, f64)>> = vec![Vec::new(); n]; // column i: (row, l_ri), diagonal first
-    let mut row_count = vec![0usize; n];
-    let mut x = vec![0.0f64; n];
+    // The pattern of each row of L (its reach in the elimination tree), first to count
+    // the entries of each column, then for the factorization itself.
     let mut mark = vec![NONE; n];
     let mut stack = vec![0usize; n];
     let mut pattern = vec![0usize; n];
-    for k in 0..n {
+    let mut reach = |k: usize, mark: &mut [usize], pattern: &mut [usize], x: Option<&mut [f64]>| {
         let mut top = n;
         mark[k] = k;
-        let mut d = 0.0;
+        let mut x = x;
         for &(i, v) in &upper[k] {
             if i == k {
-                d += v;
                 continue;
             }
-            x[i] += v;
+            if let Some(x) = x.as_deref_mut() {
+                x[i] += v;
+            }
             let mut len = 0;
             let mut j = i;
             while mark[j] != k {
@@ -166,34 +165,72 @@ pub fn lambda_min_lower_bound(a: &SymmetricLower, sigma: f64) -> Option<EigenLow
                 pattern[top] = stack[len];
             }
         }
+        top
+    };
+    let mut col_ptr = vec![0usize; n + 1];
+    for k in 0..n {
+        let top = reach(k, &mut mark, &mut pattern, None);
         for &i in &pattern[top..n] {
-            let lii = cols[i][0].1;
+            col_ptr[i + 1] += 1;
+        }
+        col_ptr[k + 1] += 1;
+    }
+    for k in 0..n {
+        col_ptr[k + 1] += col_ptr[k];
+    }
+    // Up-looking Cholesky: row k of L from a sparse triangular solve. Column i of L is
+    // stored at col_ptr[i]..next[i] (diagonal first, then rows in increasing order).
+    let nnz = col_ptr[n];
+    let mut row_idx = vec![0u32; nnz];
+    let mut val = vec![0.0f64; nnz];
+    let mut next: Vec<usize> = col_ptr[..n].to_vec();
+    let mut row_count = vec![0usize; n];
+    let mut x = vec![0.0f64; n];
+    mark.fill(NONE);
+    for k in 0..n {
+        let top = reach(k, &mut mark, &mut pattern, Some(&mut x));
+        let mut d = 0.0;
+        for &(i, v) in &upper[k] {
+            if i == k {
+                d += v;
+            }
+        }
+        for &i in &pattern[top..n] {
+            let lii = val[col_ptr[i]];
             let lki = x[i] / lii;
             x[i] = 0.0;
-            for &(r, lri) in &cols[i][1..] {
-                x[r] -= lri * lki;
+            for p in col_ptr[i] + 1..next[i] {
+                x[row_idx[p] as usize] -= val[p] * lki;
             }
             d -= lki * lki;
-            cols[i].push((k, lki));
+            row_idx[next[i]] = k as u32;
+            val[next[i]] = lki;
+            next[i] += 1;
             row_count[k] += 1;
         }
         if !(d > 0.0 && d.is_finite()) {
             return None;
         }
-        cols[k].push((k, d.sqrt()));
+        row_idx[next[k]] = k as u32;
+        val[next[k]] = d.sqrt();
+        next[k] += 1;
     }
     // ‖|L||Lᵀ|‖_∞ = max_i Σ_k |l_ik| Σ_j |l_jk|, sums of nonnegative terms rounded to
     // nearest and then inflated (B70).
     let m = row_count.iter().copied().max().unwrap_or(0);
     let u = f64::EPSILON / 2.0;
-    let colsum: Vec<f64> = cols
-        .iter()
-        .map(|c| c.iter().map(|&(_, v)| v.abs()).sum::<f64>())
+    let colsum: Vec<f64> = (0..n)
+        .map(|c| {
+            val[col_ptr[c]..next[c]]
+                .iter()
+                .map(|v| v.abs())
+                .sum::<f64>()
+        })
         .collect();
     let mut rowsum = vec![0.0f64; n];
-    for (k, c) in cols.iter().enumerate() {
-        for &(i, v) in c {
-            rowsum[i] += v.abs() * colsum[k];
+    for (k, &ck) in colsum.iter().enumerate() {
+        for p in col_ptr[k]..next[k] {
+            rowsum[row_idx[p] as usize] += val[p].abs() * ck;
         }
     }
     let s = rowsum.iter().copied().fold(0.0, f64::max);

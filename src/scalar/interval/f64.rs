@@ -243,6 +243,9 @@ impl IntervalBound for f64 {
     fn cmp_bound(&self, o: &f64) -> Option<Ordering> {
         self.partial_cmp(o)
     }
+    fn cmp_zero(&self) -> Option<Ordering> {
+        self.partial_cmp(&0.0)
+    }
     fn floor_bound(&self) -> f64 {
         self.floor()
     }

@@ -112,6 +112,9 @@ impl IntervalBound for Mpfr {
     fn cmp_bound(&self, o: &Mpfr) -> Option<Ordering> {
         self.0.partial_cmp(&o.0)
     }
+    fn cmp_zero(&self) -> Option<Ordering> {
+        self.0.cmp0()
+    }
     fn floor_bound(&self) -> Mpfr {
         Mpfr(Float::with_val(self.0.prec(), self.0.floor_ref()))
     }
