@@ -13,7 +13,7 @@ use penner::uniformization::hyperbolic::{uniformize_hyperbolic, HyperbolicOption
 use penner::uniformization::hyperbolic_certificate::{
     certify_hyperbolic, refine_hyperbolic, Existence,
 };
-use penner::uniformization::hyperbolic_claim::to_claim;
+use penner::uniformization::hyperbolic_claim::{to_claim, ClaimData};
 use penner::uniformization::Targets;
 use rug::float::Constant;
 use rug::{Float, Rational};
@@ -33,7 +33,14 @@ fn certified_claim(m: &Mesh, l: &[f64], bits: u32) -> (Value, f64) {
     let Existence::Holds { radius, .. } = cert.existence else {
         panic!("not certified: {:?}", cert.existence);
     };
-    let claim = to_claim(m, l, &targets, &u, radius, cert.residual_norm2, bits);
+    let data = ClaimData {
+        mesh: &sol.t0,
+        lengths: &sol.lengths,
+        flips: &sol.flips,
+        targets: &targets,
+        u: &u,
+    };
+    let claim = to_claim(&data, radius, cert.residual_norm2, bits);
     (claim, radius)
 }
 

@@ -234,7 +234,7 @@ fn b68_gauss_bonnet_area_by_lhuilier_at_the_solution() {
             continue;
         }
         solved += 1;
-        let area = total_area_lhuilier(&m, &sol.scaled_lengths()).unwrap();
+        let area = total_area_lhuilier(&sol.mesh, &sol.scaled_lengths()).unwrap();
         let expected = 4.0 * PI * f64::from(g - 1);
         let tol = m.n_vertices() as f64 * sol.residual_max + m.n_faces() as f64 * 1e-13;
         assert!(
@@ -249,7 +249,7 @@ fn b68_gauss_bonnet_area_by_lhuilier_at_the_solution() {
         );
         let mut bad = sol.clone();
         bad.u[0] += 1e-4;
-        let a1 = total_area_lhuilier(&m, &bad.scaled_lengths()).unwrap();
+        let a1 = total_area_lhuilier(&bad.mesh, &bad.scaled_lengths()).unwrap();
         assert!(
             (a1 - expected).abs() > tol,
             "seed {seed}: perturbed area {a1}"
