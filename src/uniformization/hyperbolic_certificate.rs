@@ -341,12 +341,8 @@ pub fn existence_with_flips(
     norm2: f64,
     prec: Precision,
 ) -> Existence {
-    let found = existence_on_box(mesh, base, u, radius, norm2, prec);
-    if !matches!(found, Existence::Holds { .. }) {
-        return found;
-    }
     match delaunay_on_box(mesh, base, &box_around(u, radius, prec)) {
-        Ok(()) => found,
+        Ok(()) => existence_on_box(mesh, base, u, radius, norm2, prec),
         Err(reason) => Existence::Undecided {
             reason: format!("{reason} of radius {:e}", radius.to_f64()),
         },
