@@ -3,9 +3,10 @@
 //! it from scratch without the solver (B39).
 //!
 //! A kind of its own rather than a field of `uniformization`: the equation (`θ_hyp`, sinh
-//! scaling), the triangulation (the surface's own, no flips, no grounded vertex) and the
-//! proof (B39, not B71) all differ, and so do the fields. Fields besides the common ones:
-//! `targets` (`Θ_i/π`, exact, one per vertex), `u` (exact decimal strings), `radius` (the
+//! scaling), the flips (hyperbolic λ-Ptolemy, Leibon's Delaunay condition), no grounded
+//! vertex, and the proof (B39, B89, not B71) all differ, and so do the fields. Fields
+//! besides the common ones: `targets` (`Θ_i/π`, exact, one per vertex), optional `flips`
+//! (below), `u` (exact decimal strings), `radius` (the
 //! sup-norm box) and `residual_bound` (a claimed upper bound on `‖Θ − θ_hyp(u)‖₂`). The
 //! surface's lengths are read as *hyperbolic* lengths, exactly (any metric of the surface
 //! format; `penner uniformize --hyperbolic` writes the binary64 lengths it solved for).

@@ -382,6 +382,11 @@ fn b39_cli_uniformize_hyperbolic_certifies_and_refuses_bad_input() {
     let shown = format!("{}{}", text(&out.stdout), text(&out.stderr));
     assert_eq!(out.status.code(), Some(0), "{shown}");
     assert!(shown.contains("certified"), "{shown}");
+    // B87: the flip counts are printed (the equilateral surface is Delaunay throughout).
+    assert!(
+        shown.contains("0 geometric flips") && shown.contains("0 Ptolemy flips"),
+        "{shown}"
+    );
     let written = std::fs::read_to_string(&res).unwrap();
     let mut doc: serde_json::Value = serde_json::from_str(&written).unwrap();
     assert_eq!(doc["kind"], "hyperbolic_uniformization");
