@@ -49,11 +49,12 @@ pub fn refine_hyperbolic<T: Real>(
     max_iterations: usize,
 ) -> Result<Refinement<T>, HyperbolicError> {
     let mesh = &sol.mesh;
-    let factor = super::hyperbolic::hessian_factor_log(mesh, &sol.base_log, &sol.u).ok_or_else(
-        || HyperbolicError::NotATriangle {
-            face: first_bad_face(mesh, &sol.base_log, &sol.u),
-        },
-    )?;
+    let factor =
+        super::hyperbolic::hessian_factor_log(mesh, &sol.base_log, &sol.u).ok_or_else(|| {
+            HyperbolicError::NotATriangle {
+                face: first_bad_face(mesh, &sol.base_log, &sol.u),
+            }
+        })?;
     let base0: Vec<T> = sol
         .lengths
         .iter()
@@ -84,7 +85,9 @@ pub fn scaled_from_base<T: Real>(mesh: &Mesh, base: &[T], u: &[T]) -> Vec<T> {
     mesh.edges()
         .map(|e| {
             let h = e.halfedge();
-            length_from_log(&(base[e.idx()].clone() + &u[mesh.tail(h).idx()] + &u[mesh.tip(h).idx()]))
+            length_from_log(
+                &(base[e.idx()].clone() + &u[mesh.tail(h).idx()] + &u[mesh.tip(h).idx()]),
+            )
         })
         .collect()
 }
@@ -98,9 +101,9 @@ pub fn base_log_i(lengths: &[I]) -> Vec<I> {
 fn first_bad_face(mesh: &Mesh, base: &[f64], u: &[f64]) -> u32 {
     mesh.faces()
         .find(|&f| {
-            let lam = mesh.face_halfedges(f).map(|h| {
-                base[h.edge().idx()] + u[mesh.tail(h).idx()] + u[mesh.tip(h).idx()]
-            });
+            let lam = mesh
+                .face_halfedges(f)
+                .map(|h| base[h.edge().idx()] + u[mesh.tail(h).idx()] + u[mesh.tip(h).idx()]);
             super::hyperbolic_kernel::face_terms(lam).is_none()
         })
         .map_or(u32::MAX, |f| f.0)
@@ -145,9 +148,7 @@ fn log_lengths_i(mesh: &Mesh, base: &[I], u: &[I]) -> Vec<I> {
     mesh.edges()
         .map(|e| {
             let h = e.halfedge();
-            base[e.idx()].clone()
-                + &u[mesh.tail(h).idx()]
-                + &u[mesh.tip(h).idx()]
+            base[e.idx()].clone() + &u[mesh.tail(h).idx()] + &u[mesh.tip(h).idx()]
         })
         .collect()
 }

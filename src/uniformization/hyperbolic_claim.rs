@@ -260,13 +260,12 @@ pub fn recheck(
     let lengths: Vec<Interval<Mpfr>> = surface.lengths(prec);
     let base0 = base_log_i(&lengths);
     let flips = flip_edges(mesh, claim)?;
-    let (tk, base) = replay_ptolemy(mesh, &base0, &flips).map_err(|e| {
-        HyperbolicClaimError::Flip {
+    let (tk, base) =
+        replay_ptolemy(mesh, &base0, &flips).map_err(|e| HyperbolicClaimError::Flip {
             position: e.position,
             index: claim.flips.as_ref().map_or(0, |f| f[e.position]),
             reason: e.reason.to_string(),
-        }
-    })?;
+        })?;
     if claim.flips.is_some() {
         let zero = vec![Interval::from_f64(0.0, prec); mesh.n_vertices()];
         if let Err(reason) = delaunay_on_box(mesh, &base0, &zero) {
@@ -341,16 +340,14 @@ pub fn recheck(
     } else {
         existence_on_box(mesh, &base, &claim.u, &claim.radius, upper, prec)
     };
-    Ok(
-        match found {
-            Existence::Holds { distance, mu, .. } => HyperbolicVerdict::Holds {
-                distance,
-                mu,
-                residual: upper,
-            },
-            Existence::Undecided { reason } => HyperbolicVerdict::Undecided { reason },
+    Ok(match found {
+        Existence::Holds { distance, mu, .. } => HyperbolicVerdict::Holds {
+            distance,
+            mu,
+            residual: upper,
         },
-    )
+        Existence::Undecided { reason } => HyperbolicVerdict::Undecided { reason },
+    })
 }
 
 /// The refutation by hyperbolic Gauss–Bonnet (B38, B39): targets leaving no area on a

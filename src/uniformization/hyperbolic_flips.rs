@@ -163,17 +163,23 @@ pub fn ptolemy_to_delaunay(
     u: &[f64],
     flips: &mut Vec<Edge>,
 ) -> Result<usize, FlipFault> {
-    run_flips(mesh, base, flips, |mesh, x, e| {
-        let q = quad(mesh, e).ok_or(FlipFault::Unflippable(e.0))?;
-        let s = q.map(|h| x[h.edge().idx()]);
-        Ok(ptolemy_log_f64(x[e.idx()], s))
-    }, |mesh, x, e| {
-        let scaled = |g: Edge| {
-            let h = g.halfedge();
-            x[g.idx()] + u[mesh.tail(h).idx()] + u[mesh.tip(h).idx()]
-        };
-        leibon_sum(mesh, e, &scaled).map_err(FlipFault::NotATriangle)
-    })
+    run_flips(
+        mesh,
+        base,
+        flips,
+        |mesh, x, e| {
+            let q = quad(mesh, e).ok_or(FlipFault::Unflippable(e.0))?;
+            let s = q.map(|h| x[h.edge().idx()]);
+            Ok(ptolemy_log_f64(x[e.idx()], s))
+        },
+        |mesh, x, e| {
+            let scaled = |g: Edge| {
+                let h = g.halfedge();
+                x[g.idx()] + u[mesh.tail(h).idx()] + u[mesh.tip(h).idx()]
+            };
+            leibon_sum(mesh, e, &scaled).map_err(FlipFault::NotATriangle)
+        },
+    )
 }
 
 /// The flip loop shared by the Ptolemy and the geometric passes: a queue of edges, each
@@ -200,7 +206,9 @@ fn run_flips(
         let q = quad(mesh, e).ok_or(FlipFault::Unflippable(e.0))?;
         let v = new_x(mesh, x, e)?;
         if !v.is_finite() {
-            return Err(FlipFault::NotATriangle(mesh.face(e.side(0)).map_or(u32::MAX, |f| f.0)));
+            return Err(FlipFault::NotATriangle(
+                mesh.face(e.side(0)).map_or(u32::MAX, |f| f.0),
+            ));
         }
         mesh.flip(e).map_err(|_| FlipFault::Unflippable(e.0))?;
         x[e.idx()] = v;

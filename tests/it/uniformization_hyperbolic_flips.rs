@@ -93,7 +93,10 @@ fn b87_random_genus2_metrics_needing_flips_solve_and_certify() {
     ] {
         let (m, l) = random_case(nv, seed, lo, hi);
         let sol = solve(&m, &l);
-        assert!(!sol.flips.is_empty(), "nv {nv} seed {seed}: no flips needed");
+        assert!(
+            !sol.flips.is_empty(),
+            "nv {nv} seed {seed}: no flips needed"
+        );
         with_input_flips += usize::from(!sol.input_flips.is_empty());
         let (_, claim, radius) = certified(&sol);
         assert_eq!(claim["flips"].as_array().unwrap().len(), sol.flips.len());
@@ -106,7 +109,10 @@ fn b87_random_genus2_metrics_needing_flips_solve_and_certify() {
         );
         assert!(a.certified && a.max_discrepancy.unwrap() <= radius);
     }
-    assert!(with_input_flips >= 3, "only {with_input_flips} inputs were flipped");
+    assert!(
+        with_input_flips >= 3,
+        "only {with_input_flips} inputs were flipped"
+    );
 }
 
 /// B89 controls on one certified claim with flips: one flip replaced by another edge, the
@@ -161,7 +167,12 @@ fn b89_flip_claim_controls_are_not_certified() {
         let mut wide = claim.clone();
         wide["radius"] = json!(r);
         let a = answer(&wide);
-        assert_ne!(a.verdict, ClaimVerdict::Refuted, "radius {r}: {:?}", a.witnesses);
+        assert_ne!(
+            a.verdict,
+            ClaimVerdict::Refuted,
+            "radius {r}: {:?}",
+            a.witnesses
+        );
         if a.verdict == ClaimVerdict::Undecided {
             delaunay_reason |= a
                 .witnesses
@@ -169,7 +180,10 @@ fn b89_flip_claim_controls_are_not_certified() {
                 .any(|w| w.detail.contains("not certified hyperbolic Delaunay"));
         }
     }
-    assert!(delaunay_reason, "no box was refused for a non-Delaunay edge");
+    assert!(
+        delaunay_reason,
+        "no box was refused for a non-Delaunay edge"
+    );
     // Without the `flips` field: the fixed-triangulation claim on T₀ (B39), answered.
     let mut old = claim.clone();
     old.as_object_mut().unwrap().remove("flips");
