@@ -21,8 +21,8 @@ use penner::scalar::{Dd, Mpfr, Precision, Real};
 use penner::uniformization::hyperbolic::{
     gershgorin_estimate_log, uniformize_hyperbolic, HyperbolicOptions,
 };
-use penner::uniformization::hyperbolic_flips::leibon_sum;
 use penner::uniformization::hyperbolic_certificate::{certify_hyperbolic, refine_hyperbolic};
+use penner::uniformization::hyperbolic_flips::leibon_sum;
 use penner::uniformization::Targets;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -82,15 +82,23 @@ fn main() -> ExitCode {
     let t = Instant::now();
     // Double-double up to 128 bits, MPFR at `bits` beyond (residual to 2⁻⁽ᵇⁱᵗˢ⁻⁵⁶⁾).
     let refined = if bits <= 128 {
-        refine_hyperbolic::<Dd>(&sol, (), 1e-28, 30)
-            .map(|r| (r.residual_max(), r.u.iter().filter_map(Real::to_rational).collect()))
+        refine_hyperbolic::<Dd>(&sol, (), 1e-28, 30).map(|r| {
+            (
+                r.residual_max(),
+                r.u.iter().filter_map(Real::to_rational).collect(),
+            )
+        })
     } else {
         let Ok(prec) = Precision::new(u64::from(bits)) else {
             eprintln!("{bits} bits out of range");
             return ExitCode::FAILURE;
         };
-        refine_hyperbolic::<Mpfr>(&sol, prec, 2f64.powi(56 - bits as i32), 60)
-            .map(|r| (r.residual_max(), r.u.iter().filter_map(Real::to_rational).collect()))
+        refine_hyperbolic::<Mpfr>(&sol, prec, 2f64.powi(56 - bits as i32), 60).map(|r| {
+            (
+                r.residual_max(),
+                r.u.iter().filter_map(Real::to_rational).collect(),
+            )
+        })
     };
     let Ok((residual, u)): Result<(f64, Vec<Rational>), _> = refined else {
         eprintln!("refinement failed");
@@ -99,7 +107,11 @@ fn main() -> ExitCode {
     let t_refine = t.elapsed().as_secs_f64();
     println!(
         "refinement ({}): max |Θ − θ| = {residual:e}, {t_refine:.3} s ({:.1}× the solve)",
-        if bits <= 128 { "Dd".to_string() } else { format!("MPFR {bits}") },
+        if bits <= 128 {
+            "Dd".to_string()
+        } else {
+            format!("MPFR {bits}")
+        },
         t_refine / t_solve
     );
     let t = Instant::now();

@@ -239,7 +239,7 @@ pub fn geometric_to_delaunay(
         &mut m,
         &mut x,
         &mut flips,
-        |mesh, x, e| other_diagonal_log(mesh, x, e),
+        other_diagonal_log,
         |mesh, x, e| leibon_sum(mesh, e, &|g| x[g.idx()]).map_err(FlipFault::NotATriangle),
     )?;
     let mut flipped = vec![false; m.n_edges()];

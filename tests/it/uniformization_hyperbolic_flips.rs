@@ -248,7 +248,8 @@ fn residual_by_law_of_cosines(m: &Mesh, lam: &[Float], u: &[f64]) -> f64 {
         .edges()
         .map(|e| {
             let h = e.halfedge();
-            let s = Float::with_val(256, (u[m.tail(h).idx()] + u[m.tip(h).idx()]) / 2.0).exp();
+            let sum = Float::with_val(256, u[m.tail(h).idx()]) + u[m.tip(h).idx()];
+            let s = Float::with_val(256, sum / 2u32).exp();
             let half = Float::with_val(256, &lam[e.idx()] * s) / 2u32;
             let l = Float::with_val(256, half.asinh() * 2u32);
             Mpfr::from_rational(&l.to_rational().unwrap(), Precision::new(256).unwrap())
