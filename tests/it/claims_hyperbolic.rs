@@ -77,9 +77,8 @@ fn shifted(claim: &Value, delta: &Rational) -> Value {
 /// residual bound; at 128 bits the 256-bit claim is undecided, never refuted.
 #[test]
 fn b39_hyperbolic_claim_round_trip_holds_and_is_refuted_only_with_a_proof() {
-    // A random genus-2 surface whose solution needs no flips (the first of a few, fewest
-    // vertices last; on a fixed triangulation a solution need not exist), else genus 3 with
-    // one vertex and random lengths.
+    // The first random genus-2 surface that converges (with flips every one does, B87),
+    // else genus 3 with one vertex and random lengths.
     let candidates = (0..24u64).map(|k| {
         let (seed, nv) = (k % 8, 4 - (k / 8) as u32);
         let m = builders::random_surface(2, nv, seed).unwrap();
@@ -97,7 +96,7 @@ fn b39_hyperbolic_claim_round_trip_holds_and_is_refuted_only_with_a_proof() {
             uniformize_hyperbolic(m, l, &t, &HyperbolicOptions::default())
                 .is_ok_and(|s| s.converged())
         })
-        .expect("a random genus-2 surface solved without flips");
+        .expect("a random genus-2 surface solved");
     let cases = [(builders::genus(2).unwrap(), vec![1.0; 9]), random];
     for (k, (m, l)) in cases.iter().enumerate() {
         let (claim, radius) = certified_claim(m, l, 256);
