@@ -404,6 +404,24 @@ fn b39_cli_uniformize_hyperbolic_certifies_and_refuses_bad_input() {
     let again = penner(&["uniformize", &surf, "--hyperbolic", "-o", &res]);
     assert_eq!(again.status.code(), Some(4), "{}", text(&again.stderr));
     assert_eq!(std::fs::read_to_string(&res).unwrap(), written);
+    // B87: a random 8-vertex genus-2 metric needing geometric and Ptolemy flips certifies
+    // through the CLI, and its claim (with `flips`) re-checks to holds.
+    let m = builders::random_surface(2, 8, 2).unwrap();
+    let l = random_lengths(&m, 1.0, 1.9, 2);
+    let flipped = surface_file(&d, "random8", m, &l);
+    let res8 = d.join("random8-result.json").display().to_string();
+    let out = penner(&["uniformize", &flipped, "--hyperbolic", "-o", &res8]);
+    let shown = format!("{}{}", text(&out.stdout), text(&out.stderr));
+    assert_eq!(out.status.code(), Some(0), "{shown}");
+    assert!(
+        !shown.contains("0 geometric flips") && !shown.contains(" 0 Ptolemy flips"),
+        "{shown}"
+    );
+    let doc: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&res8).unwrap()).unwrap();
+    assert!(!doc["flips"].as_array().unwrap().is_empty());
+    let recheck = penner(&["certify", &res8]);
+    assert_eq!(recheck.status.code(), Some(0), "{}", text(&recheck.stdout));
     // Genus 1: typed refusal.
     let torus = surface_file(&d, "torus", builders::one_vertex_torus(), &[1.0, 1.0, 1.5]);
     let out = penner(&["uniformize", &torus, "--hyperbolic"]);
