@@ -150,6 +150,10 @@ int main(int argc, char** argv) {
          "holds", 0},
         {"hyperbolic tetrahedron: cone angles pi/2 at u to 60 digits", hyperbolic_claim("1/2", kHyperbolicU),
          "holds", 0},
+        {"hyperbolic tetrahedron with an (empty) flip sequence: hyperbolic Delaunay, certified",
+         hyperbolic_claim("1/2", kHyperbolicU).substr(0, hyperbolic_claim("1/2", kHyperbolicU).size() - 1) +
+             R"(, "flips": []})",
+         "holds", 0},
         {"hyperbolic tetrahedron: u rounded to 1.154349", hyperbolic_claim("1/2", "1.154349"), "refuted", 1},
         {"hyperbolic target 2 pi on a sphere (Gauss-Bonnet leaves no area)", hyperbolic_claim("2", "0"),
          "refuted", 1},

@@ -143,6 +143,8 @@ def main():
          "bad_input", 3),
         ("hyperbolic uniformization: u* of another solver (60 digits), certified by penner",
          hyperbolic_claim("1/2", hyperbolic_u()), "holds", 0),
+        ("hyperbolic uniformization with an (empty) flip sequence: the tetrahedron is hyperbolic Delaunay",
+         dict(hyperbolic_claim("1/2", hyperbolic_u()), flips=[]), "holds", 0),
         ("hyperbolic uniformization: u rounded to 1.154349 (no solution within the radius, proved)",
          hyperbolic_claim("1/2", "1.154349"), "refuted", 1, "v0"),
         ("hyperbolic target 2*pi on a sphere: Gauss-Bonnet leaves no area",

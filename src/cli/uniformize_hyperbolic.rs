@@ -1,7 +1,7 @@
 //! `penner uniformize SURFACE --hyperbolic [--targets FILE] [--precision P] [-o RESULT.json]`:
-//! the hyperbolic target (notes Thm 11; B38, B39). The input lengths (rounded to binary64)
-//! are read as hyperbolic lengths of the same triangulation; Newton on the fixed
-//! triangulation, refinement, the residual enclosed in MPFR intervals and an existence
+//! the hyperbolic target (notes Thm 11; B38, B39, B87, B89, B104). The input lengths
+//! (rounded to binary64) are read as hyperbolic lengths; geometric flips to hyperbolic
+//! Delaunay, Newton over Penner cells with Ptolemy flips (counts printed), refinement, the residual enclosed in MPFR intervals and an existence
 //! radius (certified); the Gauss–Bonnet area by L'Huilier is numerical and says so. With
 //! `-o`, a certified result is written as a `hyperbolic_uniformization` claim that
 //! `penner certify` re-checks from scratch.
@@ -16,7 +16,7 @@ use penner::uniformization::hyperbolic::{
 use penner::uniformization::hyperbolic_certificate::{
     certify_hyperbolic, refine_hyperbolic, total_area_lhuilier, Existence,
 };
-use penner::uniformization::hyperbolic_claim::to_claim;
+use penner::uniformization::hyperbolic_claim::{to_claim, ClaimData};
 use penner::uniformization::Targets;
 use rug::Rational;
 use std::fmt::Write as _;
@@ -43,15 +43,17 @@ pub fn run(
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "{shown}: hyperbolic target (lengths read as hyperbolic lengths, fixed triangulation): {} Newton steps, max |Θ − θ| = {:e} (f64)",
+        "{shown}: hyperbolic target (lengths read as hyperbolic lengths): {} geometric flips to hyperbolic Delaunay, {} Newton steps, {} Ptolemy flips, max |Θ − θ| = {:e} (f64)",
+        sol.input_flips.len(),
         sol.steps.len(),
+        sol.flips.len(),
         sol.residual_max
     );
     if !sol.converged() {
         let why = match &sol.stop {
-            HyperbolicStop::NeedsFlips { face } => format!(
-                "face f{face} degenerates along the Newton path: this triangulation needs flips (not implemented for the hyperbolic target)"
-            ),
+            HyperbolicStop::Degenerate(reason) => {
+                format!("degenerate along the Newton path even after flips: {reason}")
+            }
             other => format!("{other:?}"),
         };
         let _ = writeln!(out, "not converged: {why}; no certificate");
@@ -107,7 +109,7 @@ pub fn run(
         }
     };
     let scaled = sol.scaled_lengths();
-    let area = total_area_lhuilier(&mesh, &scaled);
+    let area = total_area_lhuilier(&sol.mesh, &scaled);
     let gauss_bonnet = {
         let k: f64 = targets
             .over_pi()
@@ -144,15 +146,14 @@ fn write_claim(
         out.push_str("no certificate written\n");
         return Ok(());
     };
-    let claim = to_claim(
-        &sol.mesh,
-        &sol.lengths,
-        &sol.targets,
+    let data = ClaimData {
+        mesh: &sol.t0,
+        lengths: &sol.lengths,
+        flips: &sol.flips,
+        targets: &sol.targets,
         u,
-        *radius,
-        cert.residual_norm2,
-        bits,
-    );
+    };
+    let claim = to_claim(&data, *radius, cert.residual_norm2, bits);
     let text = serde_json::to_string_pretty(&claim).unwrap_or_default() + "\n";
     let mut f = create_new(path)?;
     f.write_all(text.as_bytes()).map_err(|e| CliError::Write {

@@ -96,9 +96,10 @@ pub enum Assertion {
     /// Thm 9; re-check: `uniformization::sphere_claim`, B90, B76, B74).
     SphereUniformization(crate::uniformization::sphere_claim::SphereClaim),
     /// `hyperbolic_uniformization`: an exact solution `u*` of `θ_hyp(u*) = Θ` (sinh
-    /// scaling, the surface's lengths read as hyperbolic lengths, its own triangulation)
-    /// exists within `radius` (sup norm) of the given `u`, and `‖Θ − θ_hyp(u)‖₂ ≤
-    /// residual_bound` (notes Thm 11; `uniformization::hyperbolic_claim`, B39).
+    /// scaling, the surface's lengths read as hyperbolic lengths; its own triangulation, or
+    /// with optional `flips` the one their λ-Ptolemy flips reach, Delaunay at `u*`) exists
+    /// within `radius` (sup norm) of the given `u`, and `‖Θ − θ_hyp(u)‖₂ ≤ residual_bound`
+    /// (notes Thm 11; `uniformization::hyperbolic_claim`, B39, B87, B89).
     HyperbolicUniformization(crate::uniformization::hyperbolic_claim::HyperbolicClaim),
     /// `circle_packing`: the circles (plane) or caps (sphere) realize the surface's
     /// triangulation as a tangency packing within `epsilon`: every edge's tangency defect
@@ -255,7 +256,7 @@ const KIND_FIELDS: [(&str, &[&str]); 12] = [
     ),
     (
         "hyperbolic_uniformization",
-        &["targets", "u", "radius", "residual_bound"],
+        &["targets", "flips", "u", "radius", "residual_bound"],
     ),
     ("circle_packing", &["centres", "radii", "caps", "epsilon"]),
     (
@@ -471,7 +472,7 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
 }
 
 /// The array of edge indices at `key`.
-fn edge_indices(v: &Value, key: &str) -> Result<Vec<usize>, ClaimError> {
+pub(crate) fn edge_indices(v: &Value, key: &str) -> Result<Vec<usize>, ClaimError> {
     v.get(key)
         .ok_or_else(|| err(format!("{key}: required")))?
         .as_array()

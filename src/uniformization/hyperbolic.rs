@@ -7,14 +7,19 @@
 //! Euclidean triangle inequalities are the same inequality). Unlike the Euclidean target
 //! the problem is not scale invariant: `2ℓ` is a different hyperbolic metric.
 //!
-//! **Solver.** Newton on `E_hyp` (T33) on the *fixed* input triangulation: gradient
-//! `Θ − θ_hyp(u)`, Hessian from [`face_terms`] (B38: per side `½ cot β[(du_i − du_j)² +
-//! tanh²(ℓ̃/2)(du_i + du_j)²]`). `E_hyp` is strictly convex with no gauge (the
-//! `(du_i + du_j)²` terms), so no vertex is grounded. Sparse `LLᵀ` by faer, the symbolic
-//! factorization kept ([`CholeskyCache`]); the line search of [`super::newton`] (decrease
-//! of `|∇E|` with the projected gradient `∇E(u + td)·d ≤ 0`, or a halved residual).
-//! No flips: when a face stops being a triangle and the line search cannot get around it,
-//! the solve stops with [`HyperbolicStop::NeedsFlips`] naming the face, never a wrong `u`.
+//! **Solver (B87).** The input is first made hyperbolic Delaunay by geometric flips
+//! ([`geometric_to_delaunay`], B104), giving `T₀` with binary64 lengths. Newton on `E_hyp`
+//! (T33) over Penner cells: at every evaluated `u` the current triangulation is flipped to
+//! hyperbolic Delaunay by Ptolemy flips of the base λ-lengths ([`ptolemy_to_delaunay`];
+//! flips commute with scaling, B87 step 1), then the gradient `Θ − θ_hyp(u)` and the
+//! Hessian from [`face_terms`] (B38: per side `½ cot β[(du_i − du_j)² +
+//! tanh²(ℓ̃/2)(du_i + du_j)²]`) are taken on that triangulation. `E_hyp` is strictly convex
+//! with no gauge (the `(du_i + du_j)²` terms), so no vertex is grounded. Sparse `LLᵀ` by
+//! faer, the symbolic factorization kept while the pattern stays ([`CholeskyCache`]); the
+//! line search of [`super::newton_driver`]. The flips from `T₀` are recorded in order
+//! ([`HyperbolicUniformization::flips`]) for the certificate (B89). A face that is not a
+//! triangle even after flipping makes the line search halve; a solve that cannot get around
+//! it stops with [`HyperbolicStop::Degenerate`], never a wrong `u`.
 //!
 //! **Gauss–Bonnet.** `Σ_i (2π − Θ_i) − Area = 2πχ` with `Area > 0`: the targets must have
 //! `Σ_i (2π − Θ_i) > 2πχ` on every component (decided exactly, `Θ_i/π` rational); for
@@ -23,11 +28,12 @@
 use super::components::Components;
 use super::error::UniformizeError;
 use super::hessian::{CholeskyCache, GroundedHessian};
+use super::hyperbolic_flips::{geometric_to_delaunay, ptolemy_to_delaunay, FlipFault};
 use super::hyperbolic_kernel::{face_terms, log_length};
 use super::newton::StepReport;
 use super::newton_driver::{drive, DriverStop, Limits, NewtonSystem, Over};
 use super::targets::Targets;
-use crate::mesh::Mesh;
+use crate::mesh::{Edge, Mesh};
 use faer::sparse::{SparseColMat, Triplet};
 use rug::Rational;
 use std::collections::HashMap;
@@ -60,6 +66,22 @@ pub enum HyperbolicError {
     /// The precision is out of range.
     #[error("precision of {0} bits out of range")]
     Bits(u32),
+    /// The geometric flips to hyperbolic Delaunay (B104) or the Ptolemy flips at the
+    /// starting `u` stopped short.
+    #[error("flipping to hyperbolic Delaunay: {0}")]
+    Flips(FlipFault),
+    /// A flip sequence does not replay on the triangulation (B89).
+    #[error(transparent)]
+    Replay(#[from] super::hyperbolic_flips::ReplayError),
+}
+
+impl From<FlipFault> for HyperbolicError {
+    fn from(f: FlipFault) -> HyperbolicError {
+        match f {
+            FlipFault::NotATriangle(face) => HyperbolicError::NotATriangle { face },
+            other => HyperbolicError::Flips(other),
+        }
+    }
 }
 
 /// Solver options (as [`super::UniformizeOptions`]).
@@ -93,13 +115,10 @@ pub enum HyperbolicStop {
     Converged,
     /// The iteration cap was reached first.
     IterationCap,
-    /// The line search found no acceptable step and met a face that is no longer a
-    /// triangle: on this fixed triangulation the solution may not exist; flips (not
-    /// implemented for the hyperbolic target) would be needed.
-    NeedsFlips {
-        /// A face that degenerated in the last line search.
-        face: u32,
-    },
+    /// The line search found no acceptable step and met a degenerate configuration even
+    /// after flipping to Delaunay (a face not a triangle, an unflippable or non-convex
+    /// edge, the flip cap), with the reason.
+    Degenerate(String),
     /// No acceptable step for another reason (Hessian not factored, no decrease).
     DegenerateStep(String),
 }
@@ -108,15 +127,24 @@ pub enum HyperbolicStop {
 /// [`HyperbolicUniformization::converged`].
 #[derive(Clone, Debug)]
 pub struct HyperbolicUniformization {
-    /// The triangulation (the input's; no flips).
+    /// The final triangulation `T_k` (hyperbolic Delaunay at `u`).
     pub mesh: Mesh,
-    /// The input hyperbolic lengths `ℓ`.
+    /// `T₀`: the input made hyperbolic Delaunay by geometric flips (B104).
+    pub t0: Mesh,
+    /// The binary64 hyperbolic lengths `ℓ` of `T₀` (the input's where no geometric flip
+    /// touched the edge).
     pub lengths: Vec<f64>,
+    /// The geometric flips from the input to `T₀`, in order (B104).
+    pub input_flips: Vec<Edge>,
+    /// The Ptolemy flips from `T₀` to `T_k`, in order (B87; replayed by the certificate).
+    pub flips: Vec<Edge>,
+    /// The base logarithmic lengths `2 log sinh(ℓ/2)` of `T_k` at `u = 0` (binary64).
+    pub base_log: Vec<f64>,
     /// The log scale factors.
     pub u: Vec<f64>,
     /// The targets.
     pub targets: Targets,
-    /// Accepted steps (`flips` always 0).
+    /// Accepted steps (with their Ptolemy flip counts).
     pub steps: Vec<StepReport>,
     /// Why the solver stopped.
     pub stop: HyperbolicStop,
@@ -132,9 +160,9 @@ impl HyperbolicUniformization {
         self.stop == HyperbolicStop::Converged
     }
 
-    /// The scaled hyperbolic lengths `ℓ̃` at `u` (binary64).
+    /// The scaled hyperbolic lengths `ℓ̃` of `T_k` at `u` (binary64).
     pub fn scaled_lengths(&self) -> Vec<f64> {
-        scaled_log_lengths(&self.mesh, &self.lengths, &self.u)
+        scaled_base_log(&self.mesh, &self.base_log, &self.u)
             .into_iter()
             .map(super::hyperbolic_kernel::length_from_log)
             .collect()
@@ -143,10 +171,16 @@ impl HyperbolicUniformization {
 
 /// `λ̃_ij = 2 log sinh(ℓ_ij/2) + u_i + u_j` (binary64).
 pub fn scaled_log_lengths(mesh: &Mesh, lengths: &[f64], u: &[f64]) -> Vec<f64> {
+    let base: Vec<f64> = lengths.iter().map(|&l| log_length(l)).collect();
+    scaled_base_log(mesh, &base, u)
+}
+
+/// `λ̃_ij = x_ij + u_i + u_j` from base logarithmic lengths `x` (binary64).
+pub fn scaled_base_log(mesh: &Mesh, base: &[f64], u: &[f64]) -> Vec<f64> {
     mesh.edges()
         .map(|e| {
             let h = e.halfedge();
-            log_length(lengths[e.idx()]) + u[mesh.tail(h).idx()] + u[mesh.tip(h).idx()]
+            base[e.idx()] + u[mesh.tail(h).idx()] + u[mesh.tip(h).idx()]
         })
         .collect()
 }
@@ -306,8 +340,17 @@ impl Assembly {
     }
 }
 
-/// The hyperbolic angle sums and Hessian terms at one `u`.
+/// The hyperbolic angle sums and Hessian terms at one `u`, on the triangulation
+/// flipped to Delaunay there.
 struct Evaluation {
+    /// The triangulation at this `u`.
+    mesh: Mesh,
+    /// Its base logarithmic lengths.
+    base: Vec<f64>,
+    /// The Ptolemy flips from `T₀`.
+    flips: Vec<Edge>,
+    /// The flips made for this evaluation.
+    new_flips: usize,
     grad: Vec<f64>,
     /// `½ cot β` of the side of each half-edge in its face.
     weight: Vec<f64>,
@@ -315,8 +358,15 @@ struct Evaluation {
     t2: Vec<f64>,
 }
 
+/// The angle sums and Hessian terms at `u` on a fixed triangulation.
+struct Terms {
+    grad: Vec<f64>,
+    weight: Vec<f64>,
+    t2: Vec<f64>,
+}
+
 /// Evaluate at `u`; `Err(face)` when a face is not a strict triangle (or a term overflows).
-fn evaluate(mesh: &Mesh, lambda0: &[f64], u: &[f64], theta: &[f64]) -> Result<Evaluation, u32> {
+fn evaluate(mesh: &Mesh, lambda0: &[f64], u: &[f64], theta: &[f64]) -> Result<Terms, u32> {
     let mut sum = vec![0.0; mesh.n_vertices()];
     let mut weight = vec![0.0; mesh.n_halfedges()];
     let mut t2 = vec![0.0; mesh.n_halfedges()];
@@ -332,13 +382,35 @@ fn evaluate(mesh: &Mesh, lambda0: &[f64], u: &[f64], theta: &[f64]) -> Result<Ev
         }
     }
     let grad = theta.iter().zip(&sum).map(|(t, s)| t - s).collect();
-    Ok(Evaluation { grad, weight, t2 })
+    Ok(Terms { grad, weight, t2 })
 }
 
-/// Solve `θ_hyp(u) = Θ` on the fixed triangulation `mesh` with hyperbolic edge lengths
-/// `lengths` (module doc: convention, line search, no flips). Bad input is a typed error;
-/// a solve that does not reach `opts.tolerance` returns `Ok` with the reason
-/// ([`HyperbolicStop`]), never a panic. proof: B38
+/// Flip `(mesh, base, flips)` to Delaunay at `u` (Ptolemy, B87) and evaluate there.
+fn evaluate_flipped(
+    mut mesh: Mesh,
+    mut base: Vec<f64>,
+    mut flips: Vec<Edge>,
+    u: &[f64],
+    theta: &[f64],
+) -> Result<Evaluation, FlipFault> {
+    let new_flips = ptolemy_to_delaunay(&mut mesh, &mut base, u, &mut flips)?;
+    let t = evaluate(&mesh, &base, u, theta).map_err(FlipFault::NotATriangle)?;
+    Ok(Evaluation {
+        mesh,
+        base,
+        flips,
+        new_flips,
+        grad: t.grad,
+        weight: t.weight,
+        t2: t.t2,
+    })
+}
+
+/// Solve `θ_hyp(u) = Θ` for the hyperbolic metric `lengths` on `mesh` with flips (module
+/// doc: convention, geometric flips of the input, Newton over Penner cells with Ptolemy
+/// flips, line search). Bad input is a typed error; a solve that does not reach
+/// `opts.tolerance` returns `Ok` with the reason ([`HyperbolicStop`]), never a panic.
+/// proof: B38, B87, B104
 pub fn uniformize_hyperbolic(
     mesh: &Mesh,
     lengths: &[f64],
@@ -366,15 +438,13 @@ pub fn uniformize_hyperbolic(
             s.clone()
         }
     };
-    let lambda0: Vec<f64> = lengths.iter().map(|&l| log_length(l)).collect();
+    let (t0, l0, input_flips) = geometric_to_delaunay(mesh, lengths)?;
+    let lambda0: Vec<f64> = l0.iter().map(|&l| log_length(l)).collect();
     let theta = targets.radians_f64();
-    let ev = evaluate(mesh, &lambda0, &u, &theta)
-        .map_err(|face| HyperbolicError::NotATriangle { face })?;
+    let ev = evaluate_flipped(t0.clone(), lambda0, Vec::new(), &u, &theta)?;
     let mut sys = Hyperbolic {
-        mesh,
-        lambda0: &lambda0,
         theta: &theta,
-        assembly: Assembly::new(mesh),
+        assembly: Assembly::new(&ev.mesh),
         cache: CholeskyCache::default(),
     };
     let limits = Limits {
@@ -388,15 +458,19 @@ pub fn uniformize_hyperbolic(
         DriverStop::Converged => HyperbolicStop::Converged,
         DriverStop::IterationCap => HyperbolicStop::IterationCap,
         DriverStop::Factor(reason) => HyperbolicStop::DegenerateStep(reason),
-        DriverStop::LineSearch(Some(face)) => HyperbolicStop::NeedsFlips { face },
+        DriverStop::LineSearch(Some(fault)) => HyperbolicStop::Degenerate(fault.to_string()),
         DriverStop::LineSearch(None) => HyperbolicStop::DegenerateStep(format!(
             "line search: no decrease of |∇E| after {} halvings at max residual {residual_max:e}",
             opts.max_halvings,
         )),
     };
     Ok(HyperbolicUniformization {
-        mesh: mesh.clone(),
-        lengths: lengths.to_vec(),
+        mesh: run.eval.mesh,
+        t0,
+        lengths: l0,
+        input_flips,
+        flips: run.eval.flips,
+        base_log: run.eval.base,
         u: run.u,
         targets: targets.clone(),
         steps: run.steps,
@@ -406,12 +480,11 @@ pub fn uniformize_hyperbolic(
     })
 }
 
-/// The hyperbolic Newton system for [`drive`]: the fixed triangulation, the Hessian of
-/// B38 assembled on its pattern and factored (symbolic factorization kept); an evaluation
-/// fault is a face that is not a strict triangle.
+/// The hyperbolic Newton system for [`drive`]: each evaluation flips to Delaunay at its
+/// `u` (B87), the Hessian of B38 is assembled on the current triangulation's pattern and
+/// factored (symbolic factorization kept while the pattern stays); an evaluation fault is
+/// a degenerate configuration ([`FlipFault`]).
 struct Hyperbolic<'a> {
-    mesh: &'a Mesh,
-    lambda0: &'a [f64],
     theta: &'a [f64],
     assembly: Assembly,
     cache: CholeskyCache,
@@ -419,14 +492,20 @@ struct Hyperbolic<'a> {
 
 impl NewtonSystem for Hyperbolic<'_> {
     type Eval = Evaluation;
-    type Fault = u32;
+    type Fault = FlipFault;
 
     fn gradient(ev: &Evaluation) -> &[f64] {
         &ev.grad
     }
 
-    fn evaluate(&mut self, _: &Evaluation, u: &[f64]) -> Result<Evaluation, u32> {
-        evaluate(self.mesh, self.lambda0, u, self.theta)
+    fn evaluate(&mut self, at: &Evaluation, u: &[f64]) -> Result<Evaluation, FlipFault> {
+        evaluate_flipped(
+            at.mesh.clone(),
+            at.base.clone(),
+            at.flips.clone(),
+            u,
+            self.theta,
+        )
     }
 
     fn direction(&mut self, ev: &Evaluation) -> Result<Vec<f64>, String> {
@@ -439,8 +518,11 @@ impl NewtonSystem for Hyperbolic<'_> {
         Ok(factor.solve(&minus_g))
     }
 
-    fn accept(&mut self, _: &Evaluation) -> usize {
-        0
+    fn accept(&mut self, new: &Evaluation) -> usize {
+        if new.new_flips > 0 {
+            self.assembly = Assembly::new(&new.mesh);
+        }
+        new.new_flips
     }
 }
 
@@ -470,8 +552,17 @@ pub fn hessian_dense(mesh: &Mesh, lengths: &[f64], u: &[f64]) -> Option<Vec<Vec<
 /// is not a strict triangle or the matrix is not numerically positive definite. proof: B38
 pub fn hessian_factor(mesh: &Mesh, lengths: &[f64], u: &[f64]) -> Option<super::hessian::Factor> {
     let lambda0: Vec<f64> = lengths.iter().map(|&l| log_length(l)).collect();
+    hessian_factor_log(mesh, &lambda0, u)
+}
+
+/// [`hessian_factor`] from the base logarithmic lengths `2 log sinh(ℓ/2)` of `mesh`.
+pub fn hessian_factor_log(
+    mesh: &Mesh,
+    lambda0: &[f64],
+    u: &[f64],
+) -> Option<super::hessian::Factor> {
     let zero = vec![0.0; mesh.n_vertices()];
-    let ev = evaluate(mesh, &lambda0, u, &zero).ok()?;
+    let ev = evaluate(mesh, lambda0, u, &zero).ok()?;
     let h = Assembly::new(mesh).matrix(&ev.weight, &ev.t2)?;
     CholeskyCache::default().factor(&h)
 }
@@ -480,8 +571,13 @@ pub fn hessian_factor(mesh: &Mesh, lengths: &[f64], u: &[f64]) -> Option<super::
 /// (an estimate, rounded to nearest); `None` when a face is not a strict triangle.
 pub fn gershgorin_estimate(mesh: &Mesh, lengths: &[f64], u: &[f64]) -> Option<f64> {
     let lambda0: Vec<f64> = lengths.iter().map(|&l| log_length(l)).collect();
+    gershgorin_estimate_log(mesh, &lambda0, u)
+}
+
+/// [`gershgorin_estimate`] from the base logarithmic lengths of `mesh`.
+pub fn gershgorin_estimate_log(mesh: &Mesh, lambda0: &[f64], u: &[f64]) -> Option<f64> {
     let zero = vec![0.0; mesh.n_vertices()];
-    let ev = evaluate(mesh, &lambda0, u, &zero).ok()?;
+    let ev = evaluate(mesh, lambda0, u, &zero).ok()?;
     let a = Assembly::new(mesh);
     let mut row = vec![0.0; a.n];
     for (&(r, c), v) in a.pairs.iter().zip(a.values(&ev.weight, &ev.t2)) {

@@ -1,4 +1,9 @@
-//! Refinement and certificate of a hyperbolic uniformization (proofs/B39).
+//! Refinement and certificate of a hyperbolic uniformization (proofs/B39, B87, B89).
+//!
+//! All of it runs on the solver's final triangulation `T_k`, whose base lengths are the
+//! Ptolemy flips of `T₀`'s replayed in the working precision or on enclosures
+//! ([`super::hyperbolic_flips::replay_ptolemy`], B89); the certificate also checks that
+//! `T₀` is hyperbolic Delaunay for its lengths and `T_k` on the whole box (B87, B89).
 //!
 //! - [`refine_hyperbolic`]: residuals `Θ − θ_hyp(u)` in `Dd` or MPFR with `u` kept in that
 //!   precision, corrections from the binary64 Hessian factored once (as [`super::refine`]);
@@ -12,15 +17,14 @@
 
 use super::certificate::to_f64_up;
 use super::hyperbolic::{HyperbolicError, HyperbolicUniformization};
-use super::hyperbolic_kernel::{face_terms_generic, log_length};
+use super::hyperbolic_flips::{delaunay_on_box, replay_ptolemy};
+use super::hyperbolic_kernel::face_terms_generic;
 use super::newton_driver::{refine_loop, Over};
 use super::refine::Refinement;
 use super::targets::Targets;
 use crate::mesh::Mesh;
 use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
-use crate::variational::hyperbolic::{
-    cone_angles, hyperbolic_log_length, length_from_log, scaled_lengths,
-};
+use crate::variational::hyperbolic::{cone_angles, hyperbolic_log_length, length_from_log};
 use rug::Rational;
 
 type I = Interval<Mpfr>;
@@ -46,16 +50,21 @@ pub fn refine_hyperbolic<T: Real>(
 ) -> Result<Refinement<T>, HyperbolicError> {
     let mesh = &sol.mesh;
     let factor =
-        super::hyperbolic::hessian_factor(mesh, &sol.lengths, &sol.u).ok_or_else(|| {
+        super::hyperbolic::hessian_factor_log(mesh, &sol.base_log, &sol.u).ok_or_else(|| {
             HyperbolicError::NotATriangle {
-                face: first_bad_face(mesh, &sol.lengths, &sol.u),
+                face: first_bad_face(mesh, &sol.base_log, &sol.u),
             }
         })?;
-    let lengths: Vec<T> = sol.lengths.iter().map(|&x| T::from_f64(x, ctx)).collect();
+    let base0: Vec<T> = sol
+        .lengths
+        .iter()
+        .map(|&x| hyperbolic_log_length(&T::from_f64(x, ctx)))
+        .collect();
+    let (_, base) = replay_ptolemy(&sol.t0, &base0, &sol.flips)?;
     let theta_target = targets_in::<T>(sol, ctx);
     let u: Vec<T> = sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect();
     let residual = |u: &[T]| -> Result<Vec<T>, std::convert::Infallible> {
-        let theta = cone_angles(mesh, &scaled_lengths(mesh, &lengths, u), false);
+        let theta = cone_angles(mesh, &scaled_from_base(mesh, &base, u), false);
         Ok(theta_target
             .iter()
             .zip(&theta)
@@ -70,13 +79,31 @@ pub fn refine_hyperbolic<T: Real>(
     Ok(refinement)
 }
 
+/// The hyperbolic lengths `ℓ̃ = 2 arsinh(e^{(x + u_i + u_j)/2})` of `mesh` from base
+/// logarithmic lengths `x` and scale factors `u`.
+pub fn scaled_from_base<T: Real>(mesh: &Mesh, base: &[T], u: &[T]) -> Vec<T> {
+    mesh.edges()
+        .map(|e| {
+            let h = e.halfedge();
+            length_from_log(
+                &(base[e.idx()].clone() + &u[mesh.tail(h).idx()] + &u[mesh.tip(h).idx()]),
+            )
+        })
+        .collect()
+}
+
+/// The base logarithmic lengths `2 log sinh(ℓ/2)` of enclosed hyperbolic lengths.
+pub fn base_log_i(lengths: &[I]) -> Vec<I> {
+    lengths.iter().map(hyperbolic_log_length).collect()
+}
+
 /// The first face that is not a strict triangle at `u` (`u32::MAX` if none).
-fn first_bad_face(mesh: &Mesh, lengths: &[f64], u: &[f64]) -> u32 {
+fn first_bad_face(mesh: &Mesh, base: &[f64], u: &[f64]) -> u32 {
     mesh.faces()
         .find(|&f| {
-            let lam = mesh.face_halfedges(f).map(|h| {
-                log_length(lengths[h.edge().idx()]) + u[mesh.tail(h).idx()] + u[mesh.tip(h).idx()]
-            });
+            let lam = mesh
+                .face_halfedges(f)
+                .map(|h| base[h.edge().idx()] + u[mesh.tail(h).idx()] + u[mesh.tip(h).idx()]);
             super::hyperbolic_kernel::face_terms(lam).is_none()
         })
         .map_or(u32::MAX, |f| f.0)
@@ -115,15 +142,13 @@ pub struct HyperbolicCertificate {
     pub existence: Existence,
 }
 
-/// `λ̃_ij = 2 log sinh(ℓ_ij/2) + u_i + u_j` over enclosed input lengths `ℓ` and intervals
+/// `λ̃_ij = x_ij + u_i + u_j` over enclosed base logarithmic lengths `x` and intervals
 /// of `u`.
-fn log_lengths_i(mesh: &Mesh, lengths: &[I], u: &[I]) -> Vec<I> {
+fn log_lengths_i(mesh: &Mesh, base: &[I], u: &[I]) -> Vec<I> {
     mesh.edges()
         .map(|e| {
             let h = e.halfedge();
-            hyperbolic_log_length(&lengths[e.idx()])
-                + &u[mesh.tail(h).idx()]
-                + &u[mesh.tip(h).idx()]
+            base[e.idx()].clone() + &u[mesh.tail(h).idx()] + &u[mesh.tip(h).idx()]
         })
         .collect()
 }
@@ -163,18 +188,18 @@ fn lengths_i(lengths: &[f64], prec: Precision) -> Vec<I> {
     lengths.iter().map(|&x| I::from_f64(x, prec)).collect()
 }
 
-/// `Θ − θ_hyp` enclosed over `u` (points or a box) for the hyperbolic input lengths
-/// `lengths` (enclosed), by the inclusion property (B20): every value of the residual at a
+/// `Θ − θ_hyp` enclosed over `u` (points or a box) for the enclosed base logarithmic
+/// lengths `base` of `mesh` (`2 log sinh(ℓ/2)` at `u = 0`), by the inclusion property (B20): every value of the residual at a
 /// point of the box lies in the returned intervals. `Err` with the reason when a face is not
 /// certified a strict triangle on all of `u` or an angle sum is not enclosed. proof: B39
 pub fn enclosed_residual(
     mesh: &Mesh,
-    lengths: &[I],
+    base: &[I],
     targets: &Targets,
     u: &[I],
     prec: Precision,
 ) -> Result<Vec<I>, String> {
-    let l: Vec<I> = log_lengths_i(mesh, lengths, u)
+    let l: Vec<I> = log_lengths_i(mesh, base, u)
         .iter()
         .map(length_from_log)
         .collect();
@@ -217,17 +242,18 @@ pub fn box_around(u: &[Rational], r: &Rational, prec: Precision) -> Vec<I> {
         .collect()
 }
 
-/// Enclose `Θ − θ_hyp(u)` at the exact `u` (`bits` of MPFR intervals) and try an existence
-/// radius (module doc, B39). Bad input is a typed error; anything not certified is
-/// reported in the result, never as a failure.
+/// Enclose `Θ − θ_hyp(u)` at the exact `u` (`bits` of MPFR intervals) on the final
+/// triangulation and try an existence radius (module doc; B39 with the flips of B87/B89:
+/// `T₀` certified hyperbolic Delaunay for its lengths, the Ptolemy flips replayed on
+/// enclosures, `T_k` certified Delaunay on the whole box). Bad input is a typed error;
+/// anything not certified is reported in the result, never as a failure.
 pub fn certify_hyperbolic(
     sol: &HyperbolicUniformization,
     u: &[Rational],
     bits: u32,
 ) -> Result<HyperbolicCertificate, HyperbolicError> {
-    let mesh = &sol.mesh;
-    super::hyperbolic::validate_hyperbolic(mesh, &sol.lengths, &sol.targets)?;
-    let n = mesh.n_vertices();
+    super::hyperbolic::validate_hyperbolic(&sol.t0, &sol.lengths, &sol.targets)?;
+    let n = sol.t0.n_vertices();
     if u.len() != n {
         return Err(super::error::UniformizeError::TargetCount {
             expected: n,
@@ -236,9 +262,10 @@ pub fn certify_hyperbolic(
         .into());
     }
     let prec = Precision::new(u64::from(bits)).map_err(|_| HyperbolicError::Bits(bits))?;
-    let lengths = lengths_i(&sol.lengths, prec);
+    let base0 = base_log_i(&lengths_i(&sol.lengths, prec));
+    let (mesh, base) = replay_ptolemy(&sol.t0, &base0, &sol.flips)?;
     let point: Vec<I> = u.iter().map(|q| I::from_rational(q, prec)).collect();
-    let residual = match enclosed_residual(mesh, &lengths, &sol.targets, &point, prec) {
+    let residual = match enclosed_residual(&mesh, &base, &sol.targets, &point, prec) {
         Ok(r) => r,
         Err(reason) => {
             return Ok(HyperbolicCertificate {
@@ -253,7 +280,13 @@ pub fn certify_hyperbolic(
     };
     let (_, residual_norm2) = norm2_bounds(&residual, prec);
     let residual_max = residual.iter().map(abs_up).fold(0.0, f64::max);
-    let existence = existence(sol, &lengths, u, prec, residual_norm2);
+    let zero = vec![I::from_f64(0.0, prec); n];
+    let existence = match delaunay_on_box(&sol.t0, &base0, &zero) {
+        Err(reason) => Existence::Undecided {
+            reason: format!("T₀: {reason} (at u = 0)"),
+        },
+        Ok(()) => existence(sol, &mesh, &base, u, prec, residual_norm2),
+    };
     Ok(HyperbolicCertificate {
         residual,
         residual_max,
@@ -263,17 +296,19 @@ pub fn certify_hyperbolic(
 }
 
 /// The existence radius of B39 (module doc): the box radius from the binary64 Gershgorin
-/// estimate at `u`, then [`existence_on_box`].
+/// estimate at `u`, then [`existence_on_box`] and [`delaunay_on_box`] on `T_k`.
 fn existence(
     sol: &HyperbolicUniformization,
-    lengths: &[I],
+    mesh: &Mesh,
+    base: &[I],
     u: &[Rational],
     prec: Precision,
     norm2: f64,
 ) -> Existence {
-    let mesh = &sol.mesh;
     let uf: Vec<f64> = u.iter().map(Rational::to_f64).collect();
-    let Some(mu_estimate) = super::hyperbolic::gershgorin_estimate(mesh, &sol.lengths, &uf) else {
+    let Some(mu_estimate) =
+        super::hyperbolic::gershgorin_estimate_log(&sol.mesh, &sol.base_log, &uf)
+    else {
         return Existence::Undecided {
             reason: "a face is not a triangle at u".into(),
         };
@@ -293,17 +328,37 @@ fn existence(
             reason: format!("box radius {radius:e} not finite"),
         };
     };
-    existence_on_box(mesh, lengths, u, &r, norm2, prec)
+    existence_with_flips(mesh, base, u, &r, norm2, prec)
+}
+
+/// [`existence_on_box`] on the final triangulation `mesh` of a flip sequence, and every
+/// edge of it certified hyperbolic Delaunay on the same box ([`delaunay_on_box`]): then the
+/// solution is the metric of Thm 11 with flips (B87). proof: B87, B89
+pub fn existence_with_flips(
+    mesh: &Mesh,
+    base: &[I],
+    u: &[Rational],
+    radius: &Rational,
+    norm2: f64,
+    prec: Precision,
+) -> Existence {
+    match delaunay_on_box(mesh, base, &box_around(u, radius, prec)) {
+        Ok(()) => existence_on_box(mesh, base, u, radius, norm2, prec),
+        Err(reason) => Existence::Undecided {
+            reason: format!("{reason} of radius {:e}", radius.to_f64()),
+        },
+    }
 }
 
 /// B39 on the box of sup-norm radius `radius` around the exact `u`, with `norm2 ≥
 /// ‖Θ − θ_hyp(u)‖₂`: every face certified a strict triangle on the box, the interval
 /// Hessian's Gershgorin bound `μ > 0` on the box, and `norm2/μ ≤ radius` (compared
 /// exactly). Then an exact solution lies within `norm2/μ` (2-norm, so also sup norm) of
-/// `u`. Anything not certified is [`Existence::Undecided`] with the reason. proof: B39
+/// `u`. `base` are the enclosed base logarithmic lengths of `mesh`. Anything not certified
+/// is [`Existence::Undecided`] with the reason. proof: B39
 pub fn existence_on_box(
     mesh: &Mesh,
-    lengths: &[I],
+    base: &[I],
     u: &[Rational],
     radius: &Rational,
     norm2: f64,
@@ -312,7 +367,7 @@ pub fn existence_on_box(
     let und = |reason: String| Existence::Undecided { reason };
     let radius_f = radius.to_f64();
     let boxed = box_around(u, radius, prec);
-    let lam = log_lengths_i(mesh, lengths, &boxed);
+    let lam = log_lengths_i(mesh, base, &boxed);
     let lb: Vec<I> = lam.iter().map(length_from_log).collect();
     if let Err(f) = strict_triangles(mesh, &lb) {
         return und(format!(

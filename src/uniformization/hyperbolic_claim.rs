@@ -3,15 +3,27 @@
 //! it from scratch without the solver (B39).
 //!
 //! A kind of its own rather than a field of `uniformization`: the equation (`θ_hyp`, sinh
-//! scaling), the triangulation (the surface's own, no flips, no grounded vertex) and the
-//! proof (B39, not B71) all differ, and so do the fields. Fields besides the common ones:
-//! `targets` (`Θ_i/π`, exact, one per vertex), `u` (exact decimal strings), `radius` (the
+//! scaling), the flips (hyperbolic λ-Ptolemy, Leibon's Delaunay condition), no grounded
+//! vertex, and the proof (B39, B89, not B71) all differ, and so do the fields. Fields
+//! besides the common ones: `targets` (`Θ_i/π`, exact, one per vertex), optional `flips`
+//! (below), `u` (exact decimal strings), `radius` (the
 //! sup-norm box) and `residual_bound` (a claimed upper bound on `‖Θ − θ_hyp(u)‖₂`). The
 //! surface's lengths are read as *hyperbolic* lengths, exactly (any metric of the surface
 //! format; `penner uniformize --hyperbolic` writes the binary64 lengths it solved for).
 //!
 //! The claim: an exact solution `u*` of `θ_hyp(u*) = Θ` on the surface's triangulation with
-//! `|u* − u|_∞ ≤ radius`, and `‖Θ − θ_hyp(u)‖₂ ≤ residual_bound`. It is refuted only by a
+//! `|u* − u|_∞ ≤ radius`, and `‖Θ − θ_hyp(u)‖₂ ≤ residual_bound`.
+//!
+//! **With `flips`** (optional; edge indices of the surface in order, an edge keeping its
+//! index when flipped, as the `uniformization` claim): the surface must be hyperbolic
+//! Delaunay for its lengths (certified on enclosures, else `undecided`); the λ-lengths
+//! `λ = 2 sinh(ℓ/2)` are carried through the flips by the hyperbolic Ptolemy relation
+//! (replayed on enclosures, B89) to a triangulation `T_k`, and the claim is that
+//! `θ_hyp(u*) = Θ` on `T_k` with its scaled λ-lengths `e^{(u*_i+u*_j)/2}λ_ij`, `T_k` being
+//! hyperbolic Delaunay at `u*`: a metric discretely conformal to the surface's (Thm 11 with
+//! flips, Gu–Guo–Luo–Sun–Wu; B87) with the angles `Θ`. `holds` additionally needs every
+//! edge of `T_k` certified Delaunay on the whole box (B89); an edge not certified leaves
+//! the claim `undecided`. Without `flips` the claim is the fixed-triangulation one above. It is refuted only by a
 //! proof: hyperbolic Gauss–Bonnet leaves no area (no hyperbolic metric has the angles Θ at
 //! all), or the residual enclosed over the whole box excludes 0 at a vertex (no solution in
 //! the box), or the residual at `u` is enclosed above `residual_bound`.
@@ -19,12 +31,14 @@
 use super::claim_form::exact_decimal;
 use super::hyperbolic::{hyperbolic_gauss_bonnet, validate_hyperbolic_targets, HyperbolicError};
 use super::hyperbolic_certificate::{
-    box_around, enclosed_residual, existence_on_box, norm2_bounds, Existence,
+    base_log_i, box_around, enclosed_residual, existence_on_box, existence_with_flips,
+    norm2_bounds, Existence,
 };
+use super::hyperbolic_flips::{delaunay_on_box, replay_ptolemy};
 use super::targets::Targets;
-use crate::io::json::to_value;
+use crate::io::json::{edge_order, to_value};
 use crate::io::{Metric, Surface};
-use crate::mesh::Mesh;
+use crate::mesh::{Edge, Mesh};
 use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
 use rug::Rational;
 use serde_json::{json, Value};
@@ -40,6 +54,9 @@ pub struct HyperbolicClaim {
     pub radius: Rational,
     /// The claimed bound on `‖Θ − θ_hyp(u)‖₂`.
     pub residual_bound: Rational,
+    /// The Ptolemy flips from the surface's triangulation, as indices into its edge order
+    /// (`None`: the fixed-triangulation claim).
+    pub flips: Option<Vec<usize>>,
 }
 
 /// A malformed `hyperbolic_uniformization` claim, named by field.
@@ -68,6 +85,26 @@ pub enum HyperbolicClaimError {
     /// The precision is out of range.
     #[error("max_bits: {0} bits out of range")]
     Bits(u32),
+    /// A flip index is out of range.
+    #[error("flips[{position}]: edge index {index} out of range (the surface has {edges} edges)")]
+    FlipIndex {
+        /// Position in `flips`.
+        position: usize,
+        /// The index.
+        index: usize,
+        /// Edges.
+        edges: usize,
+    },
+    /// A flip cannot be made on the triangulation reached so far.
+    #[error("flips[{position}]: edge index {index}: {reason}")]
+    Flip {
+        /// Position in `flips`.
+        position: usize,
+        /// The index.
+        index: usize,
+        /// Why.
+        reason: String,
+    },
 }
 
 /// The verdict of [`recheck`].
@@ -125,21 +162,59 @@ pub fn validate(mesh: &Mesh, claim: &HyperbolicClaim) -> Result<(), HyperbolicCl
             claim.residual_bound.to_string(),
         ));
     }
-    Ok(())
+    flip_edges(mesh, claim).map(|_| ())
+}
+
+/// The claim's flips as edges of `mesh` (user order, [`edge_order`]); empty without flips.
+fn flip_edges(mesh: &Mesh, claim: &HyperbolicClaim) -> Result<Vec<Edge>, HyperbolicClaimError> {
+    let order = edge_order(mesh);
+    let mut out = Vec::new();
+    for (position, &index) in claim.flips.iter().flatten().enumerate() {
+        let Some(&e) = order.get(index) else {
+            return Err(HyperbolicClaimError::FlipIndex {
+                position,
+                index,
+                edges: order.len(),
+            });
+        };
+        out.push(Edge(e as u32));
+    }
+    Ok(out)
+}
+
+/// What a `hyperbolic_uniformization` claim states (`to_claim`'s input): the surface
+/// `T₀` with binary64 hyperbolic `lengths`, the Ptolemy `flips` from it, the targets, `u`,
+/// the box `radius` and the `residual_bound`.
+pub struct ClaimData<'a> {
+    /// `T₀` (hyperbolic Delaunay for `lengths`).
+    pub mesh: &'a Mesh,
+    /// Its binary64 hyperbolic lengths.
+    pub lengths: &'a [f64],
+    /// The Ptolemy flips from `T₀`.
+    pub flips: &'a [Edge],
+    /// The targets.
+    pub targets: &'a Targets,
+    /// The proposed `u`.
+    pub u: &'a [Rational],
 }
 
 /// A certified hyperbolic uniformization as a `hyperbolic_uniformization` claim at `bits`:
-/// the surface with the binary64 hyperbolic `lengths` (exactly), the targets, `u` as exact
-/// decimal strings (dyadic), the box `radius` and the `residual_bound`.
-pub fn to_claim(
-    mesh: &Mesh,
-    lengths: &[f64],
-    targets: &Targets,
-    u: &[Rational],
-    radius: f64,
-    residual_bound: f64,
-    bits: u32,
-) -> Value {
+/// the surface with the binary64 hyperbolic `lengths` (exactly), the flips (indices in the
+/// written surface's edge order), the targets, `u` as exact decimal strings (dyadic), the
+/// box `radius` and the `residual_bound`.
+pub fn to_claim(data: &ClaimData<'_>, radius: f64, residual_bound: f64, bits: u32) -> Value {
+    let ClaimData {
+        mesh,
+        lengths,
+        flips,
+        targets,
+        u,
+    } = *data;
+    let order = edge_order(mesh);
+    let mut user = vec![0usize; order.len()];
+    for (k, &e) in order.iter().enumerate() {
+        user[e] = k;
+    }
     let surface = Surface {
         mesh: mesh.clone(),
         metric: Metric::Lengths(
@@ -159,6 +234,7 @@ pub fn to_claim(
         "max_bits": bits,
         "surface": to_value(&surface),
         "targets": targets.over_pi().iter().map(ToString::to_string).collect::<Vec<_>>(),
+        "flips": flips.iter().map(|e| user[e.idx()]).collect::<Vec<_>>(),
         "u": u.iter().map(dec).collect::<Vec<_>>(),
         "radius": exact(radius),
         "residual_bound": exact(residual_bound),
@@ -182,10 +258,29 @@ pub fn recheck(
     }
     let prec = Precision::new(u64::from(bits)).map_err(|_| HyperbolicClaimError::Bits(bits))?;
     let lengths: Vec<Interval<Mpfr>> = surface.lengths(prec);
+    let base0 = base_log_i(&lengths);
+    let flips = flip_edges(mesh, claim)?;
+    let (tk, base) =
+        replay_ptolemy(mesh, &base0, &flips).map_err(|e| HyperbolicClaimError::Flip {
+            position: e.position,
+            index: claim.flips.as_ref().map_or(0, |f| f[e.position]),
+            reason: e.reason.to_string(),
+        })?;
+    if claim.flips.is_some() {
+        let zero = vec![Interval::from_f64(0.0, prec); mesh.n_vertices()];
+        if let Err(reason) = delaunay_on_box(mesh, &base0, &zero) {
+            return Ok(HyperbolicVerdict::Undecided {
+                reason: format!(
+                    "surface: {reason} at u = 0 (the flips start from a hyperbolic Delaunay triangulation)"
+                ),
+            });
+        }
+    }
+    let mesh = &tk;
     let radius_f = claim.radius.to_f64();
     // No solution in the box: some vertex's residual is enclosed away from 0 on all of it.
     let boxed = box_around(&claim.u, &claim.radius, prec);
-    match enclosed_residual(mesh, &lengths, &targets, &boxed, prec) {
+    match enclosed_residual(mesh, &base, &targets, &boxed, prec) {
         Err(reason) => {
             return Ok(HyperbolicVerdict::Undecided {
                 reason: format!("{reason} on the box of radius {radius_f:e}"),
@@ -212,7 +307,7 @@ pub fn recheck(
         .iter()
         .map(|q| Interval::from_rational(q, prec))
         .collect();
-    let g = match enclosed_residual(mesh, &lengths, &targets, &point, prec) {
+    let g = match enclosed_residual(mesh, &base, &targets, &point, prec) {
         Ok(g) => g,
         Err(reason) => {
             return Ok(HyperbolicVerdict::Undecided {
@@ -240,16 +335,19 @@ pub fn recheck(
             ),
         });
     }
-    Ok(
-        match existence_on_box(mesh, &lengths, &claim.u, &claim.radius, upper, prec) {
-            Existence::Holds { distance, mu, .. } => HyperbolicVerdict::Holds {
-                distance,
-                mu,
-                residual: upper,
-            },
-            Existence::Undecided { reason } => HyperbolicVerdict::Undecided { reason },
+    let found = if claim.flips.is_some() {
+        existence_with_flips(mesh, &base, &claim.u, &claim.radius, upper, prec)
+    } else {
+        existence_on_box(mesh, &base, &claim.u, &claim.radius, upper, prec)
+    };
+    Ok(match found {
+        Existence::Holds { distance, mu, .. } => HyperbolicVerdict::Holds {
+            distance,
+            mu,
+            residual: upper,
         },
-    )
+        Existence::Undecided { reason } => HyperbolicVerdict::Undecided { reason },
+    })
 }
 
 /// The refutation by hyperbolic Gauss–Bonnet (B38, B39): targets leaving no area on a

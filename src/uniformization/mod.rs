@@ -24,6 +24,7 @@ pub mod hessian;
 pub mod hyperbolic;
 pub mod hyperbolic_certificate;
 pub mod hyperbolic_claim;
+pub mod hyperbolic_flips;
 pub mod hyperbolic_kernel;
 pub mod input_metric;
 pub mod krawczyk;

@@ -13,7 +13,7 @@ use penner::uniformization::hyperbolic::{uniformize_hyperbolic, HyperbolicOption
 use penner::uniformization::hyperbolic_certificate::{
     certify_hyperbolic, refine_hyperbolic, Existence,
 };
-use penner::uniformization::hyperbolic_claim::to_claim;
+use penner::uniformization::hyperbolic_claim::{to_claim, ClaimData};
 use penner::uniformization::Targets;
 use rug::float::Constant;
 use rug::{Float, Rational};
@@ -33,7 +33,14 @@ fn certified_claim(m: &Mesh, l: &[f64], bits: u32) -> (Value, f64) {
     let Existence::Holds { radius, .. } = cert.existence else {
         panic!("not certified: {:?}", cert.existence);
     };
-    let claim = to_claim(m, l, &targets, &u, radius, cert.residual_norm2, bits);
+    let data = ClaimData {
+        mesh: &sol.t0,
+        lengths: &sol.lengths,
+        flips: &sol.flips,
+        targets: &targets,
+        u: &u,
+    };
+    let claim = to_claim(&data, radius, cert.residual_norm2, bits);
     (claim, radius)
 }
 
@@ -70,9 +77,8 @@ fn shifted(claim: &Value, delta: &Rational) -> Value {
 /// residual bound; at 128 bits the 256-bit claim is undecided, never refuted.
 #[test]
 fn b39_hyperbolic_claim_round_trip_holds_and_is_refuted_only_with_a_proof() {
-    // A random genus-2 surface whose solution needs no flips (the first of a few, fewest
-    // vertices last; on a fixed triangulation a solution need not exist), else genus 3 with
-    // one vertex and random lengths.
+    // The first random genus-2 surface that converges (with flips every one does, B87),
+    // else genus 3 with one vertex and random lengths.
     let candidates = (0..24u64).map(|k| {
         let (seed, nv) = (k % 8, 4 - (k / 8) as u32);
         let m = builders::random_surface(2, nv, seed).unwrap();
@@ -90,7 +96,7 @@ fn b39_hyperbolic_claim_round_trip_holds_and_is_refuted_only_with_a_proof() {
             uniformize_hyperbolic(m, l, &t, &HyperbolicOptions::default())
                 .is_ok_and(|s| s.converged())
         })
-        .expect("a random genus-2 surface solved without flips");
+        .expect("a random genus-2 surface solved");
     let cases = [(builders::genus(2).unwrap(), vec![1.0; 9]), random];
     for (k, (m, l)) in cases.iter().enumerate() {
         let (claim, radius) = certified_claim(m, l, 256);

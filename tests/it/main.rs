@@ -82,6 +82,7 @@ mod tolerance_tightness;
 mod uniformization;
 mod uniformization_boundary;
 mod uniformization_hyperbolic;
+mod uniformization_hyperbolic_flips;
 mod uniformization_layout;
 mod uniformization_speed;
 mod uniformization_sphere;
