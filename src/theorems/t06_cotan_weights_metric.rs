@@ -16,7 +16,7 @@
 
 use super::bounds::{cot_error, eps, eps_shift, EPS_F64, SAFETY};
 use super::report::{check_lengths, lengths_out_of_range, Tally};
-use super::t06_weight_rigidity::certify_weight_rigidity;
+use super::t06_weight_rigidity::{certify_by_faces, certify_weight_rigidity};
 use super::verdict::{Settings, Verdict, Witness};
 use crate::geometry::cotan::cotan_weights;
 use crate::mesh::Mesh;
@@ -84,7 +84,10 @@ fn weights_proven_different<T: Real>(
 /// with the same cotan weights is a scaling of it.
 ///
 /// `Holds`, certified, when the Hessian of the weight energy with edge 0 fixed is proved
-/// positive definite at the exact lengths ([`certify_weight_rigidity`], proofs/B102).
+/// positive definite at the exact lengths (proofs/B102): by a verified Cholesky
+/// factorization of its enclosure ([`certify_weight_rigidity`]) or, where that cannot
+/// resolve the conditioning, by faces ([`certify_by_faces`], B103: every face a certified
+/// strict triangle, the faces connected through edges).
 /// Otherwise, up to [`RECOVERY_MAX_EDGES`] edges, the weights computed at the working
 /// precision are recovered by [`metric_from_weights`] and compared with `ℓ_e²/ℓ_0²` as in
 /// [`verify_weights_determine_metric`] (`holds` numerical, B59), and `undecided` with the
@@ -110,15 +113,24 @@ pub fn check_weights_determine_metric<T: Real>(
             ),
         };
     }
-    // proof: B102
+    // proof: B102, then B103 where the factorization cannot resolve the conditioning.
+    let certified = Verdict::Holds {
+        certified: true,
+        max_error: 0.0,
+    };
     let reasons = match certify_weight_rigidity(mesh, lengths, 0) {
-        Ok(_) => {
-            return Verdict::Holds {
-                certified: true,
-                max_error: 0.0,
+        Ok(_) => return certified,
+        Err(n) => match certify_by_faces(mesh, lengths) {
+            Ok(()) => return certified,
+            Err(by_faces) => {
+                // Faces not certified strict are named by both: keep one list.
+                let mut r = n.elements;
+                if r.iter().all(|(e, _)| e == "surface") {
+                    r.extend(by_faces.elements);
+                }
+                r
             }
-        }
-        Err(n) => n.elements,
+        },
     };
     let bits = T::precision_bits(lengths[0].ctx());
     let undecided = |extra: Vec<Witness>| {

@@ -52,6 +52,14 @@ impl AreaHessianKernel {
         }
     }
 
+    /// Whether every triangle with sides in `l` is certified strict (every side and every
+    /// Heron factor `ℓ_j + ℓ_k − ℓ_i` enclosed as positive): then `16A² = qᵀMq > 0`, the
+    /// squared lengths lie in the open forward cone of `M`, and `−2∇²A` is positive
+    /// semidefinite with kernel `span(q)` (proof: B103).
+    pub fn strict(&mut self, l: [&I; 3]) -> bool {
+        self.face.load(l)
+    }
+
     /// Outward binary64 bounds of `−2 ∂²A/∂q_i∂q_j` (module formula) for every triangle
     /// whose sides lie in the enclosures `l` (side `i` opposite corner `i`), or `None` when
     /// the face is not certified a strict triangle (a side or a Heron factor not enclosed
