@@ -327,13 +327,6 @@ pub fn certify_by_faces<T: Real>(mesh: &Mesh, lengths: &[T]) -> Result<(), NotCe
     // Faces joined through shared edges (union–find over the faces).
     let nf = mesh.n_faces();
     let mut parent: Vec<usize> = (0..nf).collect();
-    fn root(p: &mut [usize], mut x: usize) -> usize {
-        while p[x] != x {
-            p[x] = p[p[x]];
-            x = p[x];
-        }
-        x
-    }
     for e in mesh.edges() {
         let h = e.halfedge();
         if let (Some(a), Some(b)) = (mesh.face(h), mesh.face(h.twin())) {
@@ -348,6 +341,15 @@ pub fn certify_by_faces<T: Real>(mesh: &Mesh, lengths: &[T]) -> Result<(), NotCe
         )));
     }
     Ok(())
+}
+
+/// The representative of `x` in the union–find forest `p` (with path halving).
+fn root(p: &mut [usize], mut x: usize) -> usize {
+    while p[x] != x {
+        p[x] = p[p[x]];
+        x = p[x];
+    }
+    x
 }
 
 /// The reason given for a face not certified a strict triangle.

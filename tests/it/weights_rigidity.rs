@@ -13,7 +13,8 @@ use penner::theorems::t06_cotan_weights_metric::{
     check_weights_determine_metric, verify_weight_boxes, weight_enclosures,
 };
 use penner::theorems::t06_weight_rigidity::{
-    certify_by_faces, certify_positive_definite, certify_weight_rigidity, enclosure_bits, grounded_area_hessian,
+    certify_by_faces, certify_positive_definite, certify_weight_rigidity, enclosure_bits,
+    grounded_area_hessian,
 };
 use penner::theorems::{Settings, Verdict};
 use rand::{Rng, SeedableRng};
@@ -49,6 +50,7 @@ fn second_differences(l: [f64; 3]) -> [[f64; 3]; 3] {
         minus_two_area(&x)
     };
     let mut out = [[0.0; 3]; 3];
+    #[allow(clippy::needless_range_loop)] // (i, j) index the difference directions
     for i in 0..3 {
         for j in 0..3 {
             let d = if i == j {
@@ -123,7 +125,11 @@ fn b102_face_hessian_encloses_the_second_differences_of_the_area() {
                     lo += e.0 * x * x;
                     hi += e.1 * x * x;
                 }
-                let s = row.iter().zip(l).map(|(e, x)| e.1.abs() * x * x).sum::<f64>();
+                let s = row
+                    .iter()
+                    .zip(l)
+                    .map(|(e, x)| e.1.abs() * x * x)
+                    .sum::<f64>();
                 assert!(lo - 1e-12 * s <= 0.0 && 0.0 <= hi + 1e-12 * s, "{l:?}");
             }
         }
@@ -139,7 +145,10 @@ fn b102_face_hessian_encloses_the_second_differences_of_the_area() {
             excluded += usize::from(out);
         }
     }
-    assert!(excluded >= n - 2, "{excluded} of {n} moved triangles excluded");
+    assert!(
+        excluded >= n - 2,
+        "{excluded} of {n} moved triangles excluded"
+    );
 }
 
 /// Small closed surfaces with Euclidean lengths (as in the variational tests).
@@ -167,7 +176,13 @@ fn small_surface(seed: u64) -> (Mesh, Vec<f64>) {
 }
 
 fn certified_holds(v: &Verdict) -> bool {
-    matches!(v, Verdict::Holds { certified: true, .. })
+    matches!(
+        v,
+        Verdict::Holds {
+            certified: true,
+            ..
+        }
+    )
 }
 
 /// The certificate holds on the corpus (solids, the two-triangle sphere and one-vertex
@@ -192,14 +207,23 @@ fn b102_certifies_the_corpus_and_random_surfaces_and_the_recovery_agrees() {
         let c = certify_weight_rigidity(&m, &l, 0);
         assert!(c.is_ok(), "seed {seed}: {c:?}");
         let ld: Vec<Dd> = l.iter().map(|&x| <Dd as Real>::from_f64(x, ())).collect();
-        assert!(certify_weight_rigidity(&m, &ld, 0).is_ok(), "seed {seed} Dd");
+        assert!(
+            certify_weight_rigidity(&m, &ld, 0).is_ok(),
+            "seed {seed} Dd"
+        );
         // Another gauge edge certifies too (the kernel is span(q) whichever edge is fixed).
         assert!(certify_weight_rigidity(&m, &l, m.n_edges() - 1).is_ok());
         // The independent computation: the recovery from the metric's weights.
         let boxes = weight_enclosures(&m, &l).unwrap();
         let r = verify_weight_boxes(&m, &l, &boxes, &s);
         assert!(
-            matches!(r, Verdict::Holds { certified: false, .. }),
+            matches!(
+                r,
+                Verdict::Holds {
+                    certified: false,
+                    ..
+                }
+            ),
             "seed {seed}: {r:?}"
         );
         assert!(certified_holds(&check_weights_determine_metric(&m, &l, &s)));
@@ -302,8 +326,7 @@ fn b102_b103_singular_or_degenerate_input_is_never_certified() {
     let tet = Mesh::from_faces(4, &[[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]]).unwrap();
     let len = |a: u32, b: u32| match (a.min(b), a.max(b)) {
         (0, 1) | (1, 2) => 1.0,
-        (0, 2) => 2.0,
-        _ => 2.0,
+        _ => 2.0, // (0, 2), the degenerate face's long side, and the edges to 3
     };
     let tl: Vec<f64> = tet
         .edges()
@@ -380,7 +403,13 @@ fn t06_certified_beyond_the_dense_recovery_cap() {
         }
         let nc = (control.run)(&case, Prec::F64, &s).unwrap();
         assert!(
-            matches!(&nc, Verdict::Fails { certified: true, .. }),
+            matches!(
+                &nc,
+                Verdict::Fails {
+                    certified: true,
+                    ..
+                }
+            ),
             "{name}: {nc:?}"
         );
     }

@@ -94,6 +94,7 @@ impl AreaHessianKernel {
             self.cot[i].div_positive(&self.entry, &self.t);
         }
         let mut out = [[(0.0, 0.0); 3]; 3];
+        #[allow(clippy::needless_range_loop)] // (i, j) and (j, i) are filled together
         for i in 0..3 {
             for j in i..3 {
                 self.t.mul(&self.cot[i], &self.cot[j]);
