@@ -171,20 +171,19 @@ pub fn beyond_limits(case: &Surface, prec: Prec, max_faces: usize) -> Option<Ver
     })
 }
 
-/// Edges above which T06 answers `NotApplicable` (its Newton solve is dense).
-pub const T06_MAX_EDGES: usize = 150;
+/// T06: the per-face Hessian enclosure at `2p + 64` bits and one sparse verified Cholesky
+/// factorization per shift (proofs/B102; costs measured there); its control T06-NC, the
+/// weight enclosures at `4p + 64` bits (B31).
+pub const T06_CAPS: FaceCaps = FaceCaps {
+    f64: 200_000,
+    dd: 200_000,
+    mpfr: 200_000,
+    why: "per-face Hessian enclosures and a sparse verified Cholesky factorization",
+};
 
 fn t06(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
-    if let Some(v) = beyond_limits(case, prec, usize::MAX) {
+    if let Some(v) = beyond_caps(case, prec, &T06_CAPS) {
         return Some(v);
-    }
-    if case.mesh.n_edges() > T06_MAX_EDGES {
-        return Some(Verdict::NotApplicable {
-            reason: format!(
-                "{} edges: T06's dense Newton solve runs up to {T06_MAX_EDGES} edges",
-                case.mesh.n_edges()
-            ),
-        });
     }
     at_precision!(prec, case, |l: T| Some(
         t06_cotan_weights_metric::check_weights_determine_metric(&case.mesh, &l, s)

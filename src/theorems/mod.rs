@@ -15,6 +15,7 @@ pub mod t04_angle_integrability;
 pub mod t05_cotan_laplacian;
 pub mod t05_semidefinite;
 pub mod t06_cotan_weights_metric;
+pub mod t06_weight_rigidity;
 pub mod t07_conformal_energy;
 pub mod t08_circle_pattern_lengths;
 pub mod t09_circle_pattern_rigidity;

@@ -7,24 +7,32 @@
 //! - `pub fn verify_weight_boxes<T: Real>(mesh: &Mesh, lengths: &[T], boxes: &[Interval<Mpfr>], settings: &Settings) -> Verdict`
 //! - `pub fn weight_enclosures<T: Real>(mesh: &Mesh, lengths: &[T]) -> Option<Vec<Interval<Mpfr>>>`
 //!
-//! The metric is recovered from the weights by the convex solve of
-//! [`crate::variational::weights`] (gauge `q_0 = 1`) and compared with `ℓ_e²/ℓ_0²`
-//! (numerical, B59). A refutation is only ever the exact one of proofs/B31: the given
-//! metric's weights, enclosed, exclude a given weight.
+//! On a metric alone, T06 is certified by the positive definiteness of the weight energy's
+//! Hessian with one edge fixed ([`super::t06_weight_rigidity`], proofs/B102). Given
+//! weights, the metric is recovered by the convex solve of [`crate::variational::weights`]
+//! (gauge `q_0 = 1`) and compared with `ℓ_e²/ℓ_0²` (numerical, B59; also the fallback on
+//! small surfaces where B102 does not certify). A refutation is only ever the exact one of
+//! proofs/B31: the given metric's weights, enclosed, exclude a given weight.
 
 use super::bounds::{cot_error, eps, eps_shift, EPS_F64, SAFETY};
 use super::report::{check_lengths, lengths_out_of_range, Tally};
-use super::verdict::{Settings, Verdict};
+use super::t06_weight_rigidity::{certify_by_faces, certify_weight_rigidity};
+use super::verdict::{Settings, Verdict, Witness};
 use crate::geometry::cotan::cotan_weights;
 use crate::mesh::Mesh;
 use crate::predicates::tolerance::abs_at_most_scaled;
 use crate::scalar::{Interval, Mpfr, Precision, Real};
+use crate::uniformization::components::Components;
 use crate::variational::weights::metric_from_weights;
 
 /// The weight enclosures run at `4p + ENCLOSURE_EXTRA_BITS` bits for working precision
 /// `p ≥ 53` (proof: B31): rigorous at any precision, more bits only make them narrower —
 /// needed on needles, where `b² + c² − a²` cancels to `10⁻⁴⁸` of its terms at sides `10⁻²⁴`.
 pub const ENCLOSURE_EXTRA_BITS: u32 = 64;
+
+/// Edges up to which the metric is recovered from its weights by the dense Newton solve of
+/// [`metric_from_weights`] (`O(m³)` per step); above, the recovery is `undecided`.
+pub const RECOVERY_MAX_EDGES: usize = 150;
 
 /// Rigorous enclosures of the cotan weights `w_e = ½(cot α + cot β)` of the exact metric
 /// `lengths` (each length read as the exact rational it stores), on `Interval<Mpfr>` at
@@ -72,11 +80,22 @@ fn weights_proven_different<T: Real>(
     (!tally.is_clean()).then(|| tally.verdict())
 }
 
-/// T06 on the metric `lengths`: its cotan weights, computed at the working precision,
-/// recovered by [`metric_from_weights`] and compared with `ℓ_e²/ℓ_0²` as in
-/// [`verify_weights_determine_metric`]. Never `fails` (proofs/B31): the computed weights
-/// are the metric's only up to rounding, so no exact comparison applies, and a recovered
-/// metric beyond the first-order bound of B59 is no proof of a second metric (undecided).
+/// T06 on the metric `lengths` (each read as the exact rational it stores): every metric
+/// with the same cotan weights is a scaling of it.
+///
+/// `Holds`, certified, when the Hessian of the weight energy with edge 0 fixed is proved
+/// positive definite at the exact lengths (proofs/B102): by a verified Cholesky
+/// factorization of its enclosure ([`certify_weight_rigidity`]) or, where that cannot
+/// resolve the conditioning, by faces ([`certify_by_faces`], B103: every face a certified
+/// strict triangle, the faces connected through edges).
+/// Otherwise, up to [`RECOVERY_MAX_EDGES`] edges, the weights computed at the working
+/// precision are recovered by [`metric_from_weights`] and compared with `ℓ_e²/ℓ_0²` as in
+/// [`verify_weights_determine_metric`] (`holds` numerical, B59), and `undecided` with the
+/// certificate's reason beyond that. Never `fails` (proofs/B31): the computed weights are
+/// the metric's only up to rounding, so no exact comparison applies, and neither a matrix
+/// not proved definite nor a recovered metric beyond the first-order bound of B59 is a
+/// proof of a second metric. A disconnected surface is `NotApplicable`: each component
+/// scales on its own, so the statement is about connected surfaces.
 pub fn check_weights_determine_metric<T: Real>(
     mesh: &Mesh,
     lengths: &[T],
@@ -85,8 +104,58 @@ pub fn check_weights_determine_metric<T: Real>(
     if let Some(v) = check_lengths(mesh, lengths).or_else(|| lengths_out_of_range(lengths)) {
         return v;
     }
+    let components = Components::of(mesh).roots.len();
+    if components > 1 {
+        return Verdict::NotApplicable {
+            reason: format!(
+                "{components} components: the cotan weights fix the metric up to one scale \
+                 per component (T06 is about a connected surface)"
+            ),
+        };
+    }
+    // proof: B102, then B103 where the factorization cannot resolve the conditioning.
+    let certified = Verdict::Holds {
+        certified: true,
+        max_error: 0.0,
+    };
+    let reasons = match certify_weight_rigidity(mesh, lengths, 0) {
+        Ok(_) => return certified,
+        Err(n) => match certify_by_faces(mesh, lengths) {
+            Ok(()) => return certified,
+            Err(by_faces) => {
+                // Faces not certified strict are named by both: keep one list.
+                let mut r = n.elements;
+                if r.iter().all(|(e, _)| e == "surface") {
+                    r.extend(by_faces.elements);
+                }
+                r
+            }
+        },
+    };
+    let bits = T::precision_bits(lengths[0].ctx());
+    let undecided = |extra: Vec<Witness>| {
+        let mut witnesses: Vec<Witness> = reasons
+            .iter()
+            .map(|(element, detail)| Witness {
+                element: element.clone(),
+                detail: detail.clone(),
+                value: f64::NAN,
+            })
+            .collect();
+        witnesses.extend(extra);
+        Verdict::Undecided {
+            bits_tried: bits,
+            witnesses,
+        }
+    };
+    if mesh.n_edges() > RECOVERY_MAX_EDGES {
+        return undecided(Vec::new());
+    }
     let w = cotan_weights(mesh, lengths);
-    recover_and_compare(mesh, lengths, &w, settings)
+    match recover_and_compare(mesh, lengths, &w, settings) {
+        Verdict::Undecided { witnesses, .. } => undecided(witnesses),
+        v => v,
+    }
 }
 
 /// The metric with cotan weights `weights` (exact as given) is `lengths` up to scale.
@@ -181,6 +250,17 @@ fn recover_and_compare<T: Real>(
     let (e, bits) = (eps::<T>(ctx), T::precision_bits(ctx));
     let shift = eps_shift(bits);
     let mut tally = Tally::new(false, bits);
+    if mesh.n_edges() > RECOVERY_MAX_EDGES {
+        tally.undecided(
+            "surface",
+            format!(
+                "{} edges: the dense recovery runs up to {RECOVERY_MAX_EDGES} edges",
+                mesh.n_edges()
+            ),
+            f64::NAN,
+        );
+        return tally.verdict();
+    }
     let Some(sol) = metric_from_weights(mesh, weights, 0) else {
         tally.undecided("surface", "the Newton system is singular", f64::NAN);
         return tally.verdict();

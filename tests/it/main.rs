@@ -91,3 +91,4 @@ mod uniformization_ties;
 mod variational;
 mod variational_fast;
 mod variational_fused;
+mod weights_rigidity;

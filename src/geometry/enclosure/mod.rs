@@ -1,13 +1,15 @@
 //! Per-face enclosures with MPFR bounds rounded outward in place (no allocation per
 //! operation): the corner directions behind the enclosed cone angles
-//! ([`angle_sums`], proof: B33) and the corner cotangents from squared lengths and an
-//! enclosed area ([`cotans`], proof: B34).
+//! ([`angle_sums`], proof: B33), the corner cotangents from squared lengths and an
+//! enclosed area ([`cotans`], proof: B34), and the Hessian of `−2·Area` in the squared
+//! lengths ([`area_hessian`], proof: B102).
 //!
 //! Every bound is computed by one correctly rounded MPFR operation toward −∞ (lower bounds)
 //! or +∞ (upper bounds), so each [`Bounds`] encloses the exact value of its formula at every
 //! point of the input enclosures (the inclusion property of B20, operation by operation).
 
 pub mod angle_sums;
+pub mod area_hessian;
 pub mod cotans;
 
 use crate::scalar::{Interval, Mpfr};

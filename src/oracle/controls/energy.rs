@@ -8,7 +8,7 @@
 
 use crate::io::Surface;
 use crate::oracle::checks_energy::{
-    beyond_caps, beyond_limits, energy_probe, T06_MAX_EDGES, T31_CAPS, T32_CAPS, T33_CAPS,
+    beyond_caps, energy_probe, T06_CAPS, T31_CAPS, T32_CAPS, T33_CAPS,
 };
 use crate::oracle::precision::Prec;
 use crate::oracle::registry::Check;
@@ -26,12 +26,10 @@ use crate::variational::{energy, hyperbolic};
 /// No scaling of the case's metric has such weights, which the comparison of
 /// [`verify_weight_boxes`] proves (`fails`, certified, witness `e1`).
 fn t06_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
-    if case.mesh.n_edges() > T06_MAX_EDGES || case.mesh.n_edges() < 2 {
-        return Some(super::not_applicable(
-            "T06 runs from 2 up to its edge limit",
-        ));
+    if case.mesh.n_edges() < 2 {
+        return Some(super::not_applicable("T06 runs from 2 edges"));
     }
-    if let Some(v) = beyond_limits(case, prec, usize::MAX) {
+    if let Some(v) = beyond_caps(case, prec, &T06_CAPS) {
         return Some(v);
     }
     at_precision!(prec, case, |l: T| {
