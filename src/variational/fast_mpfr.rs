@@ -124,7 +124,7 @@ fn longest(x: &[&Float; 3]) -> Option<usize> {
 /// [`FaceMpfr`] of the face with logarithmic lengths `x` (all at the same precision),
 /// with `π` and `π/2` at that precision (module doc).
 pub fn face_mpfr(x: &[Mpfr; 3], pi: &Float, half_pi: &Float) -> FaceMpfr {
-    let lob = MpfrLobachevsky::new(x[0].0.prec());
+    let lob = MpfrLobachevsky::for_energy_pass(x[0].0.prec());
     face_with(&x.each_ref().map(|v| &v.0), pi, half_pi, &lob)
 }
 
@@ -203,7 +203,11 @@ fn face_with(x: &[&Float; 3], pi: &Float, half_pi: &Float, lob: &MpfrLobachevsky
         let mut den = Float::with_val(p, &sigma * &e[m]);
         den.recip_mut();
         den *= &r;
-        let mut ang = half_angle_atan(&den, p);
+        let tabled = lob.elementary().and_then(|t| t.atan(&den));
+        let mut ang = match tabled {
+            Some(a) => Float::with_val(p, &a),
+            None => half_angle_atan(&den, p),
+        };
         ang <<= 1u32;
         ang
     };
@@ -266,7 +270,7 @@ pub fn energy_gradient_hessian_mpfr(
     let mut theta = vec![zero.clone(); mesh.n_vertices()];
     let mut val = pattern.zeros(&zero);
     let mut w = zero.clone();
-    let lob = MpfrLobachevsky::new(p);
+    let lob = MpfrLobachevsky::for_energy_pass(p);
     for f in mesh.faces() {
         let hs = mesh.face_halfedges(f);
         let x = hs.map(|h| &lt[h.edge().idx()].0);
