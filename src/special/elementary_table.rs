@@ -20,6 +20,10 @@ use rug::Float;
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
 
+/// Largest precision with tables: beyond, the series grow long and the tables' `2¹¹` MPFR
+/// evaluations costly, and MPFR's `log` and `atan` are used instead (proof: B101).
+pub(crate) const MAX_TABLE_BITS: u32 = 1040;
+
 /// Bits of the table index: `2¹⁰` entries `log(1 + j/2¹⁰)` (proof: B101).
 const INDEX_BITS: u32 = 10;
 

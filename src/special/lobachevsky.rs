@@ -26,7 +26,7 @@
 //! ```
 
 use super::coefficients::{pass_working_precision, table, working_precision, Table};
-use super::elementary_table::ElementaryTable;
+use super::elementary_table::{ElementaryTable, MAX_TABLE_BITS};
 use super::enclosure::lobachevsky_enclosure;
 use super::eval::{point, point_in};
 use super::fast_dd::lobachevsky_dd;
@@ -164,14 +164,14 @@ impl MpfrLobachevsky {
 
     /// For results of `bits` bits in the MPFR energy pass: the series at `q = bits + 16`
     /// bits instead of [`lobachevsky`]'s `bits + 32..bits + 95`, and `log 2t` from a table
-    /// (B101) instead of MPFR's `log`; within one rounding plus `2⁻¹⁰` of `2⁻ᵇⁱᵗˢ|Л|`
-    /// (proof: B100).
+    /// (B101, up to `q = 1040`) instead of MPFR's `log`; within one rounding plus `2⁻¹⁰` of
+    /// `2⁻ᵇⁱᵗˢ|Л|` (proof: B100).
     pub(crate) fn for_energy_pass(bits: u32) -> Self {
         let q = pass_working_precision(bits);
         MpfrLobachevsky {
             bits,
             table: table(q),
-            ln: Some(ElementaryTable::of_precision(q)),
+            ln: (q <= MAX_TABLE_BITS).then(|| ElementaryTable::of_precision(q)),
         }
     }
 
@@ -235,7 +235,7 @@ mod tests {
         let pi = Float::with_val(2 * p, rug::float::Constant::Pi);
         let mut out: Vec<Float> = (0..400)
             .map(|_| {
-                Float::with_val(p, rng.gen_range(1e-6..3.141592))
+                Float::with_val(p, rng.gen_range(1e-6..std::f64::consts::PI))
                     + (Float::with_val(p, rng.gen_range(0.0..1.0)) >> 60u32)
             })
             .collect();
@@ -295,5 +295,9 @@ mod tests {
         assert_eq!(generic.table.prec, 320);
         let x = Float::with_val(256, 0.7);
         assert_eq!(generic.eval(&x), lobachevsky(&Mpfr(x.clone())).0);
+        // Beyond the tables' range the pass keeps MPFR's log.
+        assert!(MpfrLobachevsky::for_energy_pass(2048)
+            .elementary()
+            .is_none());
     }
 }
