@@ -149,3 +149,13 @@ pub(crate) fn table(prec: u32) -> Arc<Table> {
 pub(crate) fn working_precision(bits: u32) -> u32 {
     (bits + 32).div_ceil(PREC_STEP) * PREC_STEP
 }
+
+/// Guard bits of `Л` in the MPFR energy pass: the series is evaluated at `bits + 16`
+/// bits, within one rounding plus `2⁻¹⁰·2⁻ᵇⁱᵗˢ|Л|` (proof: B100).
+pub(crate) const PASS_GUARD_BITS: u32 = 16;
+
+/// The working precision of `Л` in the MPFR energy pass for results of `bits` bits:
+/// `bits + PASS_GUARD_BITS`, not rounded to a multiple of [`PREC_STEP`] (proof: B100).
+pub(crate) fn pass_working_precision(bits: u32) -> u32 {
+    bits.saturating_add(PASS_GUARD_BITS)
+}

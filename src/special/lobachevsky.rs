@@ -25,7 +25,8 @@
 //! assert!(lobachevsky(&std::f64::consts::FRAC_PI_2).abs() < 1e-16);
 //! ```
 
-use super::coefficients::{table, working_precision, Table};
+use super::coefficients::{pass_working_precision, table, working_precision, Table};
+use super::elementary_table::{ElementaryTable, MAX_TABLE_BITS};
 use super::enclosure::lobachevsky_enclosure;
 use super::eval::{point, point_in};
 use super::fast_dd::lobachevsky_dd;
@@ -147,6 +148,8 @@ pub fn lobachevsky<T: Real>(x: &T) -> T {
 pub(crate) struct MpfrLobachevsky {
     bits: u32,
     table: Arc<Table>,
+    /// The table logarithm of the energy pass (B101), `None` for MPFR's `log`.
+    ln: Option<Arc<ElementaryTable>>,
 }
 
 impl MpfrLobachevsky {
@@ -155,7 +158,27 @@ impl MpfrLobachevsky {
         MpfrLobachevsky {
             bits,
             table: table(working_precision(bits)),
+            ln: None,
         }
+    }
+
+    /// For results of `bits` bits in the MPFR energy pass: the series at `q = bits + 16`
+    /// bits instead of [`lobachevsky`]'s `bits + 32..bits + 95`, and `log 2t` from a table
+    /// (B101, up to `q = 1040`) instead of MPFR's `log`; within one rounding plus `2⁻¹⁰` of
+    /// `2⁻ᵇⁱᵗˢ|Л|` (proof: B100).
+    pub(crate) fn for_energy_pass(bits: u32) -> Self {
+        let q = pass_working_precision(bits);
+        MpfrLobachevsky {
+            bits,
+            table: table(q),
+            ln: (q <= MAX_TABLE_BITS).then(|| ElementaryTable::of_precision(q)),
+        }
+    }
+
+    /// The tables of the energy pass's logarithm and arctangent (B101), `None` for
+    /// [`MpfrLobachevsky::new`].
+    pub(crate) fn elementary(&self) -> Option<&ElementaryTable> {
+        self.ln.as_deref()
     }
 
     /// `Л(x)` rounded once to the precision of this evaluator, NaN where `x` is not finite
@@ -163,7 +186,7 @@ impl MpfrLobachevsky {
     /// directly (the generic path of [`lobachevsky`] without its rational round trips).
     pub(crate) fn eval(&self, x: &Float) -> Float {
         let found = if x.is_finite() {
-            point_in(x, &self.table)
+            point_in(x, &self.table, self.ln.as_deref())
         } else {
             None
         };
@@ -185,4 +208,96 @@ pub fn clausen2<T: Real>(theta: &T) -> T {
 /// has the largest volume, `3Л(π/3) = 1.01494160640965362502…`.
 pub fn ideal_tetrahedron_volume<T: Real>(alpha: &T, beta: &T, gamma: &T) -> T {
     lobachevsky(alpha) + &lobachevsky(beta) + &lobachevsky(gamma)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::reference::lobachevsky_tangent_series;
+    use super::*;
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
+
+    /// `|y − Л(x)| / (2⁻ᵖ|Л(x)|)` against the tangent-number series at `2p + 64` bits.
+    fn relative_units(y: &Float, x: &Float, p: u32) -> f64 {
+        let r = lobachevsky_tangent_series(x, 2 * p + 64).expect("reducible");
+        let w = 2 * p + 128;
+        let d = Float::with_val(w, y - &r).abs();
+        if d.is_zero() {
+            return 0.0;
+        }
+        (Float::with_val(w, d / r.abs()) << p).to_f64()
+    }
+
+    /// Angles of a face and their neighbourhoods: random in (0, π), next to 0, π/2 and π
+    /// (closer than 2⁻ᵖ), at the switches of the two series (π/2 ± 1/2) and at π/4, π/6.
+    fn angles(p: u32) -> Vec<Float> {
+        let mut rng = ChaCha8Rng::seed_from_u64(100);
+        let pi = Float::with_val(2 * p, rug::float::Constant::Pi);
+        let mut out: Vec<Float> = (0..400)
+            .map(|_| {
+                Float::with_val(p, rng.gen_range(1e-6..std::f64::consts::PI))
+                    + (Float::with_val(p, rng.gen_range(0.0..1.0)) >> 60u32)
+            })
+            .collect();
+        for (num, den) in [(1u32, 2u32), (1, 4), (1, 6), (5, 6), (1, 1)] {
+            let c = Float::with_val(2 * p, &pi * num) / den;
+            for k in [-3i32, 0, 3] {
+                let off = Float::with_val(p, k) >> (p + 4);
+                out.push(Float::with_val(p, &c + &off));
+            }
+        }
+        let half_pi = Float::with_val(p, &pi >> 1u32);
+        for s in [-0.5, 0.5] {
+            let c = Float::with_val(p, &half_pi + s);
+            let ulp = Float::with_val(p, 1) >> p;
+            out.push(Float::with_val(p, &c - &ulp));
+            out.push(Float::with_val(p, &c + &ulp));
+            out.push(c);
+        }
+        out.extend([1e-3, 1e-30].map(|v| Float::with_val(p, v)));
+        out.push(Float::with_val(p, 1) >> 2000u32);
+        out
+    }
+
+    #[test]
+    fn b100_energy_pass_lobachevsky_within_one_rounding_of_tangent_series() {
+        for p in [53u32, 128, 256, 512] {
+            let pass = MpfrLobachevsky::for_energy_pass(p);
+            let coarse = MpfrLobachevsky::for_energy_pass(p - 12);
+            let bound = 1.0 + 1.0 / 1024.0; // proof: B100
+            let mut coarse_rejected = false;
+            for x in angles(p) {
+                let y = pass.eval(&x);
+                assert_eq!(y.prec(), p);
+                let e = relative_units(&y, &x, p);
+                assert!(e <= bound, "p = {p}: Л({x}) off by {e}·2⁻ᵖ|Л|");
+                // Negative control: a change of two units of 2⁻ᵖ|Л| is rejected.
+                let shift = Float::with_val(p + 64, &y * 2u32) >> p;
+                let moved = Float::with_val(p + 64, &y + &shift);
+                assert!(y.is_zero() || relative_units(&moved, &x, p) > bound);
+                // Negative control: the pass's evaluation at 12 bits less is rejected
+                // somewhere on the grid.
+                coarse_rejected |= relative_units(&coarse.eval(&x), &x, p) > bound;
+            }
+            assert!(coarse_rejected, "p = {p}: 12 bits less went unnoticed");
+        }
+    }
+
+    #[test]
+    fn b100_energy_pass_lobachevsky_uses_the_table_logarithm() {
+        // The pass's evaluator carries the tables (B101) at p + 16 bits; the generic one
+        // does not, so its numbers stay those of `lobachevsky`.
+        let pass = MpfrLobachevsky::for_energy_pass(256);
+        assert_eq!(pass.table.prec, 272);
+        assert!(pass.elementary().is_some_and(|t| t.prec() == 272));
+        let generic = MpfrLobachevsky::new(256);
+        assert!(generic.elementary().is_none());
+        assert_eq!(generic.table.prec, 320);
+        let x = Float::with_val(256, 0.7);
+        assert_eq!(generic.eval(&x), lobachevsky(&Mpfr(x.clone())).0);
+        // Beyond the tables' range the pass keeps MPFR's log.
+        assert!(MpfrLobachevsky::for_energy_pass(2048)
+            .elementary()
+            .is_none());
+    }
 }

@@ -4,6 +4,7 @@
 
 mod coefficients;
 mod dual_fast;
+mod elementary_table;
 mod enclosure;
 mod eval;
 mod fast_dd;

@@ -11,6 +11,7 @@
 //! operation.
 
 use super::coefficients::Table;
+use super::elementary_table::ElementaryTable;
 use rug::float::Round;
 use rug::ops::{AddAssignRound, MulAssignRound};
 use rug::{Assign, Float};
@@ -201,8 +202,18 @@ fn horner_graded(
 }
 
 /// One bound (`dir`) of the truncated series (`N` terms, no tail) over `0 < l ≤ t ≤ h`:
-/// of `Л(t)` for [`Expansion::AtZero`], of `g(t)` for [`Expansion::AtHalfPi`].
-pub(crate) fn bound(l: &Float, h: &Float, e: Expansion, dir: Dir, t: &Table, n: usize) -> Float {
+/// of `Л(t)` for [`Expansion::AtZero`], of `g(t)` for [`Expansion::AtHalfPi`]. A point
+/// value (`Dir::Near`) takes `log 2t` from `ln` when given (proofs/B100, B101), else from
+/// MPFR.
+pub(crate) fn bound(
+    l: &Float,
+    h: &Float,
+    e: Expansion,
+    dir: Dir,
+    t: &Table,
+    n: usize,
+    ln: Option<&ElementaryTable>,
+) -> Float {
     let p = t.prec;
     // The factor t and the argument of P are the low end for a lower bound.
     let (tt, other) = if dir == Dir::Up { (h, l) } else { (l, h) };
@@ -224,7 +235,13 @@ pub(crate) fn bound(l: &Float, h: &Float, e: Expansion, dir: Dir, t: &Table, n: 
                 horner(&coeffs[..n], &s, dir, p)
             };
             let two = Float::with_val(other.prec(), other << 1u32);
-            let lg = Float::with_val_round(p, two.ln_ref(), dir.opposite().round()).0;
+            let table_log = match ln {
+                Some(tab) if dir == Dir::Near && tab.prec() == p => tab.ln(&two),
+                _ => None,
+            };
+            let lg = table_log.unwrap_or_else(|| {
+                Float::with_val_round(p, two.ln_ref(), dir.opposite().round()).0
+            });
             let one_minus = Float::with_val_round(p, 1 - &lg, dir.round()).0;
             let inner = Float::with_val_round(p, &one_minus + &poly, dir.round()).0;
             Float::with_val_round(p, &inner * tt, dir.round()).0

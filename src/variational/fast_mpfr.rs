@@ -2,16 +2,19 @@
 //! faces: the formulas of [`super::fast_f64`] (proofs/B88) with every operation of `rug`
 //! rounded to nearest at `p` bits, each corner angle computed once (the largest as
 //! `π − α_a − α_b`), the cotangents from the squared sides over `r = 4·Area` (no
-//! transcendental function), and each half angle `atan τ` from a binary64 seed and one
-//! `sin_cos` at `p + 8` bits (proofs/B29).
+//! transcendental function), each half angle `atan τ` with `τ < 1` (the two smaller
+//! corners) from a table arctangent at `p + 16 ≤ 1040` bits (proofs/B101), any other from a
+//! binary64 seed and one `sin_cos` at `p + 8` bits (proofs/B29), and `Л` at `p + 16` bits
+//! with a table logarithm (proofs/B100).
 //!
 //! Half angle: with `φ₀ = atan(fl₆₄(τ))` (a binary64 number, exact in MPFR), `s = sin φ₀`,
 //! `c = cos φ₀`, the identity `atan τ = φ₀ + atan ρ`, `ρ = (τc − s)/(c + τs) = tan(atan τ − φ₀)`
 //! holds for every `τ > 0`; `|ρ| < 2⁻⁴⁰` for the seed, so `atan ρ = ρ − ρ³/3 + ρ⁵/5 − …` needs
 //! a handful of terms, chosen from the exponents of `ρ` and `φ₀`. Outside the binary64 range
 //! of the seed (`τ` below `2⁻¹⁰⁰⁰` or above `2¹⁰⁰⁰`), past 2048 bits, or with a seed off by
-//! more than `2⁻²⁰`, MPFR's `atan` is used instead. Either way the half angle is within
-//! `1.02·2⁻ᵖ` relative (B29), inside B88's allowance of 2 ulps for `atan`.
+//! more than `2⁻²⁰`, MPFR's `atan` is used instead. Either way, and by the table, the half
+//! angle is within `1.02·2⁻ᵖ` relative (B29, B101), inside B88's allowance of 2 ulps for
+//! `atan`.
 //!
 //! The result is numerical, not certified: it differs from the generic
 //! [`energy_gradient_hessian_with`](super::energy::energy_gradient_hessian_with) at MPFR-p by
@@ -108,6 +111,16 @@ pub fn half_angle_atan(tau: &Float, p: u32) -> Float {
     Float::with_val(p, &series + phi0)
 }
 
+/// The half angle `atan τ` at `p` bits in the pass: from the table arctangent at `p + 16`
+/// bits rounded once when `τ < 1` (proof: B101), else by [`half_angle_atan`] (B29); both
+/// within `1.02·2⁻ᵖ` relative.
+fn half_angle_in_pass(tau: &Float, p: u32, lob: &MpfrLobachevsky) -> Float {
+    match lob.elementary().and_then(|t| t.atan(tau)) {
+        Some(a) => Float::with_val(p, &a),
+        None => half_angle_atan(tau, p),
+    }
+}
+
 /// The index of the largest `x_m` (the last one among equal maxima), or `None` when one is
 /// NaN.
 fn longest(x: &[&Float; 3]) -> Option<usize> {
@@ -124,7 +137,7 @@ fn longest(x: &[&Float; 3]) -> Option<usize> {
 /// [`FaceMpfr`] of the face with logarithmic lengths `x` (all at the same precision),
 /// with `π` and `π/2` at that precision (module doc).
 pub fn face_mpfr(x: &[Mpfr; 3], pi: &Float, half_pi: &Float) -> FaceMpfr {
-    let lob = MpfrLobachevsky::new(x[0].0.prec());
+    let lob = MpfrLobachevsky::for_energy_pass(x[0].0.prec());
     face_with(&x.each_ref().map(|v| &v.0), pi, half_pi, &lob)
 }
 
@@ -203,7 +216,7 @@ fn face_with(x: &[&Float; 3], pi: &Float, half_pi: &Float, lob: &MpfrLobachevsky
         let mut den = Float::with_val(p, &sigma * &e[m]);
         den.recip_mut();
         den *= &r;
-        let mut ang = half_angle_atan(&den, p);
+        let mut ang = half_angle_in_pass(&den, p, lob);
         ang <<= 1u32;
         ang
     };
@@ -266,7 +279,7 @@ pub fn energy_gradient_hessian_mpfr(
     let mut theta = vec![zero.clone(); mesh.n_vertices()];
     let mut val = pattern.zeros(&zero);
     let mut w = zero.clone();
-    let lob = MpfrLobachevsky::new(p);
+    let lob = MpfrLobachevsky::for_energy_pass(p);
     for f in mesh.faces() {
         let hs = mesh.face_halfedges(f);
         let x = hs.map(|h| &lt[h.edge().idx()].0);
