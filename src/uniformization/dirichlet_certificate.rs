@@ -186,7 +186,7 @@ pub fn check_disk_certificate_on(
         for (x, y, z) in [(a, b, c), (b, c, a), (c, a, b)] {
             if (y.clone() + z - x).sign() != Some(Sign::Positive) {
                 return undecided(format!(
-                    "face f{} not certified a strict triangle on the whole box",
+                    "disk face f{} not certified a strict triangle on the whole box",
                     f.0
                 ));
             }
@@ -198,7 +198,7 @@ pub fn check_disk_certificate_on(
         };
         if !certified_nonnegative(&enclose_p(&q.lengths(&lb).map(Clone::clone).to_array())) {
             return undecided(format!(
-                "edge e{} not certified Delaunay on the whole box",
+                "disk edge e{} not certified Delaunay on the whole box",
                 e.0
             ));
         }
@@ -209,7 +209,7 @@ pub fn check_disk_certificate_on(
     for (v, theta_v) in theta_box.iter().enumerate() {
         if data.pole_length[v].is_some() && !certified_nonnegative(&(pi.clone() - theta_v)) {
             return undecided(format!(
-                "the disk's angle at link vertex v{v} is not certified ≤ π on the whole box"
+                "the disk's angle at its link vertex {v} (disk numbering: the surface's, one less after the pole) is not certified ≤ π on the whole box"
             ));
         }
     }
