@@ -2,7 +2,8 @@
 //! the verified Cholesky factorization of the enclosed weight-energy Hessian and the
 //! face-wise argument, each with its wall time.
 //!
-//! `cargo run --release --example weight_rigidity -- SURFACE.off`
+//! `cargo run --release --example weight_rigidity -- SURFACE.off`; without an argument, the
+//! flat 64 × 64 torus of `mesh::builders::flat_torus` (8192 faces).
 
 use penner::scalar::{Dd, Mpfr, Precision, Real};
 use penner::theorems::t06_weight_rigidity::{certify_by_faces, certify_weight_rigidity};
@@ -32,10 +33,43 @@ fn run<T: Real>(name: &str, mesh: &penner::mesh::Mesh, l: &[T]) {
     );
 }
 
+/// The built-in surface: the flat 64 × 64 torus, its lengths from the exact squared ones.
+fn flat_torus() {
+    let t = penner::mesh::builders::flat_torus(64, 64).expect("64 × 64 is a valid grid");
+    let lengths = |p: Precision| -> Vec<Mpfr> {
+        t.squared_lengths
+            .iter()
+            .map(|q| Mpfr::from_rational(q, p).sqrt())
+            .collect()
+    };
+    println!(
+        "flat torus 64 × 64: {} faces, {} edges",
+        t.mesh.n_faces(),
+        t.mesh.n_edges()
+    );
+    let f64s: Vec<f64> = t
+        .squared_lengths
+        .iter()
+        .map(|q| f64::from_rational(q, ()).sqrt())
+        .collect();
+    run("f64", &t.mesh, &f64s);
+    let dds: Vec<Dd> = t
+        .squared_lengths
+        .iter()
+        .map(|q| Dd::from_rational(q, ()).sqrt())
+        .collect();
+    run("dd", &t.mesh, &dds);
+    run(
+        "mpfr-256",
+        &t.mesh,
+        &lengths(Precision::new(256).expect("256 bits")),
+    );
+}
+
 fn main() {
     let Some(path) = std::env::args().nth(1) else {
-        eprintln!("usage: weight_rigidity SURFACE");
-        std::process::exit(3);
+        flat_torus();
+        return;
     };
     let s = match penner::io::read_path(std::path::Path::new(&path)) {
         Ok(s) => s,
