@@ -1,5 +1,6 @@
-//! The `penner` command line: `penner` (report on the built-in corpus), `penner check`,
-//! `penner certify`, `penner delaunay`, `penner replay`. See README.md for exit codes.
+//! The `penner` command line, seven subcommands: `penner report` (also `penner` alone: the
+//! report on the built-in corpus), `penner check`, `penner certify`, `penner delaunay`,
+//! `penner replay`, `penner uniformize` and `penner pack`. See README.md for exit codes.
 
 mod cli;
 

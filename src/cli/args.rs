@@ -169,8 +169,9 @@ pub struct UniformizeExtra {
     #[arg(long, conflicts_with_all = ["targets", "flat"])]
     pub sphere: bool,
     /// The hyperbolic target (Thm 11, genus ≥ 2): the input lengths read as hyperbolic
-    /// lengths, all cone angles 2π (or `--targets` with Σ(2π − Θ) > 2πχ), fixed
-    /// triangulation, sinh scaling; residual and existence certified (B38, B39).
+    /// lengths, all cone angles 2π (or `--targets` with Σ(2π − Θ) > 2πχ), sinh scaling
+    /// with λ-Ptolemy flips to the hyperbolic Delaunay triangulation along the way;
+    /// residual and existence certified on the final triangulation (B39, B87, B89).
     #[arg(long, conflicts_with_all = ["flat", "sphere"])]
     pub hyperbolic: bool,
     /// The pole v∞ of `--sphere` (default: the vertex of largest degree that works).

@@ -29,7 +29,7 @@ impl Mesh {
     ///        l                 l
     /// ```
     ///
-    /// V, E and F are unchanged, hence χ (T02, `proofs/T02-flip-preserves-euler-characteristic.md`).
+    /// V, E and F are unchanged, hence χ (T02, `proofs/T02-flips-keep-euler-characteristic.md`).
     /// Flipping the same edge twice gives back the original complex up to one relabeling:
     /// the two half-edges of `e` swap (`2e` ↔ `2e+1`), the two faces swap ids, and each
     /// face may start at a different half-edge. Four flips restore `next`, `tail` and

@@ -76,6 +76,7 @@ mod theorems_fixed;
 mod theorems_flips;
 mod theorems_random;
 mod tidy;
+mod tidy_catalogue;
 mod tie_claims;
 mod tolerance_range;
 mod tolerance_tightness;
