@@ -28,7 +28,9 @@ fn catalogue_problems(catalogue: &str, expected: &BTreeSet<String>) -> Vec<Strin
             problems.push(format!("{id} has two rows in docs/catalogue.md"));
         }
         if !expected.contains(id) {
-            problems.push(format!("{id} has a row but is not a theorem of the catalogue"));
+            problems.push(format!(
+                "{id} has a row but is not a theorem of the catalogue"
+            ));
         }
     }
     for id in expected.difference(&seen) {
@@ -62,7 +64,7 @@ fn catalogue_has_one_row_per_theorem() {
 
 #[test]
 fn catalogue_rule_rejects_missing_duplicate_and_unknown_rows() {
-    let expected: BTreeSet<String> = ["T01", "T02"].iter().map(|s| s.to_string()).collect();
+    let expected: BTreeSet<String> = ["T01", "T02"].iter().map(ToString::to_string).collect();
     let good = "| ID | Statement |\n|---|---|\n| T01 | a |\n| T02 | b |\n";
     assert!(catalogue_problems(good, &expected).is_empty());
     let broken = "| T01 | a |\n| T01 | again |\n| T99 | unknown |\n";
