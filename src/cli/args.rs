@@ -12,6 +12,9 @@ pub struct Cli {
     /// What to do (default: the report on the built-in corpus).
     #[command(subcommand)]
     pub command: Option<Command>,
+    /// Repairs of OBJ/OFF input, for every subcommand that reads a surface.
+    #[command(flatten)]
+    pub repair: RepairArgs,
 }
 
 /// The subcommands.
@@ -183,4 +186,36 @@ pub struct UniformizeExtra {
     /// Write the planar layout of the result as SVG to this new file.
     #[arg(long, value_name = "FILE")]
     pub svg: Option<PathBuf>,
+}
+
+/// Repairs of OBJ/OFF input (`penner::io::repair`), each reported; nothing is changed
+/// without them. One flag per repair, as the command line spells them.
+#[allow(clippy::struct_excessive_bools)]
+#[derive(clap::Args, Debug, Clone, Copy, Default)]
+pub struct RepairArgs {
+    /// All three repairs: --triangulate, --orient and --drop-unreferenced.
+    #[arg(long, global = true)]
+    pub repair: bool,
+    /// Split polygon faces into triangles: planar ones in their plane (largest smallest
+    /// angle, exact predicates), others as the best non-folding fan.
+    #[arg(long, global = true)]
+    pub triangulate: bool,
+    /// Reverse faces to one consistent orientation (a non-orientable surface is an error
+    /// naming a cycle of faces).
+    #[arg(long, global = true)]
+    pub orient: bool,
+    /// Remove vertices that belong to no face.
+    #[arg(long, global = true)]
+    pub drop_unreferenced: bool,
+}
+
+impl RepairArgs {
+    /// The repairs asked for.
+    pub fn repairs(self) -> penner::io::repair::Repairs {
+        penner::io::repair::Repairs {
+            triangulate: self.repair || self.triangulate,
+            orient: self.repair || self.orient,
+            drop_unreferenced: self.repair || self.drop_unreferenced,
+        }
+    }
 }

@@ -23,21 +23,25 @@ use clap::Parser;
 use error::{code, CliError};
 use std::process::ExitCode;
 
+/// Print a usage error (or `--help`, `--version`) and its exit code: 3, or 0 for help.
+fn usage_exit(e: &clap::Error) -> ExitCode {
+    let _ = e.print();
+    ExitCode::from(if e.use_stderr() {
+        code::BAD_INPUT
+    } else {
+        code::HOLDS
+    })
+}
+
 /// Parse the arguments, run the command, map the outcome to an exit code. Errors are one
 /// clear line on standard error, never a panic or a backtrace.
 pub fn main() -> ExitCode {
     install_panic_hook();
     let cli = match Cli::try_parse() {
         Ok(c) => c,
-        Err(e) => {
-            let _ = e.print();
-            return ExitCode::from(if e.use_stderr() {
-                code::BAD_INPUT
-            } else {
-                code::HOLDS
-            });
-        }
+        Err(e) => return usage_exit(&e),
     };
+    input::set_repairs(cli.repair.repairs());
     let result = match cli.command {
         None => report::run(penner::oracle::precision::REPORT_LIST, false),
         Some(Command::Report { precision, json }) => report::run(&precision, json),

@@ -21,6 +21,8 @@ pub mod decimal_surface;
 pub mod json;
 pub mod obj;
 pub mod off;
+pub mod repair;
+pub mod soup;
 pub mod strict_json;
 pub mod surface;
 mod text;
@@ -127,6 +129,15 @@ pub enum ReadError {
         element: String,
         /// Number of corners.
         count: usize,
+    },
+    /// A repair that was asked for cannot be made (a polygon with no valid triangulation,
+    /// a non-orientable surface asked to be oriented).
+    #[error("{element}: {message}")]
+    CannotRepair {
+        /// The line of the face concerned.
+        element: String,
+        /// What stands in the way.
+        message: String,
     },
     /// The connectivity is not an oriented surface (non-manifold, inconsistent or
     /// non-orientable gluing, isolated vertex, …); `element` names the face's line or

@@ -2,15 +2,17 @@
 //! `f a b c` (corners `i`, `i/t`, `i/t/n`, `i//n`; 1-based, negative = relative).
 //!
 //! Faces with more than three corners are refused ([`ReadError::NotTriangle`]) rather than
-//! triangulated: a fan would invent edges the file does not have. `v` lines take 3
+//! triangulated silently: a triangulation invents edges the file does not have. The
+//! `triangulate` repair ([`super::repair`]) splits them on request, reported. `v` lines take 3
 //! coordinates, 4 with `w = 1`, or 6 (xyz + an RGB colour, ignored). `vt`, `vn`, `vp`,
 //! `g`, `o`, `s`, `usemtl`, `mtllib`, `l` and `p` lines are ignored; any other statement
 //! is an error.
 
 use super::decimal::Coordinate;
 use super::decimal_surface::DecimalSurface;
+use super::soup::PolygonSoup;
 use super::surface::Surface;
-use super::text::{content_lines, coordinate, surface_from_soup};
+use super::text::{content_lines, coordinate};
 use super::{text_of, ReadError};
 
 /// Read an OBJ surface from bytes (refusing non-UTF-8 data).
@@ -22,7 +24,7 @@ pub fn read_bytes(bytes: &[u8]) -> Result<Surface, ReadError> {
 /// edge): the fast path for large meshes. [`read`] is this followed by
 /// [`DecimalSurface::into_surface`].
 pub fn read_decimal(text: &str) -> Result<DecimalSurface, ReadError> {
-    read_soup(text)
+    read_polygons(text)?.into_surface()
 }
 
 /// Read an OBJ surface from text.
@@ -33,14 +35,16 @@ pub fn read_decimal(text: &str) -> Result<DecimalSurface, ReadError> {
 /// assert_eq!(s.mesh.euler_characteristic(), 2);
 /// ```
 pub fn read(text: &str) -> Result<Surface, ReadError> {
-    read_soup(text).map(DecimalSurface::into_surface)
+    read_decimal(text).map(DecimalSurface::into_surface)
 }
 
-fn read_soup(text: &str) -> Result<DecimalSurface, ReadError> {
+/// Read the vertices and faces as written (polygons kept), for [`super::repair`].
+pub fn read_polygons(text: &str) -> Result<PolygonSoup, ReadError> {
     let mut positions: Vec<[Coordinate; 3]> = Vec::new();
     let mut vertex_lines = Vec::new();
     // Corners as written (resolved after all vertices are known), with their line.
-    let mut raw_faces: Vec<([i64; 3], usize, usize)> = Vec::new();
+    let mut raw_corners: Vec<i64> = Vec::new();
+    let mut raw_faces: Vec<(usize, usize, usize)> = Vec::new(); // (end in raw_corners, line, vertices seen)
     for (line, l) in content_lines(text) {
         let mut toks = l.split_ascii_whitespace();
         let Some(key) = toks.next() else { continue };
@@ -71,21 +75,20 @@ fn read_soup(text: &str) -> Result<DecimalSurface, ReadError> {
                 vertex_lines.push(line);
             }
             "f" => {
-                if args.len() != 3 {
+                if args.len() < 3 {
                     return Err(ReadError::NotTriangle {
                         element: format!("line {line}"),
                         count: args.len(),
                     });
                 }
-                let mut c = [0i64; 3];
-                for (k, a) in args.iter().enumerate() {
+                for a in &args {
                     let idx = a.split('/').next().unwrap_or("");
-                    c[k] = idx.parse::<i64>().map_err(|_| ReadError::Syntax {
+                    raw_corners.push(idx.parse::<i64>().map_err(|_| ReadError::Syntax {
                         line,
                         message: format!("`{}` is not a vertex index", short(a)),
-                    })?;
+                    })?);
                 }
-                raw_faces.push((c, line, positions.len()));
+                raw_faces.push((raw_corners.len(), line, positions.len()));
             }
             "vt" | "vn" | "vp" | "g" | "o" | "s" | "usemtl" | "mtllib" | "l" | "p" => {}
             other => {
@@ -97,13 +100,17 @@ fn read_soup(text: &str) -> Result<DecimalSurface, ReadError> {
         }
     }
     let n = positions.len();
-    let mut faces = Vec::with_capacity(raw_faces.len());
-    let mut face_lines = Vec::with_capacity(raw_faces.len());
-    for (c, line, seen) in raw_faces {
-        let mut tri = [0u32; 3];
-        for k in 0..3 {
+    let mut soup = PolygonSoup {
+        positions: Vec::new(),
+        vertex_lines,
+        corners: Vec::with_capacity(raw_corners.len()),
+        ends: Vec::with_capacity(raw_faces.len()),
+        face_lines: Vec::with_capacity(raw_faces.len()),
+    };
+    let mut start = 0;
+    for (end, line, seen) in raw_faces {
+        for &i in &raw_corners[start..end] {
             // 1-based; negative counts back from the vertices defined so far.
-            let i = c[k];
             let zero_based = if i > 0 { i - 1 } else { seen as i64 + i };
             if i == 0 || zero_based < 0 || zero_based >= n as i64 {
                 return Err(ReadError::IndexOutOfRange {
@@ -112,14 +119,15 @@ fn read_soup(text: &str) -> Result<DecimalSurface, ReadError> {
                     n_vertices: n,
                 });
             }
-            tri[k] = zero_based as u32;
+            soup.corners.push(zero_based as u32);
         }
-        faces.push(tri);
-        face_lines.push(line);
+        soup.ends.push(soup.corners.len());
+        soup.face_lines.push(line);
+        start = end;
     }
-    surface_from_soup(positions, &faces, &vertex_lines, &face_lines)
+    soup.positions = positions;
+    Ok(soup)
 }
-
 fn short(s: &str) -> String {
     s.chars().take(40).collect()
 }

@@ -2,13 +2,15 @@
 //! also follow `OFF` on its line; E is ignored), V vertex lines `x y z` with exact decimal
 //! coordinates, and F face lines `3 a b c` (0-based), optionally followed by colour
 //! numbers, which are ignored. `#` starts a comment. Faces with other than three corners
-//! are refused ([`ReadError::NotTriangle`]); `COFF`, `NOFF` and other variants are not
+//! are refused ([`ReadError::NotTriangle`]) unless the `triangulate` repair
+//! ([`super::repair`]) is asked for; `COFF`, `NOFF` and other variants are not
 //! read. Counts are checked against the file size before anything is allocated.
 
 use super::decimal::Coordinate;
 use super::decimal_surface::DecimalSurface;
+use super::soup::PolygonSoup;
 use super::surface::Surface;
-use super::text::{content_lines, coordinate, surface_from_soup};
+use super::text::{content_lines, coordinate};
 use super::{text_of, ReadError};
 
 /// Read an OFF surface from bytes (refusing non-UTF-8 data).
@@ -20,7 +22,7 @@ pub fn read_bytes(bytes: &[u8]) -> Result<Surface, ReadError> {
 /// edge): the fast path for large meshes. [`read`] is this followed by
 /// [`DecimalSurface::into_surface`].
 pub fn read_decimal(text: &str) -> Result<DecimalSurface, ReadError> {
-    read_soup(text)
+    read_polygons(text)?.into_surface()
 }
 
 fn count(tok: Option<&str>, line: usize, what: &str) -> Result<u64, ReadError> {
@@ -45,10 +47,11 @@ fn count(tok: Option<&str>, line: usize, what: &str) -> Result<u64, ReadError> {
 /// assert_eq!(s.mesh.n_faces(), 4);
 /// ```
 pub fn read(text: &str) -> Result<Surface, ReadError> {
-    read_soup(text).map(DecimalSurface::into_surface)
+    read_decimal(text).map(DecimalSurface::into_surface)
 }
 
-fn read_soup(text: &str) -> Result<DecimalSurface, ReadError> {
+/// Read the vertices and faces as written (polygons kept), for [`super::repair`].
+pub fn read_polygons(text: &str) -> Result<PolygonSoup, ReadError> {
     // Only an error at the end of the file needs the last line's number.
     let last = || text.lines().count().max(1);
     let mut lines = content_lines(text).peekable();
@@ -107,16 +110,20 @@ fn read_soup(text: &str) -> Result<DecimalSurface, ReadError> {
         positions.push(vertex_line(line, l)?);
         vertex_lines.push(line);
     }
-    let mut faces = Vec::with_capacity(nf as usize);
-    let mut face_lines = Vec::with_capacity(nf as usize);
+    let mut soup = PolygonSoup {
+        corners: Vec::with_capacity(3 * nf as usize),
+        ends: Vec::with_capacity(nf as usize),
+        face_lines: Vec::with_capacity(nf as usize),
+        ..PolygonSoup::default()
+    };
     for i in 0..nf {
         let (line, l) = lines.next().ok_or_else(|| ReadError::Truncated {
             line: last(),
             expected: format!("face {} of {nf}", i + 1),
         })?;
-        let tri = face_line(line, l, nv)?;
-        faces.push(tri);
-        face_lines.push(line);
+        face_line(line, l, nv, &mut soup.corners)?;
+        soup.ends.push(soup.corners.len());
+        soup.face_lines.push(line);
     }
     if let Some((line, _)) = lines.next() {
         return Err(ReadError::Syntax {
@@ -124,7 +131,9 @@ fn read_soup(text: &str) -> Result<DecimalSurface, ReadError> {
             message: "unexpected content after the last face".into(),
         });
     }
-    surface_from_soup(positions, &faces, &vertex_lines, &face_lines)
+    soup.positions = positions;
+    soup.vertex_lines = vertex_lines;
+    Ok(soup)
 }
 
 fn short(s: &str) -> String {
@@ -149,27 +158,27 @@ fn vertex_line(line: usize, l: &str) -> Result<[Coordinate; 3], ReadError> {
     ])
 }
 
-fn face_line(line: usize, l: &str, nv: u64) -> Result<[u32; 3], ReadError> {
+/// Append the corners of the face line `l` to `corners`.
+fn face_line(line: usize, l: &str, nv: u64, corners: &mut Vec<u32>) -> Result<(), ReadError> {
     let t: Vec<&str> = l.split_ascii_whitespace().collect();
     let k = count(t.first().copied(), line, "corner")?;
-    if k != 3 {
+    if k < 3 {
         return Err(ReadError::NotTriangle {
             element: format!("line {line}"),
             count: usize::try_from(k).unwrap_or(usize::MAX),
         });
     }
-    if t.len() < 4 {
+    let k = usize::try_from(k).unwrap_or(usize::MAX);
+    if t.len() - 1 < k {
         return Err(ReadError::Syntax {
             line,
             message: format!(
-                "a face line `3 a b c` needs 3 indices, found {}",
+                "a face line `{k} a b c …` needs {k} indices, found {}",
                 t.len() - 1
             ),
         });
     }
-    let mut tri = [0u32; 3];
-    for c in 0..3 {
-        let tok = t[1 + c];
+    for tok in &t[1..=k] {
         let idx: i64 = tok.parse().map_err(|_| ReadError::Syntax {
             line,
             message: format!("`{}` is not a vertex index", short(tok)),
@@ -181,10 +190,10 @@ fn face_line(line: usize, l: &str, nv: u64) -> Result<[u32; 3], ReadError> {
                 n_vertices: nv as usize,
             });
         }
-        tri[c] = idx as u32;
+        corners.push(idx as u32);
     }
-    for colour in &t[4..] {
+    for colour in &t[k + 1..] {
         coordinate(colour, line)?;
     }
-    Ok(tri)
+    Ok(())
 }

@@ -40,6 +40,7 @@ mod flip_verdicts;
 mod interval;
 mod io;
 mod io_decimal;
+mod io_repair;
 mod io_strict_json;
 mod laplacian;
 mod mesh;

@@ -28,7 +28,9 @@ fn catalogue_problems(catalogue: &str, expected: &BTreeSet<String>) -> Vec<Strin
             problems.push(format!("{id} has two rows in docs/catalogue.md"));
         }
         if !expected.contains(id) {
-            problems.push(format!("{id} has a row but is not a theorem of the catalogue"));
+            problems.push(format!(
+                "{id} has a row but is not a theorem of the catalogue"
+            ));
         }
     }
     for id in expected.difference(&seen) {
