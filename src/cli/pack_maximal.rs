@@ -87,13 +87,14 @@ type Computed = (DiskPacking<Mpfr>, Option<Vec<ExactCap>>, u32);
 fn compute(
     mesh: &penner::mesh::Mesh,
     o: &Options,
+    asked_bits: u32,
     eps_f64: Option<f64>,
     shown: &str,
 ) -> Result<Computed, CliError> {
     let bad = |e: &penner::circles::maximal::MaximalError| CliError::Input(format!("{shown}: {e}"));
     let mut bits = match eps_f64 {
-        Some(e) if o.bits > 53 => o.bits.max(bits_for(e, mesh.n_vertices())),
-        _ => o.bits,
+        Some(e) if o.bits > 53 => asked_bits.max(bits_for(e, mesh.n_vertices())),
+        _ => asked_bits,
     };
     let prec = Precision::new(u64::from(bits))
         .map_err(|e| CliError::Input(format!("--bits {}: {e}", o.bits)))?;
@@ -120,9 +121,44 @@ fn compute(
     Ok((disk, caps, bits))
 }
 
-/// Run the maximal packing: exit 0 when tangency is certified within ε, 1 when a violation
-/// is proved, 2 when undecided, 3 on bad input or when no packing is computed, 4 when an
-/// output cannot be written.
+/// The largest working precision the refinement of a packing that misses ε goes to.
+const MAX_BITS: u32 = 4096;
+
+/// Witnesses listed in a message before only their count is given.
+const LISTED: usize = 20;
+
+/// `items` joined, the first [`LISTED`] of them and a count of the rest.
+fn listed(items: &[String]) -> String {
+    let mut s = items
+        .iter()
+        .take(LISTED)
+        .cloned()
+        .collect::<Vec<_>>()
+        .join("; ");
+    if items.len() > LISTED {
+        let _ = write!(s, "; and {} more", items.len() - LISTED);
+    }
+    s
+}
+
+/// The verdict on a packing penner computed itself. Such a packing exists by
+/// Koebe–Andreev–Thurston (T11), so a proved miss of ε refutes only the computation, not
+/// the input: it is `undecided`, with the witnesses and the precision reached. `fails` is
+/// kept for circles a user states (`penner certify`).
+fn own_packing_verdict(v: PackingVerdict, bits: u32) -> PackingVerdict {
+    match v {
+        PackingVerdict::Fails(w) => PackingVerdict::Undecided(vec![format!(
+            "the packing computed at {bits} bits misses: {} (the packing exists, T11: a limit of the computation, not a property of the input)",
+            listed(&w)
+        )]),
+        PackingVerdict::Undecided(w) => PackingVerdict::Undecided(vec![listed(&w)]),
+        holds => holds,
+    }
+}
+
+/// Run the maximal packing: exit 0 when tangency is certified within ε, 2 when undecided
+/// (including a computed packing proved to miss ε at the largest precision tried), 3 on
+/// bad input or when no packing is computed, 4 when an output cannot be written.
 pub fn run(o: &Options) -> Result<u8, CliError> {
     let shown = o.path.display().to_string();
     let eps = parse_rational(o.epsilon)
@@ -137,15 +173,26 @@ pub fn run(o: &Options) -> Result<u8, CliError> {
     // proof: B99 — above f64 the working precision grows with n and 1/ε, and the
     // refinement aims at defects below ε/2⁴ (ε = 0 cannot be certified: no aim).
     let eps_f64 = (eps > 0).then(|| eps.to_f64()).filter(|e| *e > 0.0);
-    let (disk, caps, bits) = compute(&case.mesh, o, eps_f64, &shown)?;
-    let circles = exact_circles(&disk.circles)
-        .ok_or_else(|| CliError::Input(format!("{shown}: a circle is not finite")))?;
-    let cert_bits = 2 * bits.max(64);
-    let marks: Vec<bool> = disk.interior.iter().map(|b| !b).collect();
-    let verdict = match &caps {
-        Some(c) => check_sphere_packing(&case.mesh, c, &eps, cert_bits),
-        None => check_packing(&disk.mesh, &circles, &eps, cert_bits, Some(&marks)),
+    // The packing exists (Koebe–Andreev–Thurston), so a computed one that misses ε is a
+    // limit of the computation: refine at twice the bits, up to MAX_BITS, then undecided.
+    let mut asked_bits = o.bits;
+    let (disk, caps, bits, circles, marks, verdict) = loop {
+        let (disk, caps, bits) = compute(&case.mesh, o, asked_bits, eps_f64, &shown)?;
+        let circles = exact_circles(&disk.circles)
+            .ok_or_else(|| CliError::Input(format!("{shown}: a circle is not finite")))?;
+        let cert_bits = 2 * bits.max(64);
+        let marks: Vec<bool> = disk.interior.iter().map(|b| !b).collect();
+        let verdict = match &caps {
+            Some(c) => check_sphere_packing(&case.mesh, c, &eps, cert_bits),
+            None => check_packing(&disk.mesh, &circles, &eps, cert_bits, Some(&marks)),
+        };
+        let refine = eps_f64.is_some() && o.bits > 53 && bits < MAX_BITS;
+        if matches!(verdict, PackingVerdict::Holds { .. }) || !refine {
+            break (disk, caps, bits, circles, marks, verdict);
+        }
+        asked_bits = (2 * bits).min(MAX_BITS);
     };
+    let verdict = own_packing_verdict(verdict, bits);
     let mut text = format!(
         "{}: maximal packing ({}), {} vertices, {} Newton iterations (f64, residual {:.1e}), {} refinement steps at {} bits\n",
         case.name,
