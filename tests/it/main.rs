@@ -54,6 +54,7 @@ mod oracle;
 mod planar_gen;
 mod predicates_planar;
 mod progress;
+mod real_meshes;
 mod registry_extra;
 mod registry_uniformization;
 mod replay_dag;
