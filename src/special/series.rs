@@ -360,3 +360,36 @@ mod tests {
         assert_eq!(graded_beta(&Float::with_val(64, 0.75)), 0);
     }
 }
+
+/// Tests in which the tail bound `τ` (proofs/B52, "Terms") decides: with `N` terms fewer
+/// than the precision asks for, the truncated series stays below the true value
+/// (positive terms), so `bound(Up) < Л(h)` and only `bound(Up) + τ` encloses it. The true
+/// value comes from the independent tangent-number series (`special::reference`).
+#[cfg(test)]
+mod terms {
+    use super::super::coefficients::table;
+    use super::super::reference::lobachevsky_tangent_series;
+    use super::*;
+
+    #[test]
+    fn term_b52_series_tail_bound_is_added() {
+        let tab = table(256);
+        let mut decided = 0;
+        for h in [0.125, 0.25, 0.5] {
+            let hf = Float::with_val(tab.prec, h);
+            let truth = lobachevsky_tangent_series(&hf, 400).expect("reference");
+            for n in 1..=4 {
+                let up = bound(&hf, &hf, Expansion::AtZero, Dir::Up, &tab, n, None);
+                let down = bound(&hf, &hf, Expansion::AtZero, Dir::Down, &tab, n, None);
+                let tau = tail_bound(&hf, Expansion::AtZero, &tab, n).expect("θ ≤ 1/8");
+                let hi = Float::with_val_round(tab.prec, &up + &tau, Round::Up).0;
+                let lo = Float::with_val_round(tab.prec, &down - &tau, Round::Down).0;
+                assert!(lo <= truth && truth <= hi, "h = {h}, N = {n}");
+                if up < truth {
+                    decided += 1;
+                }
+            }
+        }
+        assert!(decided >= 6, "the tail decided only {decided} cases");
+    }
+}

@@ -132,3 +132,144 @@ fn smallest_eigenvalue_estimate(mesh: &Mesh, lengths: &[I], free_idx: &[Option<u
     }
     lambda
 }
+
+/// Tests in which one term of the ball argument's inequality (proofs/B71, "Terms") decides
+/// the verdict: the honest computation is `undecided` where the weakened one would hold.
+/// The exact data are closed forms: on the regular unit tetrahedron every cotan weight is
+/// `w = 1/√3` and the Hessian on the free vertices `{1, 2, 3}` is
+/// `w·[[3, −1, −1], [−1, 3, −1], [−1, −1, 3]]` with eigenvalues `w, 4w, 4w`.
+#[cfg(test)]
+mod terms {
+    use super::*;
+    use crate::geometry::laplacian::cotan_laplacian;
+    use crate::mesh::builders;
+
+    const BITS: u64 = 128;
+
+    fn prec() -> Precision {
+        Precision::new(BITS).expect("precision")
+    }
+
+    /// The regular tetrahedron's Laplacian, each entry widened by `delta` on both sides,
+    /// with vertex 0 grounded.
+    fn setup(delta: f64) -> (Mesh, Vec<I>, SparseMatrix<I>, Vec<Option<usize>>) {
+        let mesh = builders::tetrahedron().mesh;
+        let p = prec();
+        let lengths: Vec<I> = (0..mesh.n_edges())
+            .map(|_| I::from_rational(&Rational::from(1), p))
+            .collect();
+        let l = cotan_laplacian(&mesh, &lengths);
+        let widen = |x: &I| {
+            let d = Mpfr::from_f64(delta, p);
+            I::new(x.lo().sub_down(&d), x.hi().add_up(&d))
+        };
+        let wide = l.map_values(widen);
+        let free = vec![None, Some(0), Some(1), Some(2)];
+        (mesh, lengths, wide, free)
+    }
+
+    fn residual(values: &[(f64, f64)]) -> Vec<I> {
+        let p = prec();
+        values
+            .iter()
+            .map(|&(lo, hi)| I::new(Mpfr::from_f64(lo, p), Mpfr::from_f64(hi, p)))
+            .collect()
+    }
+
+    const W: f64 = 0.577_350_269_189_625_8; // 1/√3, λ_min of the grounded Hessian
+
+    /// B71 term `− ‖H_rad‖_∞`: entries widened by 0.25 give ‖H_rad‖_∞ = 0.75 > λ_min = w,
+    /// while λ_min(H_mid) = w > 0. With a residual of 10⁻³⁰ and radius 1 the argument
+    /// would hold if the Hessian's variation over the box were not subtracted.
+    #[test]
+    fn term_b71_hessian_variation_over_the_box_is_subtracted() {
+        let (mesh, lengths, wide, free) = setup(0.25);
+        let r = residual(&[(1e-30, 1e-30); 3]);
+        let out = ball_outcome(
+            &mesh,
+            &lengths,
+            &wide,
+            &free,
+            &r,
+            &Rational::from(1),
+            prec(),
+        );
+        assert!(
+            matches!(out, CertificateOutcome::Undecided { .. }),
+            "{out:?}"
+        );
+        // Positive side: a narrow box (‖H_rad‖ = 3·10⁻³) certifies, with μ below w − 0.003.
+        let (mesh, lengths, narrow, free) = setup(1e-3);
+        match ball_outcome(
+            &mesh,
+            &lengths,
+            &narrow,
+            &free,
+            &r,
+            &Rational::from(1),
+            prec(),
+        ) {
+            CertificateOutcome::Holds { mu, .. } => assert!(mu > 0.0 && mu <= W - 3e-3, "{mu}"),
+            other @ CertificateOutcome::Undecided { .. } => panic!("{other:?}"),
+        }
+    }
+
+    /// B71 term "γ from the larger end": residual enclosures `[−10⁻³, 10⁻⁶]` have
+    /// magnitudes up to 10⁻³ (γ = √3·10⁻³), their smaller ends 10⁻⁶. With μ ≈ w and the
+    /// radius 10⁻⁴ between `γ_small/μ ≈ 3·10⁻⁶` and `γ/μ ≈ 3·10⁻³`, only the larger end
+    /// keeps the ball from being claimed.
+    #[test]
+    fn term_b71_residual_norm_from_the_larger_end_of_each_enclosure() {
+        let (mesh, lengths, narrow, free) = setup(1e-12);
+        let radius = Rational::from((1, 10_000));
+        let wide = residual(&[(-1e-3, 1e-6); 3]);
+        let out = ball_outcome(&mesh, &lengths, &narrow, &free, &wide, &radius, prec());
+        assert!(
+            matches!(out, CertificateOutcome::Undecided { .. }),
+            "{out:?}"
+        );
+        // The mirror image: the larger end on the right.
+        let right = residual(&[(-1e-6, 1e-3); 3]);
+        let out = ball_outcome(&mesh, &lengths, &narrow, &free, &right, &radius, prec());
+        assert!(
+            matches!(out, CertificateOutcome::Undecided { .. }),
+            "{out:?}"
+        );
+        // Positive side: residuals of magnitude 10⁻⁶ certify within γ/μ ≥ √3·10⁻⁶/w.
+        let small = residual(&[(-1e-6, 1e-6); 3]);
+        match ball_outcome(&mesh, &lengths, &narrow, &free, &small, &radius, prec()) {
+            CertificateOutcome::Holds {
+                distance, residual, ..
+            } => {
+                assert!(residual >= 3f64.sqrt() * 1e-6, "{residual}");
+                assert!(distance >= 3f64.sqrt() * 1e-6 / W, "{distance}");
+            }
+            other @ CertificateOutcome::Undecided { .. } => panic!("{other:?}"),
+        }
+    }
+
+    /// B71 term "γ/μ < r, strict and rounded up": with the radius equal to a ball the
+    /// data only just fail to fit (γ/μ computed, then r set a hair below it), the verdict
+    /// is undecided; a radius twice as large certifies.
+    #[test]
+    fn term_b71_ball_must_fit_strictly_inside_the_box() {
+        let (mesh, lengths, narrow, free) = setup(1e-12);
+        let r = residual(&[(1e-6, 1e-6); 3]);
+        let big = Rational::from(1);
+        let CertificateOutcome::Holds { distance, .. } =
+            ball_outcome(&mesh, &lengths, &narrow, &free, &r, &big, prec())
+        else {
+            panic!("the reference ball must certify");
+        };
+        // A radius strictly below the proved distance: the ball does not fit.
+        let below = Rational::from_f64(distance * (1.0 - 1e-9)).expect("finite");
+        let out = ball_outcome(&mesh, &lengths, &narrow, &free, &r, &below, prec());
+        assert!(
+            matches!(out, CertificateOutcome::Undecided { .. }),
+            "{out:?}"
+        );
+        let above = Rational::from_f64(distance * 2.0).expect("finite");
+        let out = ball_outcome(&mesh, &lengths, &narrow, &free, &r, &above, prec());
+        assert!(matches!(out, CertificateOutcome::Holds { .. }), "{out:?}");
+    }
+}

@@ -73,12 +73,14 @@ mod special_dual;
 mod strategies;
 #[allow(dead_code)] // helpers used by some areas only
 mod support;
+mod terms_certificates;
 mod theorems_certified;
 mod theorems_fixed;
 mod theorems_flips;
 mod theorems_random;
 mod tidy;
 mod tidy_catalogue;
+mod tidy_terms;
 mod tie_claims;
 mod tolerance_range;
 mod tolerance_tightness;
