@@ -152,7 +152,7 @@ fn own_packing_verdict(v: PackingVerdict, bits: u32) -> PackingVerdict {
             listed(&w)
         )]),
         PackingVerdict::Undecided(w) => PackingVerdict::Undecided(vec![listed(&w)]),
-        holds => holds,
+        holds @ PackingVerdict::Holds { .. } => holds,
     }
 }
 
