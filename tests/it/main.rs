@@ -10,6 +10,7 @@ mod circles_rivin_angles;
 mod circles_rodin_sullivan;
 mod circles_sphere_svg;
 mod circles_stopping;
+mod claim_fields;
 mod claims;
 mod claims_circles;
 mod claims_energy;
