@@ -139,6 +139,15 @@ fn run_file(o: &Options<'_>, path: &Path) -> Result<(u8, Option<serde_json::Valu
     }
     let settings = Settings::default();
     let rows = run_with_progress(&case, &checks, &precs, &settings, o.json);
+    // A check named by --only that gave no row has no form at the precisions asked.
+    if !o.only.is_empty() && !o.negative_controls {
+        if let Some(c) = checks.iter().find(|c| rows.iter().all(|r| r.id != c.id)) {
+            return Err(CliError::Input(format!(
+                "--only {}: the check has no form at the precisions asked ({}); exact-only checks run with --precision exact",
+                c.id, o.precision
+            )));
+        }
+    }
     let mut written: Vec<(String, PathBuf, usize)> = Vec::new();
     if !o.no_failure_files {
         for check in &checks {

@@ -24,6 +24,10 @@ pub enum CliError {
     /// Bad input: the message names the file, line or element.
     #[error("{0}")]
     Input(String),
+    /// A computation on valid input did not converge or could not be refined: undecided
+    /// (exit 2), with what stalled.
+    #[error("{0}")]
+    NotConverged(String),
     /// A file could not be read.
     #[error("cannot read {}: {source}", path.display())]
     Read {
@@ -48,6 +52,7 @@ impl CliError {
         match self {
             CliError::Input(_) | CliError::Read { .. } => code::BAD_INPUT,
             CliError::Write { .. } => code::OUTPUT,
+            CliError::NotConverged(_) => code::UNDECIDED,
         }
     }
 }

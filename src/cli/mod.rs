@@ -42,7 +42,36 @@ pub fn main() -> ExitCode {
         Err(e) => return usage_exit(&e),
     };
     input::set_repairs(cli.repair.repairs());
-    let result = match cli.command {
+    // A panic anywhere below is a defect (exit 5), reported with the command line.
+    let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| dispatch(cli)));
+    match outcome {
+        Ok(Ok(c)) => ExitCode::from(c),
+        Ok(Err(e)) => {
+            eprintln!("penner: {e}");
+            ExitCode::from(e.exit_code())
+        }
+        Err(_) => {
+            let args: Vec<String> = std::env::args().skip(1).collect();
+            eprintln!(
+                "penner: internal error while running `penner {}` (exit 5)",
+                args.join(" ")
+            );
+            ExitCode::from(code::INTERNAL)
+        }
+    }
+}
+
+/// The environment variable that makes [`dispatch`] panic at once: the test of the
+/// defect path (exit 5), never set in normal use.
+const PANIC_TEST_VAR: &str = "PENNER_INTERNAL_PANIC_TEST";
+
+/// Run the parsed command.
+fn dispatch(cli: Cli) -> Result<u8, CliError> {
+    assert!(
+        std::env::var_os(PANIC_TEST_VAR).is_none(),
+        "{PANIC_TEST_VAR} is set: the defect path is being tested"
+    );
+    match cli.command {
         None => report::run(penner::oracle::precision::REPORT_LIST, false),
         Some(Command::Report { precision, json }) => report::run(&precision, json),
         Some(Command::Check {
@@ -122,13 +151,6 @@ pub fn main() -> ExitCode {
             input_replay: !no_input_replay,
             lengths_out: lengths_out.as_deref(),
         }),
-    };
-    match result {
-        Ok(c) => ExitCode::from(c),
-        Err(e) => {
-            eprintln!("penner: {e}");
-            ExitCode::from(e.exit_code())
-        }
     }
 }
 

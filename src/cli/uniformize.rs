@@ -248,7 +248,7 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     } else {
         prove(&sol, bits, tolerance)
     }
-    .map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
+    .map_err(|e| certificate_error(&shown, e))?;
     if let Some(b) = &bar {
         b.finish_and_clear();
     }
@@ -341,4 +341,74 @@ pub(super) fn report_certificate(
         }
     }
     Ok(status)
+}
+
+/// A certificate error as the CLI reports it: the input's fault (bad input, exit 3) or a
+/// refinement of penner's own solution that did not go through (undecided, exit 2).
+pub fn certificate_error(
+    shown: &str,
+    e: penner::uniformization::certificate::CertificateError,
+) -> CliError {
+    use penner::uniformization::certificate::CertificateError;
+    match e {
+        CertificateError::Replay(r) => CliError::NotConverged(format!(
+            "{shown}: not certified: the refinement did not go through: {r}"
+        )),
+        other => CliError::Input(format!("{shown}: {other}")),
+    }
+}
+
+/// The exact values of a solver's `u`, or — when an entry is not finite — undecided (exit
+/// 2) naming its index: a non-finite `u` is a failure of the computation, never input.
+pub fn finite_u(
+    shown: &str,
+    values: impl IntoIterator<Item = Option<rug::Rational>>,
+) -> Result<Vec<rug::Rational>, CliError> {
+    values
+        .into_iter()
+        .enumerate()
+        .map(|(i, q)| {
+            q.ok_or_else(|| {
+                CliError::NotConverged(format!(
+                    "{shown}: not certified: u[{i}] of the computed solution is not finite"
+                ))
+            })
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use penner::uniformization::certificate::CertificateError;
+    use penner::uniformization::refine::RefineError;
+
+    /// A refinement of penner's own solution that does not go through is undecided (exit
+    /// 2); a refused certificate parameter stays bad input (exit 3).
+    #[test]
+    fn refinement_failures_are_undecided_and_bad_parameters_are_bad_input() {
+        let stalled = certificate_error("s.off", CertificateError::Replay(RefineError::Hessian));
+        assert_eq!(stalled.exit_code(), code::UNDECIDED, "{stalled}");
+        let bad = certificate_error("s.off", CertificateError::Radius("-1".into()));
+        assert_eq!(bad.exit_code(), code::BAD_INPUT, "{bad}");
+    }
+
+    /// A non-finite entry of a computed `u` is named and undecided, never dropped.
+    #[test]
+    fn a_non_finite_u_is_named_by_index() {
+        let u = [
+            Some(rug::Rational::from(1)),
+            None,
+            Some(rug::Rational::from(2)),
+        ];
+        let e = finite_u("s.off", u).expect_err("u[1] is not finite");
+        assert_eq!(e.exit_code(), code::UNDECIDED);
+        assert!(e.to_string().contains("u[1]"), "{e}");
+        assert_eq!(
+            finite_u("s.off", [Some(rug::Rational::from(3))])
+                .map(|v| v.len())
+                .ok(),
+            Some(1)
+        );
+    }
 }

@@ -110,7 +110,7 @@ pub fn run(i: &Input<'_>, o: &super::uniformize::Options<'_>) -> Result<u8, CliE
     } else {
         prove(sol, i.bits, i.tolerance)
     }
-    .map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
+    .map_err(|e| super::uniformize::certificate_error(shown, e))?;
     let _ = writeln!(
         out,
         "converged: max |Θ − θ| = {:e} (f64), {:e} after refinement",

@@ -9,6 +9,7 @@
 use super::error::{code, CliError};
 use super::files::{create_new, emit};
 use super::input::FlipCase;
+use super::uniformize::finite_u;
 use penner::scalar::{Dd, Mpfr, Precision, Real};
 use penner::uniformization::hyperbolic::{
     uniformize_hyperbolic, HyperbolicOptions, HyperbolicStop,
@@ -65,22 +66,19 @@ pub fn run(
     };
     let (u, refined): (Vec<Rational>, f64) = match o.precision {
         "f64" => (
-            sol.u
-                .iter()
-                .filter_map(|&x| Rational::from_f64(x))
-                .collect(),
+            finite_u(shown, sol.u.iter().map(|&x| Rational::from_f64(x)))?,
             sol.residual_max,
         ),
         "dd" => {
             let r = refine_hyperbolic::<Dd>(&sol, (), tolerance, 30).map_err(bad)?;
-            let u = r.u.iter().filter_map(Real::to_rational).collect();
+            let u = finite_u(shown, r.u.iter().map(Real::to_rational))?;
             (u, r.residual_max())
         }
         _ => {
             let prec = Precision::new(u64::from(bits))
                 .map_err(|_| CliError::Input(format!("--precision: {bits} bits out of range")))?;
             let r = refine_hyperbolic::<Mpfr>(&sol, prec, tolerance, 60).map_err(bad)?;
-            let u = r.u.iter().filter_map(Real::to_rational).collect();
+            let u = finite_u(shown, r.u.iter().map(Real::to_rational))?;
             (u, r.residual_max())
         }
     };

@@ -59,8 +59,7 @@ pub fn run(
         pole: extra.pole,
         ..SphereOptions::default()
     };
-    let sol = uniformize_sphere(mesh, lengths, &opts)
-        .map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
+    let sol = uniformize_sphere(mesh, lengths, &opts).map_err(|e| sphere_error(shown, e))?;
     let mut out = String::new();
     if shift != 0 {
         let _ = writeln!(
@@ -199,12 +198,15 @@ fn certify(
     let enclosures = surface.lengths::<penner::scalar::Interval<penner::scalar::Mpfr>>(prec);
     let metric = input_disk_metric(sol, &surface.mesh, enclosures)?;
     if !precision.refine {
-        let u: Vec<rug::Rational> = sol
+        let Some(u) = sol
             .solution
             .u
             .iter()
-            .map(|&x| rug::Rational::from_f64(x).unwrap_or_default())
-            .collect();
+            .map(|&x| rug::Rational::from_f64(x))
+            .collect::<Option<Vec<rug::Rational>>>()
+        else {
+            return Err("a value of the computed u is not finite".into());
+        };
         let residual = sol.solution.residual_max.max(4.0 * f64::EPSILON);
         return Ok(certify_disk_near(sol, Some(&metric), &u, residual, bits));
     }
@@ -217,4 +219,17 @@ fn certify(
         proof.history.len().saturating_sub(1)
     );
     Ok((proof.data, proof.outcome))
+}
+
+/// A sphere-target error as the CLI reports it: a surface that is not a sphere or a bad
+/// `--pole` is bad input (exit 3); a disk problem that did not converge, a layout that
+/// failed or no usable pole found is undecided (exit 2), with what stalled.
+fn sphere_error(shown: &str, e: penner::uniformization::sphere::SphereError) -> CliError {
+    use penner::uniformization::sphere::SphereError;
+    match e {
+        SphereError::NotConverged { .. } | SphereError::Layout(_) | SphereError::NoPole => {
+            CliError::NotConverged(format!("{shown}: not certified: {e}"))
+        }
+        other => CliError::Input(format!("{shown}: {other}")),
+    }
 }

@@ -19,6 +19,7 @@ mod claims_lobachevsky;
 mod cli;
 mod cli_controls;
 mod cli_delaunay;
+mod cli_exit_codes;
 mod cli_io;
 mod cli_strict;
 mod cli_uniformize;

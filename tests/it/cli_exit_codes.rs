@@ -1,0 +1,66 @@
+//! Exit codes as documented, on every subcommand: 5 for a defect inside penner (a panic,
+//! provoked here by the test-only variable `PENNER_INTERNAL_PANIC_TEST`), 3 for bad input
+//! or usage — including a check asked for at a precision where it has no form — and never
+//! 101 or a backtrace.
+
+use crate::support::{penner, scratch, text, write};
+use std::process::Command;
+
+const BIN: &str = env!("CARGO_BIN_EXE_penner");
+
+const TETRAHEDRON: &str = r#"{"vertices": 4,
+  "faces": [[0, 2, 1], [0, 1, 3], [1, 2, 3], [2, 0, 3]],
+  "lengths": ["1", "1", "1", "1", "1", "1"]}"#;
+
+#[test]
+fn a_panic_inside_any_subcommand_is_exit_5_with_one_line_naming_the_command() {
+    let d = scratch("exit-5");
+    let surface = write(&d, "tet.json", TETRAHEDRON.as_bytes());
+    let s = surface.to_str().expect("path");
+    let claim = write(&d, "claim.json", b"{}");
+    let c = claim.to_str().expect("path");
+    for args in [
+        vec!["check", s],
+        vec!["delaunay", s],
+        vec!["uniformize", s, "--flat"],
+        vec!["pack", s],
+        vec!["certify", c],
+        vec!["replay", c],
+        vec!["report"],
+    ] {
+        let out = Command::new(BIN)
+            .args(&args)
+            .env("PENNER_INTERNAL_PANIC_TEST", "1")
+            .env_remove("RUST_BACKTRACE")
+            .output()
+            .expect("run penner");
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(5), "{args:?}: {err}");
+        assert!(
+            err.contains("internal error while running `penner"),
+            "{args:?}: {err}"
+        );
+        assert!(err.contains(args[0]), "{args:?}: {err}");
+        assert!(!err.contains("stack backtrace"), "{args:?}: {err}");
+    }
+    // Control: without the variable the same command is not a defect.
+    let out = penner(&["check", s, "--only", "T01", "--precision", "f64"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+}
+
+#[test]
+fn a_check_without_a_form_at_the_precision_asked_is_bad_usage_not_an_empty_report() {
+    let d = scratch("exit-no-form");
+    let surface = write(&d, "tet.json", TETRAHEDRON.as_bytes());
+    let s = surface.to_str().expect("path");
+    let out = penner(&["check", s, "--only", "T26", "--precision", "f64"]);
+    assert_eq!(out.status.code(), Some(3), "{}", text(&out.stdout));
+    assert!(
+        text(&out.stderr).contains("no form at the precisions asked"),
+        "{}",
+        text(&out.stderr)
+    );
+    // Control: at `exact` the same check runs and holds.
+    let out = penner(&["check", s, "--only", "T26", "--precision", "exact"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+}
