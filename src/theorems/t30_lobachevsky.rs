@@ -165,10 +165,45 @@ fn witness(x: f64, name: &str, detail: &str, value: f64) -> Witness {
 }
 
 /// The certified comparison of one identity: `Some(true)` when the enclosure of the
-/// residual contains 0, `Some(false)` when it excludes 0, `None` when no enclosure.
+/// residual contains 0 and is narrow ([`decide_enclosed_residual`]), `Some(false)` when it
+/// excludes 0, `None` when there is no enclosure or it is too wide to say anything.
 fn certified_identity(x: &Rational, id: &Identity, bits: u32, wrong: bool) -> Option<bool> {
-    let sum = enclosed_sum(x, id, bits, wrong)?;
-    Some(sum.contains_zero())
+    decide_enclosed_residual(&enclosed_sum(x, id, bits, wrong)?, bits)
+}
+
+/// Excess bits allowed in the width of an enclosed residual at `bits` bits: an identity
+/// holds only on an enclosure of width `≤ 2^(WIDTH_SLACK_BITS − bits)`. Each of the at most
+/// eight enclosures of `Л` is within a few units of `2^(−bits)` (B52), so honest widths are
+/// far inside; an enclosure of the whole range `[−M, M]` of `Л` is not. proof: B52
+const WIDTH_SLACK_BITS: i32 = 32;
+
+/// `Some(false)` when the enclosure excludes 0 (the identity is refuted), `Some(true)` when
+/// it contains 0 and its width is at most `2^(WIDTH_SLACK_BITS − bits)`, `None` otherwise.
+fn decide_enclosed_residual(sum: &Interval<Mpfr>, bits: u32) -> Option<bool> {
+    if !sum.contains_zero() {
+        return Some(false);
+    }
+    let limit = 2f64.powi(WIDTH_SLACK_BITS - i32::try_from(bits).unwrap_or(i32::MAX));
+    (sum.width_f64() <= limit).then_some(true)
+}
+
+#[cfg(test)]
+mod width {
+    use super::*;
+
+    /// An enclosure of the whole range of `Л` contains 0 but proves nothing: it must not
+    /// certify; a residual enclosure `2^(−bits)` wide does; one excluding 0 refutes.
+    #[test]
+    fn t30_certified_row_needs_a_narrow_enclosure() {
+        let p = Precision::new(128).expect("precision");
+        let full = Interval::new(Mpfr::from_f64(-0.51, p), Mpfr::from_f64(0.51, p));
+        assert_eq!(decide_enclosed_residual(&full, 128), None);
+        let tiny = 2f64.powi(-128);
+        let narrow = Interval::new(Mpfr::from_f64(-tiny, p), Mpfr::from_f64(tiny, p));
+        assert_eq!(decide_enclosed_residual(&narrow, 128), Some(true));
+        let off = Interval::new(Mpfr::from_f64(1e-3, p), Mpfr::from_f64(2e-3, p));
+        assert_eq!(decide_enclosed_residual(&off, 128), Some(false));
+    }
 }
 
 /// T30 at the working precision of `T` (numerical, B54); a residual beyond the tolerance

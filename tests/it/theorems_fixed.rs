@@ -181,10 +181,13 @@ macro_rules! at_all_precisions {
 }
 
 /// Double-double runs need double-double arithmetic and functions accurate to the
-/// hypothesis of proofs/B40 (relative error ≤ 16·2⁻¹⁰⁶). A probe against MPFR-256 decides;
-/// `PENNER_SKIP_DD` skips them explicitly. Skipping is reported on stderr.
+/// hypothesis of proofs/B40 (relative error ≤ 16·2⁻¹⁰⁶). A probe against MPFR-256 checks
+/// it and fails the test when it does not hold (a broken backend must not turn the
+/// double-double runs off silently); `PENNER_SKIP_DD` skips them explicitly, reported on
+/// stderr.
 fn dd_enabled() -> bool {
     if std::env::var_os("PENNER_SKIP_DD").is_some() {
+        eprintln!("double-double runs skipped: PENNER_SKIP_DD is set");
         return false;
     }
     let p = p256();
@@ -202,10 +205,11 @@ fn dd_enabled() -> bool {
         && close(d(0.7).exp(), m(0.7).exp())
         && close(d(0.7).sin(), m(0.7).sin())
         && close(d(2.0).sqrt(), m(2.0).sqrt());
-    if !ok {
-        eprintln!("double-double runs skipped: Dd is not accurate to 16·2^-106 yet (proofs/B40)");
-    }
-    ok
+    assert!(
+        ok,
+        "the double-double probe is not accurate to 16·2^-106 (proofs/B40): set PENNER_SKIP_DD to skip the double-double runs knowingly"
+    );
+    true
 }
 
 fn settings() -> Settings {
