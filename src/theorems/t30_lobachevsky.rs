@@ -187,25 +187,6 @@ fn decide_enclosed_residual(sum: &Interval<Mpfr>, bits: u32) -> Option<bool> {
     (sum.width_f64() <= limit).then_some(true)
 }
 
-#[cfg(test)]
-mod width {
-    use super::*;
-
-    /// An enclosure of the whole range of `Л` contains 0 but proves nothing: it must not
-    /// certify; a residual enclosure `2^(−bits)` wide does; one excluding 0 refutes.
-    #[test]
-    fn t30_certified_row_needs_a_narrow_enclosure() {
-        let p = Precision::new(128).expect("precision");
-        let full = Interval::new(Mpfr::from_f64(-0.51, p), Mpfr::from_f64(0.51, p));
-        assert_eq!(decide_enclosed_residual(&full, 128), None);
-        let tiny = 2f64.powi(-128);
-        let narrow = Interval::new(Mpfr::from_f64(-tiny, p), Mpfr::from_f64(tiny, p));
-        assert_eq!(decide_enclosed_residual(&narrow, 128), Some(true));
-        let off = Interval::new(Mpfr::from_f64(1e-3, p), Mpfr::from_f64(2e-3, p));
-        assert_eq!(decide_enclosed_residual(&off, 128), Some(false));
-    }
-}
-
 /// T30 at the working precision of `T` (numerical, B54); a residual beyond the tolerance
 /// is re-examined by enclosures at the same precision, and reported `fails` only when the
 /// enclosures are disjoint (certified), otherwise `undecided`. `wrong` perturbs the
@@ -315,4 +296,23 @@ pub fn check_lobachevsky_certified(args: &[Rational], bits: u32, wrong: bool) ->
         }
     }
     Verdict::certified(failures, undecided, bits)
+}
+
+#[cfg(test)]
+mod width {
+    use super::*;
+
+    /// An enclosure of the whole range of `Л` contains 0 but proves nothing: it must not
+    /// certify; a residual enclosure `2^(−bits)` wide does; one excluding 0 refutes.
+    #[test]
+    fn t30_certified_row_needs_a_narrow_enclosure() {
+        let p = Precision::new(128).expect("precision");
+        let full = Interval::new(Mpfr::from_f64(-0.51, p), Mpfr::from_f64(0.51, p));
+        assert_eq!(decide_enclosed_residual(&full, 128), None);
+        let tiny = 2f64.powi(-128);
+        let narrow = Interval::new(Mpfr::from_f64(-tiny, p), Mpfr::from_f64(tiny, p));
+        assert_eq!(decide_enclosed_residual(&narrow, 128), Some(true));
+        let off = Interval::new(Mpfr::from_f64(1e-3, p), Mpfr::from_f64(2e-3, p));
+        assert_eq!(decide_enclosed_residual(&off, 128), Some(false));
+    }
 }
