@@ -55,9 +55,7 @@ pub fn excluded_vertices(
             continue;
         }
         let target = I::from_rational(&data.targets.over_pi()[v], p.prec) * &pi;
-        let below = target.hi().as_float() < th.lo().as_float();
-        let above = target.lo().as_float() > th.hi().as_float();
-        if below || above {
+        if disjoint(&target, th) {
             out.push(ExcludedVertex {
                 vertex: v,
                 target: target.approx_f64(),
@@ -66,4 +64,32 @@ pub fn excluded_vertices(
         }
     }
     Ok(Ok(out))
+}
+
+/// Whether two enclosures are certified disjoint: one ends strictly below the other's
+/// start. Touching enclosures (a common end point) may hold a common value. proof: B73
+fn disjoint(a: &I, b: &I) -> bool {
+    a.hi().as_float() < b.lo().as_float() || a.lo().as_float() > b.hi().as_float()
+}
+
+#[cfg(test)]
+mod terms {
+    use super::*;
+    use crate::scalar::Precision;
+
+    fn iv(lo: f64, hi: f64) -> I {
+        let p = Precision::new(64).expect("precision");
+        I::new(Mpfr::from_f64(lo, p), Mpfr::from_f64(hi, p))
+    }
+
+    /// B73 term "disjoint, strictly": enclosures that touch at one end may share that
+    /// value, so a target there is not excluded; separated ones are, on either side.
+    #[test]
+    fn term_b73_touching_enclosures_do_not_exclude() {
+        assert!(!disjoint(&iv(1.0, 2.0), &iv(2.0, 3.0)));
+        assert!(!disjoint(&iv(2.0, 3.0), &iv(1.0, 2.0)));
+        assert!(disjoint(&iv(1.0, 1.5), &iv(2.0, 3.0)));
+        assert!(disjoint(&iv(2.5, 3.0), &iv(1.0, 2.0)));
+        assert!(!disjoint(&iv(1.0, 3.0), &iv(2.0, 2.5)));
+    }
 }
