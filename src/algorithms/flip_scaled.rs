@@ -1,5 +1,5 @@
 //! Flip to an intrinsic Delaunay triangulation of a conformally scaled metric
-//! `ℓ̃_ij = e^{(u_i+u_j)/2}·ℓ_ij` (MATH.md §4) without overflow or underflow: lengths are
+//! `ℓ̃_ij = e^{(u_i+u_j)/2}·ℓ_ij` (docs/catalogue.md §4) without overflow or underflow: lengths are
 //! kept as [`ExpLength`] (`m·2ᵏ`, exponent apart), every decision is made on the
 //! quadrilateral shifted by its largest exponent ([`ExpQuad`], proof: B67), and new
 //! diagonals are computed on the shifted binary64 images (MPFR at 53 bits when one
@@ -143,7 +143,7 @@ pub fn flip_to_delaunay_exp(
     Ok((report, m.lengths))
 }
 
-/// The lengths `ℓ̃_ij = e^{(u_i+u_j)/2}·ℓ_ij` (MATH.md §4) as [`ExpLength`], each rounded
+/// The lengths `ℓ̃_ij = e^{(u_i+u_j)/2}·ℓ_ij` (docs/catalogue.md §4) as [`ExpLength`], each rounded
 /// once to 53 bits ([`ExpLength::scaled`]), validated: one positive finite base length per
 /// edge, one finite log scale factor per vertex with `|u| ≤` [`MAX_LOG_SCALE`].
 pub fn scaled_lengths(

@@ -1,4 +1,4 @@
-//! Flip to an intrinsic Delaunay triangulation (notes §1.5.2; MATH.md §5), deciding every
+//! Flip to an intrinsic Delaunay triangulation (notes §1.5.2; docs/catalogue.md §5), deciding every
 //! edge with the certified predicate of [`crate::predicates::delaunay`] — never with a raw
 //! floating-point comparison.
 //!

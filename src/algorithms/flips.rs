@@ -1,5 +1,5 @@
 //! Metric edge flips: the Euclidean flip (planar layout of the two triangles, preserves the
-//! cone metric) and the Ptolemy flip (MATH.md §5, notes Eq. 18), generic over [`Real`],
+//! cone metric) and the Ptolemy flip (docs/catalogue.md §5, notes Eq. 18), generic over [`Real`],
 //! exact over [`rug::Rational`] and outward-rounded over [`Interval<Mpfr>`].
 //!
 //! Both refuse, with the mesh's [`FlipError`], an edge that cannot be flipped: a boundary
@@ -35,7 +35,7 @@ pub enum FlipKind {
     Ptolemy,
 }
 
-/// The Ptolemy length `ℓ_kl = (ℓ_ik ℓ_jl + ℓ_il ℓ_jk) / ℓ_ij` (MATH.md §5), evaluated as
+/// The Ptolemy length `ℓ_kl = (ℓ_ik ℓ_jl + ℓ_il ℓ_jk) / ℓ_ij` (docs/catalogue.md §5), evaluated as
 /// `ℓ_ki·(ℓ_lj/ℓ_ij) + ℓ_il·(ℓ_jk/ℓ_ij)` so that products of large lengths do not overflow.
 pub fn ptolemy_length<T: Real>(q: Quad<&T>) -> T {
     q.ki.clone() * &(q.lj.clone() / q.ij) + &(q.il.clone() * &(q.jk.clone() / q.ij))
@@ -60,7 +60,7 @@ pub fn ptolemy_length_enclosure<B: IntervalBound>(q: Quad<&Interval<B>>) -> Opti
 /// S = 4·Area = √((x+(y+z))(z−(x−y))(z+(x−y))(x+(y−z)))   (x ≥ y ≥ z, Kahan),
 /// ```
 ///
-/// with `a = ℓ_ij, b = ℓ_jk, c = ℓ_ki, d = ℓ_il, e = ℓ_lj` (MATH.md §1, §5). Kahan's
+/// with `a = ℓ_ij, b = ℓ_jk, c = ℓ_ki, d = ℓ_il, e = ℓ_lj` (docs/catalogue.md §1, §5). Kahan's
 /// ordering keeps the area accurate for needles and caps. When a length lies outside
 /// `[2⁻¹⁰⁰, 2¹⁰⁰]` the lengths are first scaled by a power of two near `1/a` so that
 /// squares of squares do not overflow; scaling by a power of two commutes with every

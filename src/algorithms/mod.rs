@@ -1,6 +1,6 @@
 //! Algorithms on metric Δ-complexes. Every decision goes through [`crate::predicates`].
 //!
-//! - [`flips`]: Euclidean and Ptolemy flips of one edge (MATH.md §5).
+//! - [`flips`]: Euclidean and Ptolemy flips of one edge (docs/catalogue.md §5).
 //! - [`flip_to_delaunay`]: flip to an intrinsic Delaunay triangulation with certified
 //!   signs (T21).
 //! - [`flip_scaled`]: the same for conformally scaled metrics `e^{(u_i+u_j)/2}·ℓ_ij`, with

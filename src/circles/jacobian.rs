@@ -1,5 +1,5 @@
 //! The Jacobian `∂θ_i/∂u_j` of the cone angles of a circle pattern in `u = log r`, from the
-//! power centres of the faces (MATH.md §8; Glickenstein, *Discrete conformal variations and
+//! power centres of the faces (docs/catalogue.md §8; Glickenstein, *Discrete conformal variations and
 //! scalar curvature on piecewise flat two- and three-dimensional manifolds*, 2011).
 //!
 //! In a face `ijk` the power centre `c` has equal power `|c − p_v|² − r_v²` for the three

@@ -1,6 +1,6 @@
 //! Lengths, corner angles and cone angles of a circle pattern, generic over [`Real`].
 //!
-//! Euclidean (notes Eq. 9, MATH.md §8): circles of radii `r_i, r_j` meeting at angle `Φ`
+//! Euclidean (notes Eq. 9, docs/catalogue.md §8): circles of radii `r_i, r_j` meeting at angle `Φ`
 //! (0 tangent, π/2 orthogonal) have centres at distance
 //! `ℓ_ij² = r_i² + r_j² + 2 r_i r_j cos Φ_ij`. The inversive distance
 //! `I_ij = (ℓ² − r_i² − r_j²)/(2 r_i r_j)` replaces `cos Φ` for disjoint circles (`I > 1`).
@@ -28,7 +28,7 @@ pub fn euclidean_length<T: Real>(ri: &T, rj: &T, cos_phi: &T) -> T {
 }
 
 /// Length from radii and an inversive distance `I` (any real `I > −1`): the formula of
-/// [`euclidean_length`] with `cos Φ` replaced by `I` (MATH.md §8).
+/// [`euclidean_length`] with `cos Φ` replaced by `I` (docs/catalogue.md §8).
 pub fn inversive_length<T: Real>(ri: &T, rj: &T, inversive: &T) -> T {
     euclidean_length(ri, rj, inversive)
 }
@@ -47,7 +47,7 @@ pub fn inversive_distance<T: Real>(l: &T, ri: &T, rj: &T) -> T {
 
 /// Hyperbolic distance between the centres of two hyperbolic circles of radii `r_i, r_j`
 /// meeting at angle `Φ`: `ℓ = arcosh(cosh r_i cosh r_j + sinh r_i sinh r_j cos Φ)`, with
-/// `arcosh x = ln(x + √(x² − 1))` (MATH.md §8).
+/// `arcosh x = ln(x + √(x² − 1))` (docs/catalogue.md §8).
 ///
 /// ```
 /// use penner::circles::metric::hyperbolic_length;
@@ -118,7 +118,7 @@ pub fn squared_lengths_exact(mesh: &Mesh, r: &[Rational], cos_phi: &[Rational]) 
         .collect()
 }
 
-/// Cone angle `θ_v`: the sum of the corner angles at `v` over all its corners (MATH.md §2).
+/// Cone angle `θ_v`: the sum of the corner angles at `v` over all its corners (docs/catalogue.md §2).
 pub fn cone_angles<T: Real>(mesh: &Mesh, lengths: &[T]) -> Vec<T> {
     let Some(l0) = lengths.first() else {
         return Vec::new();

@@ -1,4 +1,4 @@
-//! Circle patterns and circle packings (notes Part II §1.4, Eq. 9; MATH.md §8): a circle of
+//! Circle patterns and circle packings (notes Part II §1.4, Eq. 9; docs/catalogue.md §8): a circle of
 //! radius `r_i = e^{u_i}` at every vertex, an intersection angle `Φ_e ∈ [0, π/2]` on every
 //! edge (0 tangent, π/2 orthogonal), and the Euclidean metric they induce.
 //!

@@ -4,7 +4,7 @@
 //! - [`newton`]: Newton's method on the convex energy `E(u)` with `∇E = Θ − θ(u)` and
 //!   Hessian `−∂θ/∂u` ([`super::jacobian`]), grounded at one vertex on closed problems, with
 //!   a line search that halves the step until `|∇E|₂` decreases (at high precision an
-//!   Armijo test on `E` stalls; MATH.md §7).
+//!   Armijo test on `E` stalls; docs/catalogue.md §7).
 //! - [`ricci_flow`]: the combinatorial Ricci flow of Chow–Luo (2003),
 //!   `du_i/dt = −(K_i − K̄_i) = θ_i − Θ_i`, the gradient flow of `−E`, by explicit Euler
 //!   steps `dt = 1/G` with `G` the Gershgorin bound of the Hessian (a step that keeps the

@@ -1,5 +1,5 @@
 //! Thurston's conditions for circle patterns with intersection angles `Φ ∈ [0, π/2]`
-//! (notes Thm 7; Marden–Rodin 1990; MATH.md §8): on a closed surface,
+//! (notes Thm 7; Marden–Rodin 1990; docs/catalogue.md §8): on a closed surface,
 //! 1. a null-homotopic cycle of three edges with `ΣΦ ≥ π` bounds a face, and
 //! 2. a null-homotopic cycle of four edges with `ΣΦ = 2π` bounds two adjacent faces.
 //!

@@ -161,7 +161,7 @@ pub enum Command {
 pub enum FlipKind {
     /// Euclidean flip: the new diagonal of the planar layout (preserves the cone metric).
     Euclidean,
-    /// Ptolemy flip: ℓ_kl = (ℓ_ki ℓ_lj + ℓ_il ℓ_jk) / ℓ_ij (MATH.md Eq. 18).
+    /// Ptolemy flip: ℓ_kl = (ℓ_ki ℓ_lj + ℓ_il ℓ_jk) / ℓ_ij (docs/catalogue.md §5, Eq. 18).
     Ptolemy,
 }
 

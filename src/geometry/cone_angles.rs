@@ -135,7 +135,7 @@ impl<T: Real> FaceScratch<T> {
 
     /// The unnormalized cosine parts `D_i − N_i` of the three corners of the triangle with
     /// sides `l = [l_0, l_1, l_2]` (corner `i` opposite `l_i`) into `c`, and the common sine
-    /// part `2√(D_i N_i)` into `r` (MATH.md §1: `tan²(α_i/2) = N_i/D_i`, so
+    /// part `2√(D_i N_i)` into `r` (docs/catalogue.md §1: `tan²(α_i/2) = N_i/D_i`, so
     /// `(√D_i + i√N_i)² = (D_i − N_i) + 2i√(D_i N_i) ∝ e^{iα_i}`, of modulus
     /// `D_i + N_i = 4 l_{i+1} l_{i+2}`). proof: B16
     fn load(&mut self, l: [&T; 3]) {
@@ -211,7 +211,7 @@ fn exponent(x: f64) -> i32 {
     }
 }
 
-/// Cone angle `θ_v = Σ α_v` over all corners at `v` (MATH.md §2), from per-edge lengths
+/// Cone angle `θ_v = Σ α_v` over all corners at `v` (docs/catalogue.md §2), from per-edge lengths
 /// `lengths[e]` (indexed by `Edge::idx`). Corners are counted with multiplicity (a face may
 /// have a vertex twice); a vertex without corners gets 0.
 ///

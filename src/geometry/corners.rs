@@ -5,7 +5,7 @@ use crate::mesh::Mesh;
 use crate::scalar::Real;
 
 /// Per half-edge `h`: the corner angle `α_k^{ij}` opposite `h = i→j` in its face `ijk`,
-/// by the half-angle form (MATH.md §1, proofs/B40); zero on boundary half-edges.
+/// by the half-angle form (docs/catalogue.md §1, proofs/B40); zero on boundary half-edges.
 ///
 /// ```
 /// use penner::geometry::corners::halfedge_angles;

@@ -1,4 +1,4 @@
-//! Cotangents of corner angles and cotan edge weights (notes §1.3.3, Eq. 5; MATH.md §3).
+//! Cotangents of corner angles and cotan edge weights (notes §1.3.3, Eq. 5; docs/catalogue.md §3).
 
 use super::triangle::cot_opposite;
 use crate::mesh::Mesh;
@@ -12,7 +12,7 @@ pub fn halfedge_cotans<T: Real>(mesh: &Mesh, lengths: &[T]) -> Vec<T> {
 }
 
 /// Cotan weights per edge: `w_ij = ½(cot α_k^{ij} + cot α_l^{ij})` on interior edges and
-/// `w_ij = ½ cot α_k^{ij}` on boundary edges (MATH.md §3, notes Eq. 5). Forward error:
+/// `w_ij = ½ cot α_k^{ij}` on boundary edges (docs/catalogue.md §3, notes Eq. 5). Forward error:
 /// proofs/B44.
 ///
 /// ```

@@ -1,4 +1,4 @@
-//! Length cross ratios of interior edges (notes Eq. 12; MATH.md §4).
+//! Length cross ratios of interior edges (notes Eq. 12; docs/catalogue.md §4).
 
 use crate::mesh::{Edge, HalfEdge, Mesh};
 use crate::scalar::Real;
@@ -17,7 +17,7 @@ pub fn cross_ratio_halfedges(mesh: &Mesh, e: Edge) -> Option<[HalfEdge; 4]> {
 }
 
 /// Length cross ratio `c_ij = (ℓ_il ℓ_jk)/(ℓ_ki ℓ_lj)` of each interior edge (notes
-/// Eq. 12, MATH.md §4), `None` on boundary edges. Symmetric in the choice of `i→j` or
+/// Eq. 12, docs/catalogue.md §4), `None` on boundary edges. Symmetric in the choice of `i→j` or
 /// `j→i`; invariant under conformal scaling (theorem T16). Forward error: proofs/B45.
 ///
 /// ```
@@ -38,7 +38,7 @@ pub fn length_cross_ratios<T: Real>(mesh: &Mesh, lengths: &[T]) -> Vec<Option<T>
         .collect()
 }
 
-/// Exact length cross ratios in ℚ for rational lengths (MATH.md §4, "Exact arithmetic").
+/// Exact length cross ratios in ℚ for rational lengths (docs/catalogue.md §4, "Exact arithmetic").
 /// `None` on boundary edges. Lengths must be nonzero.
 pub fn length_cross_ratios_exact(mesh: &Mesh, lengths: &[Rational]) -> Vec<Option<Rational>> {
     let l = |h: HalfEdge| &lengths[h.edge().idx()];
@@ -54,7 +54,7 @@ pub fn length_cross_ratios_exact(mesh: &Mesh, lengths: &[Rational]) -> Vec<Optio
 
 /// Product of the cross ratios of the interior edges at each vertex, each edge counted once
 /// per end (a loop twice): `Π_j c_ij`, which is 1 at every interior vertex for any lengths
-/// (MATH.md §4). Boundary edges contribute nothing.
+/// (docs/catalogue.md §4). Boundary edges contribute nothing.
 pub fn vertex_cross_ratio_products<T: Real>(mesh: &Mesh, lengths: &[T]) -> Vec<T> {
     let c = length_cross_ratios(mesh, lengths);
     let one = lengths.first().map(Real::one_like);

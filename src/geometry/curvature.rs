@@ -1,12 +1,12 @@
 //! Discrete curvature: angle defects `K_i = 2π − θ_i` at interior vertices and geodesic
-//! curvature `k_i = π − θ_i` at boundary vertices (notes §1.2, Eq. 1; MATH.md §2).
+//! curvature `k_i = π − θ_i` at boundary vertices (notes §1.2, Eq. 1; docs/catalogue.md §2).
 
 use super::cone_angles::cone_angles;
 use crate::mesh::Mesh;
 use crate::scalar::Real;
 
 /// Per-vertex curvature from per-edge lengths: `K_i = 2π − θ_i` at interior vertices and
-/// `k_i = π − θ_i` at boundary vertices (MATH.md §2, notes §1.2), with `θ_i` from
+/// `k_i = π − θ_i` at boundary vertices (docs/catalogue.md §2, notes §1.2), with `θ_i` from
 /// [`cone_angles`]. Which formula applies is decided by the topology only.
 ///
 /// ```
@@ -38,7 +38,7 @@ pub fn curvature<T: Real>(mesh: &Mesh, lengths: &[T]) -> Vec<T> {
         .collect()
 }
 
-/// The Gauss–Bonnet total `Σ_int K_i + Σ_∂ k_i` (MATH.md §2), summed in vertex order.
+/// The Gauss–Bonnet total `Σ_int K_i + Σ_∂ k_i` (docs/catalogue.md §2), summed in vertex order.
 /// Forward error: proofs/B42.
 pub fn gauss_bonnet_total<T: Real>(mesh: &Mesh, lengths: &[T]) -> Option<T> {
     let l0 = lengths.first()?;
@@ -50,7 +50,7 @@ pub fn gauss_bonnet_total<T: Real>(mesh: &Mesh, lengths: &[T]) -> Option<T> {
 }
 
 /// `2πχ` in the context `ctx`, with `χ = V − E + F` counted on the Δ-complex
-/// (MATH.md §2). `2χ` is an exact `f64` for every mesh that fits in memory.
+/// (docs/catalogue.md §2). `2χ` is an exact `f64` for every mesh that fits in memory.
 pub fn gauss_bonnet_target<T: Real>(mesh: &Mesh, ctx: T::Ctx) -> T {
     let chi = mesh.euler_characteristic();
     T::pi(ctx) * &T::from_f64(2.0 * chi as f64, ctx)

@@ -1,11 +1,11 @@
-//! Energies of piecewise-linear maps `f: V → ℂ` (notes §1.3.3; MATH.md §3). A complex
+//! Energies of piecewise-linear maps `f: V → ℂ` (notes §1.3.3; docs/catalogue.md §3). A complex
 //! value is a pair `[re, im]`.
 
 use super::triangle::corner_angle;
 use crate::mesh::Mesh;
 use crate::scalar::Real;
 
-/// The Dirichlet energy `E_D(f) = ½ Σ_{edges ij} w_ij |f_j − f_i|²` (MATH.md §3, notes
+/// The Dirichlet energy `E_D(f) = ½ Σ_{edges ij} w_ij |f_j − f_i|²` (docs/catalogue.md §3, notes
 /// Eq. 5), each edge once, from per-edge cotan weights `w` (see
 /// [`super::cotan::cotan_weights`]). Equals `½ ∫ |∇f|²` of the piecewise-linear
 /// interpolant, hence `≥ 0` whatever the signs of the weights. `None` if `f` is empty.
@@ -22,7 +22,7 @@ pub fn dirichlet_energy<T: Real>(mesh: &Mesh, weights: &[T], f: &[[T; 2]]) -> Op
 }
 
 /// Signed area of the image polygon, `A(f) = ½ Σ_{ij∈∂M} Im(conj(f_i) f_j)` over the
-/// boundary edges oriented with the surface on their left (MATH.md §3, notes §1.3.3).
+/// boundary edges oriented with the surface on their left (docs/catalogue.md §3, notes §1.3.3).
 /// Zero on a closed surface. `None` if `f` is empty.
 pub fn signed_area<T: Real>(mesh: &Mesh, f: &[[T; 2]]) -> Option<T> {
     let mut a = f.first()?[0].zero_like();
@@ -37,7 +37,7 @@ pub fn signed_area<T: Real>(mesh: &Mesh, f: &[[T; 2]]) -> Option<T> {
     Some(a * &f[0][0].lit(0.5))
 }
 
-/// The conformal energy `E_C(f) = E_D(f) − A(f)` (MATH.md §3, notes §1.3.3).
+/// The conformal energy `E_C(f) = E_D(f) − A(f)` (docs/catalogue.md §3, notes §1.3.3).
 pub fn conformal_energy<T: Real>(mesh: &Mesh, weights: &[T], f: &[[T; 2]]) -> Option<T> {
     Some(dirichlet_energy(mesh, weights, f)? - &signed_area(mesh, f)?)
 }

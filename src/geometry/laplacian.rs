@@ -1,5 +1,5 @@
 //! The cotan Laplacian as a small compressed-sparse-row matrix (notes §1.3.3–1.3.5;
-//! MATH.md §3).
+//! docs/catalogue.md §3).
 
 use super::cotan::halfedge_cotans;
 use crate::mesh::Mesh;
@@ -150,7 +150,7 @@ impl<T: Real> SparseMatrix<T> {
     }
 }
 
-/// The cotan Laplacian `(L f)_i = Σ_j w_ij (f_j − f_i)` (MATH.md §3, notes Eq. 6): off the
+/// The cotan Laplacian `(L f)_i = Σ_j w_ij (f_j − f_i)` (docs/catalogue.md §3, notes Eq. 6): off the
 /// diagonal `L_ij = w_ij` summed over the edges between `i` and `j` (multi-edges add), on
 /// the diagonal `L_ii = −Σ_j w_ij`. Each half-edge `h = i→j` of a face adds
 /// `½ cot α(h)` to `L_ij`, `L_ji` and subtracts it from `L_ii`, `L_jj`; loops (`i = j`)

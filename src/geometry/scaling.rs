@@ -5,7 +5,7 @@ use crate::mesh::{HalfEdge, Mesh};
 use crate::scalar::Real;
 use rug::Rational;
 
-/// Conformal scaling `ℓ̃_ij = e^{(u_i+u_j)/2} ℓ_ij` (notes Eq. 10, MATH.md §4) with
+/// Conformal scaling `ℓ̃_ij = e^{(u_i+u_j)/2} ℓ_ij` (notes Eq. 10, docs/catalogue.md §4) with
 /// per-vertex log scale factors `u`.
 ///
 /// ```
@@ -27,7 +27,7 @@ pub fn conformal_scaling<T: Real>(mesh: &Mesh, lengths: &[T], u: &[T]) -> Vec<T>
 }
 
 /// Exact conformal scaling in ℚ: `ℓ̃_ij = s_i s_j ℓ_ij` with rational `s_i = e^{u_i/2}`
-/// (MATH.md §4, "Exact arithmetic").
+/// (docs/catalogue.md §4, "Exact arithmetic").
 ///
 /// ```
 /// use penner::geometry::scaling::conformal_scaling_exact;

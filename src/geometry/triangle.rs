@@ -4,7 +4,7 @@
 use crate::scalar::Real;
 
 /// The angle `A` opposite side `a` of a triangle with sides `a, b, c`, by the half-angle
-/// (l'Huilier) form `tan(A/2) = √((a−b+c)(a+b−c) / ((a+b+c)(−a+b+c)))` (MATH.md §1),
+/// (l'Huilier) form `tan(A/2) = √((a−b+c)(a+b−c) / ((a+b+c)(−a+b+c)))` (docs/catalogue.md §1),
 /// stable near 0 and π. The differences are formed directly, never as `s − a`.
 ///
 /// Forward error: proofs/B40. For lengths violating the triangle inequality the result is
@@ -23,7 +23,7 @@ pub fn corner_angle<T: Real>(a: &T, b: &T, c: &T) -> T {
 }
 
 /// The four Heron factors of a triangle with sides `a ≥ b ≥ c` in Kahan's parenthesisation
-/// (MATH.md §1): `(a+(b+c)), (c−(a−b)), (c+(a−b)), (a+(b−c))`. Their product is
+/// (docs/catalogue.md §1): `(a+(b+c)), (c−(a−b)), (c+(a−b)), (a+(b−c))`. Their product is
 /// `16·Area²` for any order of the sides; the ordering only matters for rounding.
 pub fn kahan_factors<T: Real>(a: &T, b: &T, c: &T) -> [T; 4] {
     let amb = a.clone() - b;
@@ -37,7 +37,7 @@ pub fn kahan_factors<T: Real>(a: &T, b: &T, c: &T) -> [T; 4] {
 
 /// Area of the triangle with sides `a, b, c` by Kahan's stable form
 /// `¼ √((a+(b+c))(c−(a−b))(c+(a−b))(a+(b−c)))` with the sides sorted `a ≥ b ≥ c`
-/// (MATH.md §1; Kahan, *Miscalculating area and angles of a needle-like triangle*).
+/// (docs/catalogue.md §1; Kahan, *Miscalculating area and angles of a needle-like triangle*).
 ///
 /// The sort uses [`Real::approx_f64`]: it is a rounding heuristic only, since the product
 /// of the four factors is the same polynomial `16·Area²` in every order. Forward error:
@@ -53,7 +53,7 @@ pub fn kahan_area<T: Real>(a: &T, b: &T, c: &T) -> T {
     (f1 * &f2 * &f3 * &f4).sqrt() * &a.lit(0.25)
 }
 
-/// Cotangent of the angle opposite side `a`: `cot A = (b²+c²−a²)/(4·Area)` (MATH.md §1),
+/// Cotangent of the angle opposite side `a`: `cot A = (b²+c²−a²)/(4·Area)` (docs/catalogue.md §1),
 /// with the area from [`kahan_area`]. Forward error: proofs/B44.
 ///
 /// ```

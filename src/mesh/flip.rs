@@ -19,7 +19,7 @@ pub enum FlipError {
 
 impl Mesh {
     /// Flip edge `e` = ij between faces `ijk` and `jil` into edge `kl`, between faces
-    /// `lki` and `klj` (MATH.md §5). Half-edge `2e` becomes `l→k`, `2e+1` becomes `k→l`.
+    /// `lki` and `klj` (docs/catalogue.md §5). Half-edge `2e` becomes `l→k`, `2e+1` becomes `k→l`.
     ///
     /// ```text
     ///        k                 k

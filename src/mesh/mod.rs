@@ -4,7 +4,7 @@
 //! where faces may share several edges, edges may be loops, and a face may be glued to
 //! itself (the one-vertex torus: V = 1, E = 3, F = 2).
 //!
-//! Conventions (MATH.md): a face `ijk` is counter-clockwise; half-edge `h = (i→j)` lies in
+//! Conventions (docs/catalogue.md): a face `ijk` is counter-clockwise; half-edge `h = (i→j)` lies in
 //! face `ijk`, `next(h) = (j→k)`, and the corner *opposite* `h` is at `k = tail(prev(h))`.
 //! Boundary half-edges have no face; their `next` runs along the boundary loop.
 
@@ -122,7 +122,7 @@ impl Mesh {
     pub fn opposite_vertex(&self, h: HalfEdge) -> Vertex {
         self.tail(self.prev(h))
     }
-    /// The corners `[i, j, k, l]` of the quadrilateral around edge `e` (MATH.md §5): `i→j`
+    /// The corners `[i, j, k, l]` of the quadrilateral around edge `e` (docs/catalogue.md §5): `i→j`
     /// is half-edge `2e` in face `ijk`, `j→i` is `2e+1` in face `jil`. On a boundary side
     /// the opposite corner is read through the boundary loop; callers test interior first.
     #[inline]

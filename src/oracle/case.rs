@@ -7,7 +7,7 @@ use rug::Rational;
 
 /// Exact operations on a [`Metric`].
 pub trait MetricOps {
-    /// The conformal scaling ℓ̃_ij = s_i s_j ℓ_ij with rational s_i = e^{u_i/2} (MATH.md
+    /// The conformal scaling ℓ̃_ij = s_i s_j ℓ_ij with rational s_i = e^{u_i/2} (docs/catalogue.md
     /// §4, Eq. 10), exact; squared lengths scale by s_i² s_j².
     fn scaled(&self, mesh: &Mesh, s: &[Rational]) -> Metric;
     /// Entry `i` of the result is entry `map[i]` of `self` (maps come from the mesh, so

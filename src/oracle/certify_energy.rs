@@ -1,6 +1,6 @@
 //! The `energy` claim (protocol v1): `E(u)` and `∇E(u) = Θ − θ(u)` of the
 //! discrete-uniformization energy on the surface's triangulation
-//! ([`crate::variational::energy`], MATH.md §7), decided by `Interval<Mpfr>` enclosures at
+//! ([`crate::variational::energy`], docs/catalogue.md §7), decided by `Interval<Mpfr>` enclosures at
 //! rising precision ([`within_all`]): an entry holds when its enclosure lies within ε of
 //! the claimed value, is refuted only when it is farther than ε, and is undecided
 //! otherwise.

@@ -46,7 +46,7 @@ fn exact_lengths(case: &Surface) -> Option<&Vec<Rational>> {
     }
 }
 
-/// The case's metric scaled conformally by [`scale_factors`] (MATH.md Eq. 10).
+/// The case's metric scaled conformally by [`scale_factors`] (docs/catalogue.md §4, Eq. 10).
 pub(crate) fn scaled(case: &Surface) -> Metric {
     case.metric
         .scaled(&case.mesh, &scale_factors(case.mesh.n_vertices()))

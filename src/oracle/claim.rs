@@ -17,10 +17,10 @@ pub const MAX_CLAIM_BITS: u32 = 1 << 14;
 #[derive(Clone, Debug, PartialEq)]
 pub enum Assertion {
     /// `intrinsic_delaunay`: every interior edge of the surface satisfies the intrinsic
-    /// Delaunay condition (MATH.md §5, Eq. 13: cot α + cot β ≥ 0).
+    /// Delaunay condition (docs/catalogue.md §5, Eq. 13: cot α + cot β ≥ 0).
     IntrinsicDelaunay,
     /// `delaunay_flip`: flipping the surface to intrinsic Delaunay with this kind of flip
-    /// (notes §1.5.2, MATH.md §5) gives `result`: the same triangulation up to renumbering
+    /// (notes §1.5.2, docs/catalogue.md §5) gives `result`: the same triangulation up to renumbering
     /// of edges and faces (same gluing, vertices keep their ids) with every length within
     /// `epsilon` (meaning and tie rule: [`super::flip_claim`]).
     DelaunayFlip {
@@ -32,7 +32,7 @@ pub enum Assertion {
         /// gives `squared_lengths`); 0 when absent.
         epsilon: Rational,
     },
-    /// `cone_angles`: the cone angle θ_v (sum of corner angles, MATH.md §2) of every
+    /// `cone_angles`: the cone angle θ_v (sum of corner angles, docs/catalogue.md §2) of every
     /// vertex is within `epsilon` of `angles[v]`.
     ConeAngles {
         /// One claimed angle per vertex, radians.
@@ -40,7 +40,7 @@ pub enum Assertion {
         /// Absolute tolerance ε ≥ 0.
         epsilon: Rational,
     },
-    /// `cotan_laplacian`: the cotan weight w_e = ½(cot α + cot β) (MATH.md §3, one term on
+    /// `cotan_laplacian`: the cotan weight w_e = ½(cot α + cot β) (docs/catalogue.md §3, one term on
     /// a boundary edge) of every edge is within `epsilon` of `weights[e]`.
     CotanLaplacian {
         /// One claimed weight per edge.
@@ -49,7 +49,7 @@ pub enum Assertion {
         epsilon: Rational,
     },
     /// `conformal_equivalence`: the surface's metric ℓ and `target` ℓ̃ on the same
-    /// triangulation satisfy ℓ̃_ij = e^{(u_i+u_j)/2} ℓ_ij (MATH.md §4, Eq. 10) for the given
+    /// triangulation satisfy ℓ̃_ij = e^{(u_i+u_j)/2} ℓ_ij (docs/catalogue.md §4, Eq. 10) for the given
     /// `u`, within `epsilon` on the log lengths: |log ℓ̃_ij − log ℓ_ij − (u_i+u_j)/2| ≤ ε.
     ConformalEquivalence {
         /// The second metric (same triangulation).
@@ -59,7 +59,7 @@ pub enum Assertion {
         /// Absolute tolerance ε ≥ 0 on log lengths.
         epsilon: Rational,
     },
-    /// `energy`: the discrete-uniformization energy (MATH.md §7, notes Eq. 16) of the
+    /// `energy`: the discrete-uniformization energy (docs/catalogue.md §7, notes Eq. 16) of the
     /// surface's triangulation at the log scale factors `u` with target angles `targets`
     /// is within `epsilon` of `energy`, and each `∂E/∂u_i = Θ_i − θ_i(u)` is within
     /// `epsilon` of `gradient[i]` ([`crate::variational::energy`]).
@@ -76,7 +76,7 @@ pub enum Assertion {
         epsilon: Rational,
     },
     /// `lobachevsky`: `|Л(x) − y| ≤ epsilon` for Lobachevsky's function
-    /// (MATH.md §7, [`crate::special::lobachevsky`]); about no surface.
+    /// (docs/catalogue.md §7, [`crate::special::lobachevsky`]); about no surface.
     Lobachevsky {
         /// The argument.
         x: Rational,

@@ -13,7 +13,7 @@
 //! edge must be certified not strictly Delaunay at the time of its flip (so the flip is a
 //! legal step: the quadrilateral is convex), the new lengths are exact rationals (Ptolemy
 //! on rational lengths, T28) or outward-rounded MPFR enclosures (Euclidean, B62), and at the
-//! end every interior edge must be certified Delaunay (`D ≥ 0`, MATH.md §5 Eq. 13). By T21
+//! end every interior edge must be certified Delaunay (`D ≥ 0`, docs/catalogue.md §5 Eq. 13). By T21
 //! and T22 that triangulation is the intrinsic Delaunay triangulation, unique unless some
 //! edge has `D = 0` exactly (a cocircular *tie*). For Ptolemy flips the lengths are
 //! Penner coordinates and the same Delaunay condition selects the Epstein–Penner

@@ -14,7 +14,7 @@ use std::time::Instant;
 /// One runnable check of the catalogue.
 #[derive(Clone, Copy, Debug)]
 pub struct Check {
-    /// Catalogue ID, `T01` … `T36` (MATH.md, `proofs/`).
+    /// Catalogue ID, `T01` … `T36` (docs/catalogue.md, `proofs/`).
     pub id: &'static str,
     /// Short statement, for tables.
     pub title: &'static str,

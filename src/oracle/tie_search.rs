@@ -1,7 +1,7 @@
 //! The search over tie flips of a `delaunay_flip` claim (proof: B82).
 //!
 //! When our certified Delaunay triangulation has cocircular *ties* (interior edges with
-//! `D = 0` certified, MATH.md §5 Eq. 13), the metric has several Delaunay triangulations:
+//! `D = 0` certified, docs/catalogue.md §5 Eq. 13), the metric has several Delaunay triangulations:
 //! the triangulations of the cells of its Delaunay tessellation (notes §1.5.2, T22). Any
 //! two of them are joined by a sequence of tie flips, so a breadth-first search over tie
 //! flips, starting from ours, reaches every one of them. Each reached triangulation is
@@ -10,7 +10,7 @@
 //! vertex-fixing relabeling (B81).
 //!
 //! **Lengths.** A tie quadrilateral is cyclic, so by Ptolemy's theorem the Euclidean
-//! flip of a tie gives the Ptolemy length `ℓ_kl = (ℓ_ki ℓ_lj + ℓ_il ℓ_jk)/ℓ_ij` (MATH.md
+//! flip of a tie gives the Ptolemy length `ℓ_kl = (ℓ_ki ℓ_lj + ℓ_il ℓ_jk)/ℓ_ij` (docs/catalogue.md
 //! §5): rational on rational lengths, for both flip kinds. On lengths given by rational
 //! squares, `ℓ_kl² = (s_ki s_lj + s_il s_jk + 2√(s_ki s_lj s_il s_jk))/s_ij` is rational when
 //! the product under the root is a rational square; otherwise the new length is an

@@ -7,7 +7,7 @@ use crate::scalar::{Certified, Precision, Real, Sign};
 use rug::Rational;
 
 /// `16·Area²` of a triangle from its squared sides:
-/// `P = 2(a²b² + b²c² + c²a²) − a⁴ − b⁴ − c⁴` (Heron, MATH.md §1), in any ring (exact in ℚ,
+/// `P = 2(a²b² + b²c² + c²a²) − a⁴ − b⁴ − c⁴` (Heron, docs/catalogue.md §1), in any ring (exact in ℚ,
 /// an enclosure on intervals).
 fn heron16<T: Ring>(a2: &T, b2: &T, c2: &T) -> T {
     let s = a2.clone() * b2 + &(b2.clone() * c2) + &(c2.clone() * a2);
@@ -85,7 +85,7 @@ impl SignPredicate for CotanWeightSign {
 }
 
 /// The certified sign of the cotan weight `w_e` of every interior edge from rational
-/// squared lengths `sq[e] = ℓ_e²` (MATH.md §3), decided on the ladder; `None` on boundary
+/// squared lengths `sq[e] = ℓ_e²` (docs/catalogue.md §3), decided on the ladder; `None` on boundary
 /// edges. A weight whose triangles are degenerate is `Undecided`.
 pub fn cotan_weight_signs(
     mesh: &Mesh,

@@ -1,6 +1,6 @@
 //! The intrinsic Delaunay condition of an edge, decided with certified signs.
 //!
-//! For an interior edge `ij` between faces `ijk` and `jil` (MATH.md §5) with lengths
+//! For an interior edge `ij` between faces `ijk` and `jil` (docs/catalogue.md §5) with lengths
 //! `a = ℓ_ij`, `b = ℓ_jk`, `c = ℓ_ki`, `d = ℓ_il`, `e = ℓ_lj`, the edge is Delaunay iff
 //!
 //! ```text
@@ -142,7 +142,7 @@ impl QuadEdges {
         self.edges.map(|e| &lengths[e.idx()])
     }
 
-    /// The quadrilateral of the flipped edge `kl` (faces `lki`, `klj`, MATH.md §5 and
+    /// The quadrilateral of the flipped edge `kl` (faces `lki`, `klj`, docs/catalogue.md §5 and
     /// [`Mesh::flip`]) in the same `[ij, jk, ki, il, lj]` roles: `[kl, ki, il, lj, jk]`.
     #[inline]
     pub fn flipped(&self) -> Quad<Edge> {
@@ -188,7 +188,7 @@ pub enum DelaunayError {
         value: f64,
     },
     /// Euclidean flips need a Euclidean metric: this face is not certified to be a
-    /// non-degenerate triangle (strict triangle inequalities, MATH.md §1).
+    /// non-degenerate triangle (strict triangle inequalities, docs/catalogue.md §1).
     #[error("face {face} is not a non-degenerate triangle (Euclidean flips need the strict triangle inequality)")]
     NotATriangle {
         /// The face.
@@ -257,7 +257,7 @@ fn interior_quad(
     Ok(QuadEdges::of(mesh, e).ok_or(EdgeDelaunay::SameFace))
 }
 
-/// The certified Delaunay status of edge `e` under per-edge `lengths` (MATH.md §5, Eq. 13).
+/// The certified Delaunay status of edge `e` under per-edge `lengths` (docs/catalogue.md §5, Eq. 13).
 pub fn edge_delaunay_sign<T: Real>(
     mesh: &Mesh,
     lengths: &[T],
@@ -398,7 +398,7 @@ fn filter_not_positive(k: f64, n: f64) -> Option<Sign> {
 // Rungs 2 and 3: enclosures and exact rationals.
 
 /// `P = d·e·(b² + c² − a²) + b·c·(d² + e² − a²)` for the lengths `[a, b, c, d, e]` of
-/// [`Quad`] (MATH.md §5, Eq. 13), evaluated in `T`: rounded for point types, an enclosure
+/// [`Quad`] (docs/catalogue.md §5, Eq. 13), evaluated in `T`: rounded for point types, an enclosure
 /// for intervals ([`enclose_p`]).
 pub fn delaunay_p<T: Real>(q: &[T; 5]) -> T {
     let [a, b, c, d, e] = q;
@@ -561,7 +561,7 @@ pub fn delaunay_sign_squared(sq: Quad<&Rational>) -> Sign {
 }
 
 /// Lengths given as base lengths and log scale factors: `ℓ̃ = e^{(u_i+u_j)/2} ℓ`
-/// (MATH.md §4). `base` holds `ℓ`, `scale` holds `(u_i, u_j)` of each of the five edges.
+/// (docs/catalogue.md §4). `base` holds `ℓ`, `scale` holds `(u_i, u_j)` of each of the five edges.
 /// Only the MPFR rung runs, so no `f64` overflow or underflow can occur; when the four
 /// vertices carry one common `u` the scaling is uniform and the exact rung decides on the
 /// base lengths.

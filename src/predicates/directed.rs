@@ -25,7 +25,7 @@ pub fn enclose_f64(x: f64, prec: Precision) -> Interval<Mpfr> {
     Interval::point(Mpfr::from_f64(x, prec))
 }
 
-/// The enclosure of `e^{(u_i+u_j)/2} · ℓ` for finite `f64` inputs (MATH.md §4): the sum
+/// The enclosure of `e^{(u_i+u_j)/2} · ℓ` for finite `f64` inputs (docs/catalogue.md §4): the sum
 /// and the exponential are rounded outward, halving and the product with the point `ℓ`
 /// too (proof: B62). MPFR's exponent range keeps `|u|` far beyond 800 finite.
 pub fn scaled_length(length: f64, u_i: f64, u_j: f64, prec: Precision) -> Interval<Mpfr> {

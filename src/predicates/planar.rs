@@ -31,7 +31,7 @@ fn orient_value<T: Ring>(v: &[T; 6]) -> T {
 }
 
 /// Twice the signed area of the triangle `a, b, c`: positive when `a, b, c` turn
-/// counterclockwise, zero when they are collinear (MATH.md §9).
+/// counterclockwise, zero when they are collinear (docs/catalogue.md §9).
 ///
 /// ```
 /// use penner::predicates::ladder::{decide, Ladder};
@@ -124,7 +124,7 @@ fn incircle_value<T: Ring>(v: &[T; 8]) -> T {
 
 /// The incircle determinant of `a, b, c, d`: for `a, b, c` counterclockwise it is positive
 /// when `d` lies strictly inside their circumcircle, zero when on it, negative outside
-/// (the sign flips for clockwise `a, b, c`), MATH.md §9.
+/// (the sign flips for clockwise `a, b, c`), docs/catalogue.md §9.
 ///
 /// ```
 /// use penner::predicates::ladder::{decide, Ladder};

@@ -31,7 +31,7 @@ fn area_sq_value<T: Ring>(v: &[T; 3]) -> T {
 }
 
 /// The slack `b + c − a` of the triangle inequality `a ≤ b + c` for rational side lengths
-/// (MATH.md §1): positive for a strict inequality, zero for a degenerate (flat) triangle.
+/// (docs/catalogue.md §1): positive for a strict inequality, zero for a degenerate (flat) triangle.
 ///
 /// ```
 /// use penner::predicates::ladder::{decide, Ladder};
@@ -90,7 +90,7 @@ impl SignPredicate for TriangleSlack {
 }
 
 /// `16·Area² = 2(AB + BC + CA) − (A² + B² + C²)` of a triangle with squared side lengths
-/// `A = a², B = b², C = c²` (Heron's formula, MATH.md §1). For `A, B, C ≥ 0` it equals
+/// `A = a², B = b², C = c²` (Heron's formula, docs/catalogue.md §1). For `A, B, C ≥ 0` it equals
 /// `(a+b+c)(−a+b+c)(a−b+c)(a+b−c)`: positive exactly when the three strict triangle
 /// inequalities hold, zero for a degenerate triangle.
 ///
@@ -193,7 +193,7 @@ fn higher(a: Stage, b: Stage) -> Stage {
 }
 
 /// Whether `a, b, c` are the side lengths of a non-degenerate triangle: all three slacks
-/// `b + c − a`, `c + a − b`, `a + b − c` certified positive (MATH.md §1).
+/// `b + c − a`, `c + a − b`, `a + b − c` certified positive (docs/catalogue.md §1).
 pub fn strict_triangle(
     a: &Rational,
     b: &Rational,
@@ -247,7 +247,7 @@ pub fn strict_triangle_f64(a: f64, b: f64, c: f64) -> bool {
 }
 
 /// Whether three lengths of any [`Real`] backend are the sides of a non-degenerate
-/// triangle (all three slacks `b + c − a > 0`, MATH.md §1), certified: first by
+/// triangle (all three slacks `b + c − a > 0`, docs/catalogue.md §1), certified: first by
 /// [`strict_triangle_f64`] when the values are binary64 numbers exactly (53-bit point
 /// backends, normal range; proof: B66), then on their exact rational values through the
 /// ladder of [`strict_triangle`]. `Undecided` for values without a rational value

@@ -1,6 +1,6 @@
 //! Positive lengths with the exponent kept apart: `ℓ = m·2ᵏ` with a binary64 significand
 //! `m ∈ [1/2, 1)` and an `i32` exponent `k`, so that conformally scaled lengths
-//! `e^{(u_i+u_j)/2}·ℓ` (MATH.md §4) stay representable for any `|u|` up to
+//! `e^{(u_i+u_j)/2}·ℓ` (docs/catalogue.md §4) stay representable for any `|u|` up to
 //! [`MAX_LOG_SCALE`], far beyond binary64's range (`e^{±709.8}`).
 //!
 //! Arithmetic on these values is done by the caller on [`ExpLength::shifted`] images:

@@ -1,4 +1,4 @@
-//! Lobachevsky's function `Л(x) = −∫₀ˣ log|2 sin t| dt = ½ Cl₂(2x)` (MATH.md §7), generic
+//! Lobachevsky's function `Л(x) = −∫₀ˣ log|2 sin t| dt = ½ Cl₂(2x)` (docs/catalogue.md §7), generic
 //! over [`Real`].
 //!
 //! Reduction `x = k·π/2 + t` with enough bits of π that `t` keeps its relative accuracy
@@ -84,7 +84,7 @@ fn interval_f64(x: &Interval<f64>) -> Interval<f64> {
     )
 }
 
-/// `Л(x)`, Lobachevsky's function (MATH.md §7): odd, π-periodic, `Л(π/2) = 0`,
+/// `Л(x)`, Lobachevsky's function (docs/catalogue.md §7): odd, π-periodic, `Л(π/2) = 0`,
 /// `Л′(x) = −log|2 sin x|`, `Л(x) ≈ x(1 − log|2x|)` near 0; the maximum is
 /// `Л(π/6) = 0.50747080…`.
 ///
@@ -197,14 +197,14 @@ impl MpfrLobachevsky {
     }
 }
 
-/// Clausen's function `Cl₂(θ) = Σ_{k≥1} sin(kθ)/k² = 2 Л(θ/2)` (MATH.md §7).
+/// Clausen's function `Cl₂(θ) = Σ_{k≥1} sin(kθ)/k² = 2 Л(θ/2)` (docs/catalogue.md §7).
 pub fn clausen2<T: Real>(theta: &T) -> T {
     let half = theta.clone() * &theta.lit(0.5);
     lobachevsky(&half) * &theta.lit(2.0)
 }
 
 /// Volume `Л(α) + Л(β) + Л(γ)` of the ideal hyperbolic tetrahedron with dihedral angles
-/// `α, β, γ`, `α + β + γ = π` (Milnor; MATH.md §7). The regular one (`α = β = γ = π/3`)
+/// `α, β, γ`, `α + β + γ = π` (Milnor; docs/catalogue.md §7). The regular one (`α = β = γ = π/3`)
 /// has the largest volume, `3Л(π/3) = 1.01494160640965362502…`.
 pub fn ideal_tetrahedron_volume<T: Real>(alpha: &T, beta: &T, gamma: &T) -> T {
     lobachevsky(alpha) + &lobachevsky(beta) + &lobachevsky(gamma)

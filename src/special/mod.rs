@@ -1,5 +1,5 @@
 //! Special functions generic over [`Real`](crate::scalar::Real): Lobachevsky's function `Л`
-//! and Clausen's `Cl₂` (MATH.md §7, notes §1.6.3), the base of the hyperbolic volumes and
+//! and Clausen's `Cl₂` (docs/catalogue.md §7, notes §1.6.3), the base of the hyperbolic volumes and
 //! of the discrete-uniformization energy. Accuracy and enclosure bounds: proofs/B52, B53.
 
 mod coefficients;

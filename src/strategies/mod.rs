@@ -179,7 +179,7 @@ pub fn log_factors(n: usize) -> impl Strategy<Value = Vec<f64>> {
     proptest::collection::vec(-1.0f64..=1.0, n)
 }
 
-/// Conformal scaling ℓ̃_ij = s_i s_j ℓ_ij (MATH.md §4, Eq. 10; squared lengths scale by
+/// Conformal scaling ℓ̃_ij = s_i s_j ℓ_ij (docs/catalogue.md §4, Eq. 10; squared lengths scale by
 /// s_i² s_j²), exact. The result may violate the triangle inequality; see
 /// [`conformally_scaled`].
 pub fn scale_metric(s: &Surface, factors: &[Rational]) -> Metric {

@@ -1,4 +1,4 @@
-//! Read-only checks, one per catalogue ID (MATH.md). Checks never mutate and never panic;
+//! Read-only checks, one per catalogue ID (docs/catalogue.md). Checks never mutate and never panic;
 //! a failing check lists *all* failing elements.
 
 pub mod bounds;

@@ -1,4 +1,4 @@
-//! T01 — discrete Gauss–Bonnet with boundary (notes §1.2, Eq. 1; MATH.md §2):
+//! T01 — discrete Gauss–Bonnet with boundary (notes §1.2, Eq. 1; docs/catalogue.md §2):
 //! `Σ_{i interior} K_i + Σ_{i ∈ ∂M} k_i = 2πχ(M)`.
 //!
 //! API:

@@ -1,4 +1,4 @@
-//! T05 — the cotan Laplacian (notes §1.3.3–1.3.5; MATH.md §3): symmetric, zero row sums,
+//! T05 — the cotan Laplacian (notes §1.3.3–1.3.5; docs/catalogue.md §3): symmetric, zero row sums,
 //! negative semidefinite (`fᵀ L f = −2E_D(f) ≤ 0`, constants in the kernel), linear precision
 //! on flat interiors, and `w ≥ 0` on every edge ⇔ Delaunay.
 //!

@@ -1,4 +1,4 @@
-//! T21 (notes §1.5.2, Eq. 13; MATH.md §5): flipping non-Delaunay edges terminates and every
+//! T21 (notes §1.5.2, Eq. 13; docs/catalogue.md §5): flipping non-Delaunay edges terminates and every
 //! edge ends Delaunay.
 //!
 //! The check runs [`flip_to_delaunay`] on a copy and then re-decides *every* edge of the

@@ -3,7 +3,7 @@
 //!
 //! The flip sequence chosen by [`flip_to_delaunay`] is replayed on outward-rounded MPFR
 //! enclosures of the *exact* flipped lengths ([`euclidean_length_enclosure`]), and cone
-//! angles are enclosed with the half-angle form (MATH.md §1) before and after
+//! angles are enclosed with the half-angle form (docs/catalogue.md §1) before and after
 //! ([`verify_flip_sequence`]). Two independent parts decide the verdict (proof: T23):
 //!
 //! - **Refutation.** Disjoint enclosures of a cone angle before and after (or of the
@@ -32,7 +32,7 @@ use crate::predicates::directed::{div_positive, enclose_f64, overlaps, strictly_
 use crate::scalar::{Interval, IntervalBound, Mpfr, Precision, Real};
 
 /// Enclosures of the corner angle opposite `a` in a triangle `a, b, c`:
-/// `2·atan √((a−b+c)(a+b−c) / ((a+b+c)(−a+b+c)))` (MATH.md §1); `None` if the triangle may
+/// `2·atan √((a−b+c)(a+b−c) / ((a+b+c)(−a+b+c)))` (docs/catalogue.md §1); `None` if the triangle may
 /// be invalid.
 pub fn corner_angle_enclosure(
     a: &Interval<Mpfr>,

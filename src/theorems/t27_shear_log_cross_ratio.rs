@@ -1,6 +1,6 @@
 //! T27 (notes §1.6.2, Eq. 15): the shear coordinate `2 s_ij = λ_jk − λ_ki + λ_il − λ_lj`
 //! of the Penner coordinates `λ = 2 log ℓ` equals `log c_ij`, with the length cross ratio
-//! `c_ij = ℓ_il ℓ_jk / (ℓ_ki ℓ_lj)` (MATH.md §4, §6).
+//! `c_ij = ℓ_il ℓ_jk / (ℓ_ki ℓ_lj)` (docs/catalogue.md §4, §6).
 //!
 //! Numerical, at MPFR precision `p` with `u = 2⁻ᵖ`: the two evaluations may differ by at
 //! most `8u (Σ|ln ℓ| + |ln c| + 1)` (proof: B64).

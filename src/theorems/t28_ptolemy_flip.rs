@@ -1,4 +1,4 @@
-//! T28 (notes Eq. 18; MATH.md §5–6): the Ptolemy flip of any flippable edge of any
+//! T28 (notes Eq. 18; docs/catalogue.md §5–6): the Ptolemy flip of any flippable edge of any
 //! Δ-complex, exactly over ℚ —
 //! (a) is an involution;
 //! (b) commutes with scaling `ℓ_ij ↦ s_i s_j ℓ_ij` for rational `s_i = e^{u_i/2}`;
@@ -6,12 +6,12 @@
 //!     the new diagonal gets `c_kl = 1/c`, and every other edge's cross ratio is multiplied
 //!     by one factor per role it plays among the four sides of the quadrilateral — `1+c`
 //!     per role `jk` or `il`, `c/(1+c)` per role `ki` or `lj` (a side in two roles gets the
-//!     product of both; with five distinct edges this is MATH.md §6's rule
+//!     product of both; with five distinct edges this is docs/catalogue.md §6's rule
 //!     `c'_jk = c_jk(1+c)`, `c'_il = c_il(1+c)`, `c'_ki = c_ki c/(1+c)`, `c'_lj = c_lj c/(1+c)`);
 //! (d) keeps every vertex product `Π c = 1`.
 //!
 //! Cross ratios are the half-edge products `c_e = Π_{g ∈ {h, twin h}} ℓ(next g)/ℓ(prev g)`
-//! ([`cross_ratios`]): MATH.md §4's `ℓ_il ℓ_jk/(ℓ_ki ℓ_lj)` on an edge with two faces, and 1
+//! ([`cross_ratios`]): docs/catalogue.md §4's `ℓ_il ℓ_jk/(ℓ_ki ℓ_lj)` on an edge with two faces, and 1
 //! on an edge with the same face on both sides, whose two factors are inverse (proof: T28).
 //!
 //! Each identity has a `verify_*` comparison that [`check_ptolemy_flip`] runs on the true
@@ -56,7 +56,7 @@ fn bad_lengths(which: &str) -> Witness {
     }
 }
 
-/// The lengths scaled by `ℓ_ij ↦ s_i s_j ℓ_ij` (MATH.md §4 with `s_i = e^{u_i/2}`); the caller
+/// The lengths scaled by `ℓ_ij ↦ s_i s_j ℓ_ij` (docs/catalogue.md §4 with `s_i = e^{u_i/2}`); the caller
 /// checks the counts.
 fn scaled(m: &Mesh, l: &[Rational], s: &[Rational]) -> Vec<Rational> {
     m.edges()
@@ -70,7 +70,7 @@ fn scaled(m: &Mesh, l: &[Rational], s: &[Rational]) -> Vec<Rational> {
 /// The cross ratio of every edge as the half-edge product
 /// `c_e = Π_{g ∈ {h, twin h}} ℓ(next g)/ℓ(prev g)` (proof: T28, "Cross ratios on
 /// Δ-complexes"): `ℓ_il ℓ_jk/(ℓ_ki ℓ_lj)` on an edge `ij` between faces `ijk` and `jil`
-/// (MATH.md §4), exactly 1 on an edge with the same face on both sides, `None` on a boundary
+/// (docs/catalogue.md §4), exactly 1 on an edge with the same face on both sides, `None` on a boundary
 /// edge and where a length is missing or a denominator is 0.
 pub fn cross_ratios(mesh: &Mesh, l: &[Rational]) -> Vec<Option<Rational>> {
     let len = |h: HalfEdge| l.get(h.edge().idx());
@@ -297,7 +297,7 @@ pub fn verify_involution(
 
 /// The comparison of T28 (b) for the Ptolemy flip of `e`: the lengths of
 /// `flip(scale_s(ℓ))` against `scale_t(flip(ℓ))`, with `scale_s(ℓ)_ij = s_i s_j ℓ_ij`
-/// (MATH.md §4), exactly; the theorem is the case `t = s`. Every edge whose lengths differ
+/// (docs/catalogue.md §4), exactly; the theorem is the case `t = s`. Every edge whose lengths differ
 /// is a witness; lengths or factors that are not one positive rational per edge or vertex
 /// give one witness; empty if `e` cannot be flipped.
 pub fn verify_scaling_commutes(

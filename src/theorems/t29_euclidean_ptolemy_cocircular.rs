@@ -1,4 +1,4 @@
-//! T29 (notes §1.6.4; MATH.md §5): the Euclidean and Ptolemy flips of an edge give the same
+//! T29 (notes §1.6.4; docs/catalogue.md §5): the Euclidean and Ptolemy flips of an edge give the same
 //! new length iff the quadrilateral is cocircular (`D = 0`); otherwise the Ptolemy length
 //! is the longer one (Ptolemy's inequality).
 //!

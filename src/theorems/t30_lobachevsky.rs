@@ -1,4 +1,4 @@
-//! T30 (MATH.md §7): identities of Lobachevsky's function `Л` at given arguments `x` —
+//! T30 (docs/catalogue.md §7): identities of Lobachevsky's function `Л` at given arguments `x` —
 //! oddness `Л(−x) = −Л(x)`, π-periodicity `Л(x + π) = Л(x)`, reflection
 //! `Л(π − x) = −Л(x)`, the multiplication formula `Л(nx) = n Σ_{k<n} Л(x + kπ/n)`
 //! (`n = 2…7`), and agreement of two independent evaluations (the ζ-series of

@@ -1,4 +1,4 @@
-//! T31 — Schläfli's formula for one triangle (notes §1.6.3, Eqs. 16–17; MATH.md §7):
+//! T31 — Schläfli's formula for one triangle (notes §1.6.3, Eqs. 16–17; docs/catalogue.md §7):
 //! `f(x) = ½ Σ α_m x_m + Σ Л(α_m)` has `∂f/∂x_m = α_m/2` (`x = 2 log ℓ`), checked with
 //! dual numbers against the closed-form (half-angle) angles.
 //!

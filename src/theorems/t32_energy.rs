@@ -1,4 +1,4 @@
-//! T32 — the discrete-uniformization energy (notes §1.6.4, Eq. 16; MATH.md §7; SSP08,
+//! T32 — the discrete-uniformization energy (notes §1.6.4, Eq. 16; docs/catalogue.md §7; SSP08,
 //! Springborn 2020): `∇E = Θ − θ(u)`, Hessian = the cotan Laplacian, `E` convex, and on
 //! the variable triangulation C² across Penner cells (at a cocircular tie, `E`, `∇E` and
 //! the Hessian agree on both triangulations).

@@ -1,4 +1,4 @@
-//! T33 — hyperbolic discrete metrics (notes Thm 11; BPS15 §6; MATH.md §7): the angles of a
+//! T33 — hyperbolic discrete metrics (notes Thm 11; BPS15 §6; docs/catalogue.md §7): the angles of a
 //! hyperbolic triangle by two independent formulas agree, and the hyperbolic energy of
 //! the sinh-scaled metric has gradient `Θ − θ_hyp(u)`.
 //!

@@ -1,4 +1,4 @@
-//! T35 (notes §1.5.3 Definition 2; MATH.md §5–6), exactly over ℚ: (I) metrics related by
+//! T35 (notes §1.5.3 Definition 2; docs/catalogue.md §5–6), exactly over ℚ: (I) metrics related by
 //! conformal scalings and Ptolemy flips ⇔ (II) metrics with the same ideal polyhedron,
 //! i.e. equal shear data `s_ij = ln c_ij` (compared as equal cross ratios `c_ij`) on a
 //! common triangulation. Proof: T35.

@@ -1,6 +1,6 @@
 //! Connected components of a mesh (by edges), each with a grounded vertex: the smallest
 //! vertex index of the component. Newton fixes `u` there (the energy is invariant under
-//! adding a constant to `u` on one closed component, MATH.md §7).
+//! adding a constant to `u` on one closed component, docs/catalogue.md §7).
 
 use crate::mesh::Mesh;
 

@@ -1,12 +1,12 @@
 //! Discrete conformal maps with Dirichlet values: on a surface (with or without boundary)
 //! a set `F` of vertices has prescribed log scale factors `u_a = w_a`, and the other
-//! vertices `i` prescribed angle sums `θ_i(u) = Θ_i` (notes §1.5.3; MATH.md §7; the
+//! vertices `i` prescribed angle sums `θ_i(u) = Θ_i` (notes §1.5.3; docs/catalogue.md §7; the
 //! disk problem of the sphere target, B74).
 //!
 //! This generalises the grounding of [`super::newton`] (one fixed vertex per closed
 //! component, where Gauss–Bonnet makes the grounded equation redundant) to any fixed set:
 //! the energy `E(u)` restricted to `{u : u_F = w}` is convex with gradient `Θ_i − θ_i` at
-//! the free vertices and Hessian `−L` restricted to them (MATH.md §7), positive definite
+//! the free vertices and Hessian `−L` restricted to them (docs/catalogue.md §7), positive definite
 //! when every component has a fixed vertex and the cotan weights are those of a Delaunay
 //! triangulation. Boundary edges are never flipped; interior edges are kept intrinsic
 //! Delaunay by Ptolemy flips, exactly as in [`super::newton`], whose evaluation

@@ -1,7 +1,7 @@
 //! The grounded Hessian of the uniformization energy and its sparse Cholesky factorization.
 //!
 //! On a fixed triangulation the Hessian of `E(u)` is `H = −L`, `L` the cotan Laplacian of the
-//! scaled metric (MATH.md §7: `H_ij = −w_ij`, `H_ii = Σ_j w_ij`); it is positive
+//! scaled metric (docs/catalogue.md §7: `H_ij = −w_ij`, `H_ii = Σ_j w_ij`); it is positive
 //! semidefinite with the constants per component in its kernel. Fixing `u` at one vertex
 //! per component (the *grounded* vertices, [`Components`](super::components::Components)) leaves a positive definite
 //! matrix on the free vertices when all weights are positive, factored by faer's sparse
@@ -119,7 +119,7 @@ pub fn newton_direction(factor: &Factor, grad: &[f64], free: &[usize]) -> Vec<f6
 /// faer symbolic Cholesky factorization.
 ///
 /// A side `h = i→j` of a face (`i ≠ j`) with opposite angle `α` adds `½ cot α` to `H_ii`
-/// and `H_jj` and subtracts it from `H_ij` (MATH.md §7, `H = −L`); entries at grounded
+/// and `H_jj` and subtracts it from `H_ij` (docs/catalogue.md §7, `H = −L`); entries at grounded
 /// vertices are dropped.
 pub struct GroundedPattern {
     n: usize,

@@ -1,4 +1,4 @@
-//! The hyperbolic target (notes Thm 11; BPS15 §6; MATH.md §7; T33, proofs/B38): log scale
+//! The hyperbolic target (notes Thm 11; BPS15 §6; docs/catalogue.md §7; T33, proofs/B38): log scale
 //! factors `u` with `sinh(ℓ̃_ij/2) = e^{(u_i+u_j)/2} sinh(ℓ_ij/2)` whose hyperbolic cone
 //! angles are the targets `Θ` (all `2π` for [`Targets::flat`] on genus ≥ 2).
 //!

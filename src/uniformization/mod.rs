@@ -1,4 +1,4 @@
-//! Discrete uniformization with Ptolemy flips (notes §1.5.3 Thms 9–12; MATH.md §7;
+//! Discrete uniformization with Ptolemy flips (notes §1.5.3 Thms 9–12; docs/catalogue.md §7;
 //! T24–T26): find log scale factors `u` with prescribed cone angles `θ_i(u) = Θ_i` on a
 //! closed surface, the scaled metric `e^{(u_i+u_j)/2}·ℓ_ij` kept intrinsic Delaunay by
 //! Ptolemy flips.

@@ -1,5 +1,5 @@
 //! The `f64` Newton solver for discrete uniformization with Ptolemy flips (notes §1.5.3
-//! Thm 12; MATH.md §7; S20, GSC21).
+//! Thm 12; docs/catalogue.md §7; S20, GSC21).
 //!
 //! Convention: the input is first made intrinsic Delaunay by Euclidean flips (which keep
 //! its cone metric, T23); that triangulation `T₀` with its lengths `ℓ⁰` is the metric being
@@ -13,7 +13,7 @@
 //! accepted when `|∇E(u+td)|₂ < |∇E(u)|₂` and either the projected gradient
 //! `∇E(u+td)·d ≤ 0` (no overshoot of the minimum along `d`) or the residual at least halves
 //! (the overshoot of a Newton step near the solution is at the level of rounding). No
-//! energy-decrease test (it stalls at the working precision, MATH.md §7).
+//! energy-decrease test (it stalls at the working precision, docs/catalogue.md §7).
 
 use super::components::Components;
 use super::error::UniformizeError;

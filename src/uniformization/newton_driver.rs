@@ -3,7 +3,7 @@
 //! hyperbolic target ([`super::hyperbolic`]) — and one mixed-precision refinement loop
 //! ([`super::refine`], [`super::hyperbolic_certificate`]).
 //!
-//! **Newton step and line search** (MATH.md §7). At `u` with gradient `g = ∇E = Θ − θ(u)`
+//! **Newton step and line search** (docs/catalogue.md §7). At `u` with gradient `g = ∇E = Θ − θ(u)`
 //! the system gives the direction `d = −H⁻¹g` (zero at grounded or fixed vertices); a step
 //! `t ∈ {1, ½, ¼, …}` (at most `max_halvings` halvings) is accepted when
 //! `|g(u + td)|₂ < |g(u)|₂` and either the projected gradient `g(u + td)·d ≤ 0` (no

@@ -1,6 +1,6 @@
 //! Prescribed cone angles `Θ_i = q_i·π` (exact rational multiples of π) and their
 //! validation: one per vertex, each positive, and discrete Gauss–Bonnet
-//! `Σ_i (2π − Θ_i) = 2πχ` on every connected component (notes §1.5.3 Thm 12; MATH.md §7).
+//! `Σ_i (2π − Θ_i) = 2πχ` on every connected component (notes §1.5.3 Thm 12; docs/catalogue.md §7).
 
 use super::error::UniformizeError;
 use crate::mesh::Mesh;

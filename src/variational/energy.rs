@@ -1,12 +1,12 @@
 //! The discrete-uniformization energy (SSP08; Springborn 2020 over Penner cells; notes
-//! §1.6.4, Eq. 16; MATH.md §7):
+//! §1.6.4, Eq. 16; docs/catalogue.md §7):
 //!
 //! `E(u) = Σ_{ijk} [ 2 f(λ̃_ij, λ̃_jk, λ̃_ki) − (π/2)(λ̃_ij + λ̃_jk + λ̃_ki) ] + Σ_i Θ_i u_i`,
 //! `λ̃_ij = λ_ij + u_i + u_j`, `λ = 2 log ℓ` (the convention of [`super::triangle`]).
 //!
 //! **Normalisation.** For a face `ijk`, `u_i` enters `λ̃_ij` and `λ̃_ki` with coefficient
 //! 1; by `∂f/∂x_m = α_m/2` the face term contributes `(α_k + α_j) − π = −α_i`, so
-//! `∂E/∂u_i = Θ_i − θ_i(u)` with `θ_i` the cone angle — MATH.md's constants are right as
+//! `∂E/∂u_i = Θ_i − θ_i(u)` with `θ_i` the cone angle — the constants of docs/catalogue.md §7 are right as
 //! printed (a factor `½` in front, as in some codes, would halve the gradient). The Hessian
 //! is the cotan Laplacian with the sign making it positive semidefinite:
 //! `∂²E/∂u_i∂u_j = −w_ij` (`i ≠ j`), `∂²E/∂u_i² = Σ_j w_ij`, `w_ij = ½(cot α_k + cot α_l)`,
@@ -46,7 +46,7 @@ pub fn log_lengths<T: Real>(lengths: &[T]) -> Vec<T> {
     lengths.iter().map(|l| l.ln() * &l.lit(2.0)).collect()
 }
 
-/// The scaled logarithmic lengths `λ̃_ij = λ_ij + u_i + u_j` (MATH.md §4).
+/// The scaled logarithmic lengths `λ̃_ij = λ_ij + u_i + u_j` (docs/catalogue.md §4).
 pub fn scaled_log_lengths<T: Real>(mesh: &Mesh, lambda: &[T], u: &[T]) -> Vec<T> {
     mesh.edges()
         .map(|e| {
@@ -279,7 +279,7 @@ pub fn hessian<T: Real>(mesh: &Mesh, lambda: &[T], u: &[T]) -> SparseMatrix<T> {
 }
 
 /// `λ = 2 log ℓ = 2(ln m + k ln 2)` for an exponent-apart length `ℓ = m·2ᵏ`, in the
-/// context `ctx`: finite for every representable `ℓ` (MATH.md §4, proof: B67 for the
+/// context `ctx`: finite for every representable `ℓ` (docs/catalogue.md §4, proof: B67 for the
 /// lengths themselves).
 pub fn log_length_exp<T: Real>(l: &ExpLength, ctx: T::Ctx) -> T {
     let ln2 = T::from_f64(2.0, ctx).ln();
@@ -305,7 +305,7 @@ pub struct DelaunayEnergy<T> {
     pub hessian: SparseMatrix<T>,
 }
 
-/// `E`, `∇E` and the Hessian at `u` on the variable triangulation (S20, GSC21; MATH.md
+/// `E`, `∇E` and the Hessian at `u` on the variable triangulation (S20, GSC21; docs/catalogue.md
 /// §7): the scaled lengths `e^{(u_i+u_j)/2} ℓ_ij` are formed exponent apart and flipped to
 /// intrinsic Delaunay by Ptolemy flips
 /// ([`flip_to_delaunay_scaled`], certified signs of `D`), so any `|u| ≤ 2²⁰` neither

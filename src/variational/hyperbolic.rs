@@ -1,4 +1,4 @@
-//! Hyperbolic discrete metrics (notes Thm 11; BPS15 §6; MATH.md §7): the sinh scaling,
+//! Hyperbolic discrete metrics (notes Thm 11; BPS15 §6; docs/catalogue.md §7): the sinh scaling,
 //! hyperbolic triangle angles by two independent formulas, and the hyperbolic energy with
 //! gradient `Θ − θ_hyp(u)`.
 //!
@@ -79,7 +79,7 @@ fn degenerate<T: Real>(z: &T, m: usize) -> [T; 3] {
 }
 
 /// The angles of the hyperbolic triangle with sides `l` (angle `m` opposite side `m`) by
-/// the half-angle form (MATH.md §7; BPS15 §6):
+/// the half-angle form (docs/catalogue.md §7; BPS15 §6):
 /// `tan(α_i/2) = √( sinh(s−ℓ_j) sinh(s−ℓ_k) / (sinh s · sinh(s−ℓ_i)) )`,
 /// `s − ℓ_j = (ℓ_i − ℓ_j + ℓ_k)/2` formed directly; `(π, 0, 0)` when degenerate.
 pub fn angles_half_angle<T: Real>(l: &[T; 3]) -> [T; 3] {

@@ -1,5 +1,5 @@
 //! Variational principles of discrete conformal geometry (notes §1.6.3–1.6.4, Eqs. 16–17;
-//! MATH.md §7): the per-triangle function `f` whose gradient is half the angles, the
+//! docs/catalogue.md §7): the per-triangle function `f` whose gradient is half the angles, the
 //! discrete-uniformization energy `E(u)` with gradient `Θ − θ(u)` and the cotan Laplacian
 //! as Hessian, on a fixed triangulation and on the intrinsic Delaunay triangulation of the
 //! scaled metric, and the hyperbolic analogue (BPS15 §6).

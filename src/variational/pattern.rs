@@ -1,5 +1,5 @@
 //! The sparsity pattern of the uniformization energy's Hessian (the cotan Laplacian of a
-//! mesh, MATH.md §3, §7): one stored entry per vertex pair joined by a side of a face and
+//! mesh, docs/catalogue.md §3, §7): one stored entry per vertex pair joined by a side of a face and
 //! one per vertex on the diagonal, rows sorted by column, with the position of every
 //! half-edge's entry precomputed so that assembly adds each face's cotangents in place.
 //!

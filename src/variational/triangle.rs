@@ -1,5 +1,5 @@
 //! One Euclidean triangle in logarithmic lengths: its angles with the degenerate extension,
-//! and Eq. 17's function `f` (MATH.md §7; SSP08; BPS15 §4).
+//! and Eq. 17's function `f` (docs/catalogue.md §7; SSP08; BPS15 §4).
 //!
 //! **Convention.** The variables are Penner's logarithmic lengths `x_m = λ_m = 2 log ℓ_m`
 //! (not `log ℓ_m`): with this choice `∂f/∂x_m = α_m/2` exactly. Proof: with

@@ -2,7 +2,7 @@
 //! library answer, and `penner certify` end to end with every exit code.
 //!
 //! Expected values are computed by hand here, never by the code under test: the Ptolemy
-//! length of a flipped rhombus diagonal is (1·1 + 1·1)/(19/10) = 20/19 (MATH.md §5,
+//! length of a flipped rhombus diagonal is (1·1 + 1·1)/(19/10) = 20/19 (docs/catalogue.md §5,
 //! Eq. 18), the Euclidean one is 2·√(1 − (19/20)²) = √(39/100), and the cotan weight of
 //! an equilateral edge is ½(2·cot 60°) = 1/√3.
 

@@ -331,7 +331,7 @@ fn b49_cotan_weight_sign_cocircular_is_zero() {
 #[test]
 fn t05_cotan_weight_sign_matches_the_delaunay_predicate() {
     // Cot-form (Heron, this crate's cotan predicate) against the cos-form Delaunay
-    // predicate on squared lengths: independent formulas, same sign (MATH.md §5).
+    // predicate on squared lengths: independent formulas, same sign (docs/catalogue.md §5).
     use penner::predicates::delaunay::{delaunay_sign_squared, Quad};
     let mut rng = ChaCha8Rng::seed_from_u64(83);
     let mut seen = [0usize; 3];

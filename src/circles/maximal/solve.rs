@@ -1,6 +1,6 @@
 //! The maximal packing's radii: Newton's method in `f64` on the interior vertices with faer's
 //! sparse Cholesky of `H = −∂θ/∂u` ([`super::hyperbolic`]), then mixed-precision refinement
-//! in any backend `T` (MATH.md §7, as in the uniformization): the residual `2π − θ(u)` is
+//! in any backend `T` (docs/catalogue.md §7, as in the uniformization): the residual `2π − θ(u)` is
 //! evaluated in `T`, the correction solved with the `f64` factor of `H` at the `f64`
 //! solution. Each refinement step contracts the residual by about `κ(H)·u_f64` (a
 //! simplified Newton iteration), so a few steps reach `2⁻¹⁰⁰` from `10⁻¹³`.

@@ -67,7 +67,7 @@ impl Scratch {
 
     /// The corner directions `C_i + iS` of the face with sides `l` (corner `i` opposite
     /// `l_i`): `C_i = s·e_i − e_{i+1}e_{i+2} = 4 l_{i+1}l_{i+2} cos α_i` and
-    /// `S = 2√(16·Area²) = 4 l_{i+1}l_{i+2} sin α_i` (MATH.md §1; B16's kernel). Returns
+    /// `S = 2√(16·Area²) = 4 l_{i+1}l_{i+2} sin α_i` (docs/catalogue.md §1; B16's kernel). Returns
     /// whether the face is a certified strict triangle with `S > 0`. proof: B33
     fn load(&mut self, l: [&I; 3]) -> bool {
         if !self.face.load(l) {

@@ -1,6 +1,6 @@
 //! Enclosed corner cotangents from squared lengths and an enclosed area, no
 //! trigonometric function: `cot α_i = (l_{i+1}² + l_{i+2}² − l_i²) / (4·Area)` with
-//! `4·Area = √(s·e₀·e₁·e₂)` (MATH.md §1). proof: B34
+//! `4·Area = √(s·e₀·e₁·e₂)` (docs/catalogue.md §1). proof: B34
 
 use super::{Bounds, FaceHeron};
 use crate::mesh::Mesh;

@@ -191,7 +191,7 @@ impl Bounds {
 /// The quantities of one triangle with sides enclosed by `l = [l₀, l₁, l₂]` (corner `i`
 /// opposite `l_i`) that both the corner directions and the cotangents use: the Heron
 /// factors `e_i = l_{i+1} + l_{i+2} − l_i`, the perimeter `s = l₀ + l₁ + l₂`, and
-/// `16·Area² = s·e₀·e₁·e₂` (MATH.md §1).
+/// `16·Area² = s·e₀·e₁·e₂` (docs/catalogue.md §1).
 pub(crate) struct FaceHeron {
     pub(crate) l: [Bounds; 3],
     pub(crate) e: [Bounds; 3],

@@ -32,7 +32,7 @@ const ANGLE_MARGIN: f64 = 0.01;
 /// is a heuristic, the control's verdict comes from the check). The angles at the ends of
 /// the new diagonal `kl` are `α_i, α_j` and its opposite angles sum to
 /// `2π − α_k − α_l ≥ π + 1/100`: the flip makes that one edge strictly non-Delaunay, far from
-/// a tie (MATH.md §5). Returns the edge.
+/// a tie (docs/catalogue.md §5). Returns the edge.
 fn flip_one_delaunay_edge<T: Real>(mesh: &mut Mesh, l: &mut [T]) -> Option<Edge> {
     let a: Vec<f64> = halfedge_angles(mesh, l)
         .iter()

@@ -38,7 +38,7 @@ use std::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
 /// word holds only multiples of 2⁻¹⁰⁷⁴, so results there carry an absolute error of a few
 /// 2⁻¹⁰⁷⁴ on top of the relative bounds (each `Bnn` states it); every operation returns a
 /// normalized pair (`hi = RN(hi + lo)`) and overflows to `(±∞, 0)`. Arithmetic follows JMP17 with FMA
-/// (MATH.md §9, proofs B01–B09, division B17); the functions have measured bounds (proofs
+/// (docs/catalogue.md §9, proofs B01–B09, division B17); the functions have measured bounds (proofs
 /// B10–B14, reduction mod π/2 for large arguments B18).
 ///
 /// ```
