@@ -24,6 +24,12 @@ pub fn run(path: &Path, json: bool) -> Result<u8, CliError> {
     let checks = [check];
     let settings = Settings::default();
     let rows = registry::run_case(&failure.surface, &checks, &[failure.precision], &settings);
+    if rows.is_empty() {
+        return Err(CliError::Input(format!(
+            "{name}: check `{}` has no form at {}: nothing to replay",
+            failure.check, failure.precision
+        )));
+    }
     let still = rows
         .iter()
         .any(|r| matches!(r.outcome, Outcome::Verdict(Verdict::Fails { .. })));

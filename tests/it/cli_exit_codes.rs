@@ -64,3 +64,50 @@ fn a_check_without_a_form_at_the_precision_asked_is_bad_usage_not_an_empty_repor
     let out = penner(&["check", s, "--only", "T26", "--precision", "exact"]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
 }
+
+#[test]
+fn replaying_a_check_without_a_form_at_its_precision_says_so() {
+    use penner::oracle::failure::Failure;
+    use penner::oracle::precision::Prec;
+    use penner::theorems::Witness;
+    let d = scratch("exit-replay-no-form");
+    let surface = penner::io::json::read(TETRAHEDRON).expect("tetrahedron");
+    let failure = |precision| Failure {
+        check: "T26".into(),
+        precision,
+        source: "tet.json".into(),
+        source_faces: 4,
+        witnesses: vec![Witness {
+            element: "v0".into(),
+            detail: "made up for the test".into(),
+            value: 1.0,
+        }],
+        surface: surface.clone(),
+    };
+    let f64_file = write(
+        &d,
+        "f64.json",
+        failure(Prec::F64).to_json().to_string().as_bytes(),
+    );
+    let out = penner(&["replay", f64_file.to_str().expect("path")]);
+    assert_eq!(out.status.code(), Some(3), "{}", text(&out.stdout));
+    assert!(
+        text(&out.stderr).contains("has no form at f64"),
+        "{}",
+        text(&out.stderr)
+    );
+    // Control: at `exact` the check runs; it holds on the tetrahedron, so the failure no
+    // longer reproduces.
+    let exact_file = write(
+        &d,
+        "exact.json",
+        failure(Prec::Exact).to_json().to_string().as_bytes(),
+    );
+    let out = penner(&["replay", exact_file.to_str().expect("path")]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert!(
+        text(&out.stdout).contains("no longer fails"),
+        "{}",
+        text(&out.stdout)
+    );
+}
