@@ -305,3 +305,27 @@ pub fn exact_circles<T: Real>(circles: &[super::layout::Circle<T>]) -> Option<Ve
         })
         .collect()
 }
+
+/// Tests in which one side of `|d| ≤ ε` (proofs/B95, "Terms") decides the verdict.
+#[cfg(test)]
+mod terms {
+    use super::*;
+    use crate::scalar::{Mpfr, Precision};
+
+    fn iv(lo: f64, hi: f64) -> I {
+        let p = Precision::new(64).expect("precision");
+        I::new(Mpfr::from_f64(lo, p), Mpfr::from_f64(hi, p))
+    }
+
+    /// B95 terms `ε − d > 0` and `ε + d > 0`: a defect above `ε` and one below `−ε` are
+    /// each refuted by its own side; one inside is proved; one straddling `±ε` is neither.
+    #[test]
+    fn term_b95_both_sides_of_the_tangency_tolerance_are_checked() {
+        let eps = iv(1e-30, 1e-30);
+        assert_eq!(within(&iv(2e-30, 3e-30), &eps), Some(false), "above ε");
+        assert_eq!(within(&iv(-3e-30, -2e-30), &eps), Some(false), "below −ε");
+        assert_eq!(within(&iv(-5e-31, 5e-31), &eps), Some(true));
+        assert_eq!(within(&iv(5e-31, 2e-30), &eps), None, "straddles ε");
+        assert_eq!(within(&iv(-2e-30, -5e-31), &eps), None, "straddles −ε");
+    }
+}
