@@ -52,6 +52,9 @@ fn certificate(dir: &Path, surface: &str, args: &[&str]) -> Value {
 
 /// Assert that every alteration of `claim` is not `holds`, and the claim itself is.
 fn each_field_is_used(dir: &Path, claim: &Value, alterations: &[(&str, Value)]) {
+    for field in ["radius", "residual_bound", "final_faces", "u"] {
+        assert!(claim.get(field).is_some(), "the claim has no `{field}`");
+    }
     let (v, code) = certify(dir, claim);
     assert_eq!(
         (v.as_str(), code),
@@ -127,7 +130,7 @@ fn sphere_uniformization_claim_fields_pole_flips_radius_residual_faces_are_each_
     let surf = surface_file(&d, "sphere", m, &l);
     let claim = certificate(&d, &surf, &["--sphere"]);
     let n = claim["u"].as_array().map_or(0, Vec::len);
-    let pole = claim["pole"].as_u64().unwrap_or(0);
+    let pole = claim["pole"].as_u64().expect("the claim names its pole");
     let other_pole = (0..n as u64).find(|&v| v != pole).unwrap();
     let mut alterations = vec![
         (

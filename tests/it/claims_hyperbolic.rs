@@ -236,3 +236,58 @@ fn b39_malformed_hyperbolic_claims_are_typed_errors() {
         "surface: ",
     );
 }
+
+/// The re-check uses every field of a `hyperbolic_uniformization` claim: the certified
+/// claim of a random genus-2 surface holds, and with its radius shrunk, its residual bound
+/// set to 0, a target moved by π/100 between two vertices, or (when it has flips) its last
+/// flip dropped, it is never `holds`.
+#[test]
+fn hyperbolic_claim_fields_radius_residual_targets_flips_are_each_used() {
+    let (claim, _) = (0..8u64)
+        .find_map(|seed| {
+            let m = builders::random_surface(2, 4, seed).ok()?;
+            let l = random_lengths(&m, 1.0, 1.5, seed);
+            let t = Targets::flat(m.n_vertices());
+            let sol = uniformize_hyperbolic(&m, &l, &t, &HyperbolicOptions::default()).ok()?;
+            sol.converged().then(|| certified_claim(&m, &l, 256))
+        })
+        .expect("a random genus-2 surface converges");
+    assert_eq!(answer(&claim).verdict, ClaimVerdict::Holds);
+    for field in ["radius", "residual_bound", "targets", "u"] {
+        assert!(claim.get(field).is_some(), "the claim has no `{field}`");
+    }
+    let with = |f: &dyn Fn(&mut Value)| {
+        let mut c = claim.clone();
+        f(&mut c);
+        c
+    };
+    let mut altered = vec![
+        ("radius 1e-200", with(&|c| c["radius"] = json!("1e-200"))),
+        (
+            "residual bound 0",
+            with(&|c| c["residual_bound"] = json!("0")),
+        ),
+        (
+            "targets moved by π/100",
+            with(&|c| {
+                c["targets"][0] = json!("201/100");
+                c["targets"][1] = json!("199/100");
+            }),
+        ),
+    ];
+    if claim["flips"].as_array().is_some_and(|f| !f.is_empty()) {
+        altered.push((
+            "last flip dropped",
+            with(&|c| {
+                c["flips"].as_array_mut().expect("flips").pop();
+            }),
+        ));
+    }
+    for (what, c) in altered {
+        let verdict = parse_value(&c)
+            .ok()
+            .and_then(|c| certify(&c).ok())
+            .map(|a| a.verdict);
+        assert_ne!(verdict, Some(ClaimVerdict::Holds), "{what}: still holds");
+    }
+}
