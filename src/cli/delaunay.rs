@@ -147,6 +147,7 @@ fn flip_real<T: Real + 'static>(
         None => case.lengths(ctx),
     };
     let name = case.name().to_string();
+    binary64_range(case, &l, &name)?;
     let report = flip_to_delaunay(case.mesh_mut(), &mut l, kind, opts)
         .map_err(|e| CliError::Input(format!("{name}: {e}")))?;
     let l = match (Box::new(l) as Box<dyn Any>).downcast::<Vec<f64>>() {
@@ -164,6 +165,29 @@ fn flip_real<T: Real + 'static>(
         })
         .collect::<Result<_, _>>()?;
     Ok((report, FlipValues::Exact(exact)))
+}
+
+/// A positive finite input length that the binary64 exponent range of `f64` or `Dd`
+/// turns into `0` or `∞` names its real cause, not "length inf" (MPFR's range holds it).
+fn binary64_range<T: Real + 'static>(case: &FlipCase, l: &[T], name: &str) -> Result<(), CliError> {
+    let narrow = [std::any::TypeId::of::<f64>(), std::any::TypeId::of::<Dd>()];
+    if !narrow.contains(&std::any::TypeId::of::<T>()) {
+        return Ok(());
+    }
+    let Some(exact) = case.exact_lengths() else {
+        return Ok(());
+    };
+    for (i, (x, q)) in l.iter().zip(exact).enumerate() {
+        let a = x.approx_f64();
+        if *q > 0 && (a == 0.0 || a.is_infinite()) {
+            let side = if a == 0.0 { "below" } else { "beyond" };
+            return Err(CliError::Input(format!(
+                "{name}: edge e{i} has a length {side} the binary64 range of this precision; \
+                 use MPFR bits, e.g. --precision 128"
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// The flip options of every run: default, with the sequence recorded (for the replay)

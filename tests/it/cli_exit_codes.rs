@@ -111,3 +111,46 @@ fn replaying_a_check_without_a_form_at_its_precision_says_so() {
         text(&out.stdout)
     );
 }
+
+/// A regular tetrahedron with every length `side` (an exact decimal string).
+fn tetrahedron_of_side(side: &str) -> String {
+    let l = vec![format!("\"{side}\""); 6].join(", ");
+    format!(
+        r#"{{"vertices": 4, "faces": [[0, 2, 1], [0, 1, 3], [1, 2, 3], [2, 0, 3]], "lengths": [{l}]}}"#
+    )
+}
+
+#[test]
+fn delaunay_at_binary64_names_lengths_outside_its_range_and_mpfr_takes_them() {
+    let d = scratch("exit-binary64-range");
+    for (side, word) in [("1e400", "beyond"), ("1e-400", "below")] {
+        let surface = write(
+            &d,
+            &format!("tet{side}.json"),
+            tetrahedron_of_side(side).as_bytes(),
+        );
+        let s = surface.to_str().expect("path");
+        for prec in ["f64", "dd"] {
+            let out = penner(&["delaunay", s, "--precision", prec]);
+            let err = text(&out.stderr);
+            assert_eq!(out.status.code(), Some(3), "{side} at {prec}: {err}");
+            assert!(
+                err.contains(&format!("edge e0 has a length {word} the binary64 range")),
+                "{side} at {prec}: {err}"
+            );
+            assert!(!err.contains("inf"), "{err}");
+        }
+        // Control: MPFR's exponent range holds the same lengths; the tetrahedron is Delaunay.
+        let out = penner(&["delaunay", s, "--precision", "128"]);
+        assert_eq!(out.status.code(), Some(0), "{side}: {}", text(&out.stderr));
+    }
+    // Control: an ordinary length at binary64 is accepted.
+    let surface = write(&d, "tet1.json", tetrahedron_of_side("1").as_bytes());
+    let out = penner(&[
+        "delaunay",
+        surface.to_str().expect("path"),
+        "--precision",
+        "f64",
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+}
