@@ -328,4 +328,40 @@ mod terms {
         assert_eq!(within(&iv(5e-31, 2e-30), &eps), None, "straddles ε");
         assert_eq!(within(&iv(-2e-30, -5e-31), &eps), None, "straddles −ε");
     }
+
+    /// A wheel: centre `v0` at the origin, rim `v1 … vk` at `(1 + i/k)·(cos, sin)(turns·2πi/k)`
+    /// (quarter turns only, so the centres are exact), faces `(v0, vi, vi+1)`.
+    fn wheel(k: u32, turns: u32) -> (Mesh, Vec<ExactCircle>) {
+        let faces: Vec<[u32; 3]> = (1..=k).map(|i| [0, i, i % k + 1]).collect();
+        let mesh = Mesh::from_faces(k + 1, &faces).expect("a wheel");
+        let quarter = [(1, 0), (0, 1), (-1, 0), (0, -1)];
+        let mut circles = vec![ExactCircle {
+            centre: [Rational::new(), Rational::new()],
+            radius: Rational::from((1, 100)),
+        }];
+        for i in 0..k {
+            let (x, y) = quarter[((turns * 4 * i / k) % 4) as usize];
+            let s = Rational::from((k + i, k));
+            circles.push(ExactCircle {
+                centre: [Rational::from(&s * x), Rational::from(&s * y)],
+                radius: Rational::from((1, 100)),
+            });
+        }
+        (mesh, circles)
+    }
+
+    /// B95 term "the neighbours of every interior vertex wind once": a wheel whose eight
+    /// faces are all positively oriented but whose rim goes around the centre twice (a
+    /// branched configuration) is refuted at `v0` by the winding alone; the four-face
+    /// wheel that goes around once is not.
+    #[test]
+    fn term_b95_neighbours_of_an_interior_vertex_wind_once() {
+        let (mesh, circles) = wheel(8, 2);
+        let v = orientation_violations(&mesh, &circles);
+        assert_eq!(v.len(), 1, "{v:?}");
+        assert_eq!(v[0].element, "v0");
+        assert!(v[0].detail.contains("wind 2 times"), "{}", v[0].detail);
+        let (mesh, circles) = wheel(4, 1);
+        assert!(orientation_violations(&mesh, &circles).is_empty());
+    }
 }
