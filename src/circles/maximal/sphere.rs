@@ -188,3 +188,45 @@ pub fn exact_caps<T: Real>(caps: &[Cap<T>]) -> Option<Vec<ExactCap>> {
         })
         .collect()
 }
+
+/// Tests in which one condition of B96 (3) decides the verdict (proofs/B96, "Terms").
+#[cfg(test)]
+mod terms {
+    use super::*;
+
+    /// A bipyramid: north `v0`, rim `v1 … vk`, south `v(k+1)`, faces `(v0, vi, vi+1)` and
+    /// `(v(k+1), vi+1, vi)`; normals `±e_z` at the poles and, on the rim, `(1 + i/k)` times
+    /// the quarter turn `turns·4i/k` of `e_x` in the equator (exact).
+    fn bipyramid(k: u32, turns: u32) -> (Mesh, Vec<ExactCap>) {
+        let south = k + 1;
+        let mut faces: Vec<[u32; 3]> = (1..=k).map(|i| [0, i, i % k + 1]).collect();
+        faces.extend((1..=k).map(|i| [south, i % k + 1, i]));
+        let mesh = Mesh::from_faces(k + 2, &faces).expect("a bipyramid");
+        let cap = |n: [i64; 3], s: Rational| ExactCap {
+            normal: n.map(|x| Rational::from(&s * x)),
+            height: Rational::new(),
+        };
+        let quarter = [[1, 0, 0], [0, 1, 0], [-1, 0, 0], [0, -1, 0]];
+        let mut caps = vec![cap([0, 0, 1], Rational::from(1))];
+        for i in 0..k {
+            let q = quarter[((turns * 4 * i / k) % 4) as usize];
+            caps.push(cap(q, Rational::from((k + i, k))));
+        }
+        caps.push(cap([0, 0, -1], Rational::from(1)));
+        (mesh, caps)
+    }
+
+    /// B96 term "the neighbours of every vertex wind once": a bipyramid whose faces are all
+    /// positively oriented but whose rim goes around the poles twice is refuted at the poles
+    /// by the winding alone; the one whose rim goes around once is not.
+    #[test]
+    fn term_b96_neighbours_of_every_vertex_wind_once() {
+        let (mesh, caps) = bipyramid(8, 2);
+        let v = orientation_violations(&mesh, &caps);
+        let at: Vec<&str> = v.iter().map(|w| w.element.as_str()).collect();
+        assert_eq!(at, ["v0", "v9"], "{v:?}");
+        assert!(v.iter().all(|w| w.detail.contains("wind 2 times")), "{v:?}");
+        let (mesh, caps) = bipyramid(4, 1);
+        assert!(orientation_violations(&mesh, &caps).is_empty());
+    }
+}
