@@ -330,3 +330,107 @@ pub fn certify_disk_near(
     }
     last.expect("four attempts")
 }
+
+/// Inputs in which one term of B76 decides the verdict (proofs/B76, **Terms**): disks
+/// whose vertices are all link vertices (pole lengths 1, so `w = 0` exactly and the box is
+/// the metric itself), where steps 1 and 2 alone decide.
+#[cfg(test)]
+mod terms {
+    use super::*;
+
+    const BITS: u32 = 128;
+
+    /// The disk `[[0, 1, 3], [1, 2, 3]]` (interior edge 1–3) with the binary64 lengths of
+    /// the planar points `p`, every vertex a link vertex.
+    fn quad(p: [[f64; 2]; 4]) -> DiskCertificateData {
+        quad_with(p, [[0, 1, 3], [1, 2, 3]])
+    }
+
+    fn quad_with(p: [[f64; 2]; 4], faces: [[u32; 3]; 2]) -> DiskCertificateData {
+        let disk = Mesh::from_faces(4, &faces).expect("a disk of two triangles");
+        let lengths = disk
+            .edges()
+            .map(|e| {
+                let h = e.halfedge();
+                let [a, b] = [disk.tail(h), disk.tip(h)].map(|v| p[v.idx()]);
+                (a[0] - b[0]).hypot(a[1] - b[1])
+            })
+            .collect();
+        DiskCertificateData {
+            disk,
+            lengths,
+            pole_length: vec![Some(1.0); 4],
+            over_pi: vec![Rational::from(2); 4],
+            flip_sequence: Vec::new(),
+            u: vec![Rational::new(); 4],
+            radius: Rational::from(1),
+        }
+    }
+
+    fn reason(outcome: CertificateOutcome) -> String {
+        match outcome {
+            CertificateOutcome::Undecided { reason } => reason,
+            other @ CertificateOutcome::Holds { .. } => panic!("expected undecided, got {other:?}"),
+        }
+    }
+
+    /// B76 step 2, `π − θ_a ≥ 0` at link vertices: a dart whose vertex 1 is reflex
+    /// (`θ_1 = 2·(π/2 + atan 0.2) ≈ 1.13π`, closed form) while its interior edge is Delaunay
+    /// (opposite angles `2·(π/4 − atan 0.2) < π`) and both faces strict. Without step 2
+    /// the disk would certify a non-convex polygon, i.e. a non-convex polyhedron (B74).
+    /// Control: vertex 1 mirrored to the convex side holds.
+    #[test]
+    fn term_b76_link_angles_at_most_pi_decide() {
+        let dart = quad([[-1.0, 0.0], [0.0, 0.2], [1.0, 0.0], [0.0, 1.0]]);
+        let why = reason(check_disk_certificate(&dart, BITS));
+        assert!(why.contains("link vertex 1"), "{why}");
+        let convex = quad([[-1.0, 0.0], [0.0, -0.2], [1.0, 0.0], [0.0, 1.0]]);
+        let outcome = check_disk_certificate(&convex, BITS);
+        assert!(
+            matches!(outcome, CertificateOutcome::Holds { distance, .. } if distance == 0.0),
+            "{outcome:?}"
+        );
+    }
+
+    /// B76 step 1, every interior edge Delaunay (`P ≥ 0`, B60): a kite `(±0.3, 0)`,
+    /// `(0, ±1)` split by its long diagonal 1–3, whose opposite angles are each
+    /// `2·atan(1/0.3) > π/2` (closed form), so the edge is not Delaunay; every link angle
+    /// is below π. The same kite split by its short diagonal 0–2 holds.
+    #[test]
+    fn term_b76_interior_edges_delaunay_decide() {
+        let kite = [[-0.3, 0.0], [0.0, -1.0], [0.3, 0.0], [0.0, 1.0]];
+        let why = reason(check_disk_certificate(&quad(kite), BITS));
+        assert!(why.contains("not certified Delaunay"), "{why}");
+        let short = quad_with(kite, [[0, 1, 2], [0, 2, 3]]);
+        let outcome = check_disk_certificate(&short, BITS);
+        assert!(
+            matches!(outcome, CertificateOutcome::Holds { .. }),
+            "{outcome:?}"
+        );
+    }
+
+    /// B76 step 1, every face a strict triangle on the box: lengths `1, 1, 2` (a flat
+    /// triangle, `y + z − x = 0` exactly) are refused by step 1, which names the face.
+    /// Control: `1, 1, 1.5` holds.
+    #[test]
+    fn term_b76_faces_strict_on_the_box() {
+        let mut flat = quad([[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [1.0, 1.0]]);
+        flat.disk = Mesh::from_faces(3, &[[0, 1, 2]]).expect("one triangle");
+        flat.lengths = vec![1.0, 1.0, 2.0];
+        flat.pole_length.truncate(3);
+        flat.over_pi.truncate(3);
+        flat.u.truncate(3);
+        let why = reason(check_disk_certificate(&flat, BITS));
+        assert!(
+            why.contains("face f0 not certified a strict triangle"),
+            "{why}"
+        );
+        let mut strict = flat;
+        strict.lengths = vec![1.0, 1.0, 1.5];
+        let outcome = check_disk_certificate(&strict, BITS);
+        assert!(
+            matches!(outcome, CertificateOutcome::Holds { .. }),
+            "{outcome:?}"
+        );
+    }
+}

@@ -469,3 +469,184 @@ fn tanh<T: Real>(x: &T) -> T {
     let e = (x.clone() * &x.lit(-2.0)).exp();
     (x.one_like() - &e) / &(x.one_like() + &e)
 }
+
+/// Inputs in which one term of B39 (and B87's Delaunay condition) decides the verdict
+/// (proofs/B39, **Terms**). The subject is the tetrahedron with hyperbolic edge lengths:
+/// with all six equal to `ℓ` its Hessian has closed-form entries (`cos α = cosh ℓ/(cosh ℓ +
+/// 1)`, `w = ½ cot((π − α)/2)`, `t² = tanh²(ℓ/2)`), so the Gershgorin bound is
+/// `μ = 12·w·t²` and the diagonal alone would be `6·w·(1 + t²)`, independent of the code.
+#[cfg(test)]
+mod terms {
+    use super::*;
+    use crate::mesh::builders;
+    use crate::mesh::Edge;
+
+    const BITS: u64 = 128;
+
+    fn prec() -> Precision {
+        Precision::new(BITS).expect("precision")
+    }
+
+    /// The tetrahedron with edge 0 of hyperbolic length `long` and the others `1`, its
+    /// enclosed base logarithmic lengths.
+    fn tetrahedron(long: f64) -> (Mesh, Vec<I>) {
+        let mesh = builders::tetrahedron().mesh;
+        let lengths: Vec<f64> = (0..mesh.n_edges())
+            .map(|e| if e == 0 { long } else { 1.0 })
+            .collect();
+        let base = base_log_i(&lengths_i(&lengths, prec()));
+        (mesh, base)
+    }
+
+    /// `(μ, diagonal)` in closed form for six edges of length 1.
+    fn closed_form() -> (f64, f64) {
+        let (c, t) = (1f64.cosh(), 0.5f64.tanh());
+        let alpha = (c / (c + 1.0)).acos();
+        let w = 0.5 / ((std::f64::consts::PI - alpha) / 2.0).tan();
+        (12.0 * w * t * t, 6.0 * w * (1.0 + t * t))
+    }
+
+    fn r() -> Rational {
+        Rational::from(1) >> 30u32
+    }
+
+    fn zeros() -> Vec<Rational> {
+        vec![Rational::new(); 4]
+    }
+
+    /// B39 term "each row's lower end minus the upper ends of `|H_ij|`" (Gershgorin): a
+    /// residual whose distance `γ/μ` exceeds the radius while `γ/diag` would not. The
+    /// control halves the residual and reports `μ` within `10⁻⁶` of the closed form (the
+    /// box of radius `2⁻³⁰` moves it by `O(2⁻³⁰)`).
+    #[test]
+    fn term_b39_gershgorin_subtracts_the_off_diagonal() {
+        let (mesh, base) = tetrahedron(1.0);
+        let (mu, diagonal) = closed_form();
+        assert!(
+            diagonal > 2.0 * mu,
+            "the test needs a wide gap: {mu} {diagonal}"
+        );
+        let rf = r().to_f64();
+        let between = rf * (mu + diagonal) / 2.0;
+        let outcome = existence_on_box(&mesh, &base, &zeros(), &r(), between, prec());
+        assert!(
+            matches!(&outcome, Existence::Undecided { reason } if reason.contains("exceeds")),
+            "{outcome:?}"
+        );
+        let below = rf * mu / 2.0;
+        let outcome = existence_on_box(&mesh, &base, &zeros(), &r(), below, prec());
+        let Existence::Holds { mu: got, .. } = outcome else {
+            panic!("{outcome:?}")
+        };
+        assert!(
+            (got - mu).abs() <= 1e-6 * mu && got <= mu * (1.0 + 1e-12),
+            "{got} {mu}"
+        );
+    }
+
+    /// B39 term "`γ/μ` rounded up": a radius `r` near `2⁻³⁰` and a residual `γ` with `γ/μ`
+    /// (exact, in ℚ) just above `r` but nearer to `r` than to the next binary64 number.
+    /// Rounded up, the distance exceeds `r`; rounded to nearest it would equal `r` and hold.
+    /// (`r` is searched: for a power of two no binary64 `γ` lands in that half ulp.)
+    #[test]
+    fn term_b39_distance_rounded_up() {
+        let (mesh, base) = tetrahedron(1.0);
+        let subject = (1..400u32).find_map(|k| {
+            let radius = Rational::from(2u64.pow(30) + 2 * u64::from(k) + 1) >> 60u32;
+            let Existence::Holds { mu, .. } =
+                existence_on_box(&mesh, &base, &zeros(), &radius, 0.0, prec())
+            else {
+                return None;
+            };
+            let mu_q = Rational::from_f64(mu)?;
+            let start = rug::Float::with_val(53, &radius * mu_q.clone()).to_f64();
+            let mut g = start;
+            for _ in 0..4 {
+                let ratio = Rational::from_f64(g)? / &mu_q;
+                // `Rational::to_f64` truncates; the nearest binary64 number is MPFR's.
+                let nearest = Rational::from_f64(rug::Float::with_val(53, &ratio).to_f64())?;
+                if ratio > radius && nearest == radius {
+                    return Some((radius, g));
+                }
+                g = f64::from_bits(g.to_bits() + 1);
+            }
+            None
+        });
+        let (radius, gamma) = subject.expect("a residual whose ratio rounds to nearest onto r");
+        let outcome = existence_on_box(&mesh, &base, &zeros(), &radius, gamma, prec());
+        assert!(
+            matches!(&outcome, Existence::Undecided { reason } if reason.contains("exceeds")),
+            "{outcome:?}"
+        );
+    }
+
+    /// B39 term "`γ` the upper end of `‖g‖₂`": enclosures whose ends differ in magnitude
+    /// by `10³` (upper bound from the larger, lower bound from `min |g_i|`, 0 across 0), and
+    /// outward rounding of one third.
+    #[test]
+    fn term_b39_residual_norm_bounds_from_the_right_ends() {
+        let p = prec();
+        let g = |lo: f64, hi: f64| I::new(Mpfr::from_f64(lo, p), Mpfr::from_f64(hi, p));
+        let (lo, hi) = norm2_bounds(&[g(1e-6, 1e-3)], p);
+        assert!(hi >= 1e-3 && lo <= 1e-6 && lo > 0.0, "{lo} {hi}");
+        let (lo, hi) = norm2_bounds(&[g(-1e-3, -1e-6)], p);
+        assert!(hi >= 1e-3 && lo <= 1e-6 && lo > 0.0, "{lo} {hi}");
+        let (lo, hi) = norm2_bounds(&[g(-1e-3, 1e-6)], p);
+        assert!(hi >= 1e-3 && lo == 0.0, "{lo} {hi}");
+        let third = I::from_rational(&Rational::from((1, 3)), Precision::new(200).unwrap());
+        let q = Rational::from((1, 3));
+        assert!(Rational::from_f64(abs_up(&third)).unwrap() > q);
+        assert!(Rational::from_f64(mig_down(&third)).unwrap() < q);
+        assert!(Rational::from_f64(to_f64_down(third.lo())).unwrap() < q);
+    }
+
+    /// B87/B89 term "`T_k` hyperbolic Delaunay on the box": a tetrahedron whose long edge
+    /// has a negative Leibon sum (binary64, an independent evaluation) while Gershgorin
+    /// still certifies the fixed-triangulation solution. Without the Delaunay check the
+    /// claim would be the metric of Thm 11 with flips, which it is not. Control: all edges
+    /// of length 1 hold.
+    #[test]
+    fn term_b87_final_triangulation_delaunay_on_the_box() {
+        let subject = (100..199).map(|k| f64::from(k) / 100.0).find_map(|long| {
+            let (mesh, base) = tetrahedron(long);
+            let x: Vec<f64> = base.iter().map(Real::approx_f64).collect();
+            let sum = leibon_sum_f64(&mesh, Edge(0), &x)?;
+            let fixed = existence_on_box(&mesh, &base, &zeros(), &r(), 0.0, prec());
+            (sum < -1e-3 && matches!(fixed, Existence::Holds { .. })).then_some((mesh, base))
+        });
+        let (mesh, base) = subject.expect("a non-Delaunay tetrahedron that Gershgorin certifies");
+        let outcome = existence_with_flips(&mesh, &base, &zeros(), &r(), 0.0, prec());
+        assert!(
+            matches!(&outcome, Existence::Undecided { reason } if reason.contains("Delaunay")),
+            "{outcome:?}"
+        );
+        let (mesh, base) = tetrahedron(1.0);
+        let outcome = existence_with_flips(&mesh, &base, &zeros(), &r(), 0.0, prec());
+        assert!(matches!(outcome, Existence::Holds { .. }), "{outcome:?}");
+    }
+
+    /// B39 (1), every face strict on the box: a long edge `1.999` beside two edges `1`
+    /// on a box of radius `10⁻²` (the lengths move by about 1 %, past the degenerate
+    /// `1 + 1`): refused naming the face. With step (1) removed the box is still refused,
+    /// by the enclosures of (2) that are not valid.
+    #[test]
+    fn term_b39_faces_strict_on_the_box() {
+        let (mesh, base) = tetrahedron(1.999);
+        let radius = Rational::from((1, 100));
+        let outcome = existence_on_box(&mesh, &base, &zeros(), &radius, 0.0, prec());
+        assert!(
+            matches!(&outcome, Existence::Undecided { reason } if reason.contains("strict triangle")),
+            "{outcome:?}"
+        );
+        let small = Rational::from(1) >> 40u32;
+        let outcome = existence_on_box(&mesh, &base, &zeros(), &small, 0.0, prec());
+        assert!(
+            !matches!(&outcome, Existence::Undecided { reason } if reason.contains("strict")),
+            "{outcome:?}"
+        );
+    }
+
+    fn leibon_sum_f64(mesh: &Mesh, e: Edge, x: &[f64]) -> Option<f64> {
+        super::super::hyperbolic_flips::leibon_sum(mesh, e, &|f: Edge| x[f.idx()]).ok()
+    }
+}
