@@ -355,3 +355,48 @@ fn root(p: &mut [usize], mut x: usize) -> usize {
 /// The reason given for a face not certified a strict triangle.
 const NOT_STRICT: &str = "not certified a strict triangle: the metric is not proven interior \
                           to the cone where the area is smooth (B102)";
+
+/// Matrices in which one term of B102's inequality `λ_min(H_mid) − ‖H_rad‖_∞ > 0` decides
+/// the verdict (proofs/B102, **Terms**): `[[1, ½], [½, 1]]`, eigenvalues `½` and `3/2`
+/// (closed form), with enclosures widened symmetrically so that the midpoint is unchanged.
+#[cfg(test)]
+mod terms {
+    use super::*;
+
+    /// `[[1, ½], [½, 1]]` with the diagonal entries widened by `d0`, `d1` and the
+    /// off-diagonal one by `off` on both sides.
+    fn widened(d0: f64, d1: f64, off: f64) -> IntervalLower {
+        IntervalLower {
+            n: 2,
+            entries: vec![
+                (0, 0, 1.0 - d0, 1.0 + d0),
+                (1, 0, 0.5 - off, 0.5 + off),
+                (1, 1, 1.0 - d1, 1.0 + d1),
+            ],
+        }
+    }
+
+    /// B102 term `− ‖H_rad‖_∞`: a radius of `0.625` in every row exceeds `λ_min = ½` of
+    /// the unchanged midpoint, which alone would be certified; `0.125` is certified with
+    /// a bound in `(0.125, ½]`.
+    #[test]
+    fn term_b102_radius_of_the_enclosure_is_subtracted() {
+        let err = certify_positive_definite(&widened(0.625, 0.625, 0.0)).unwrap_err();
+        assert!(err.contains("radius"), "{err}");
+        let (bound, radius) = certify_positive_definite(&widened(0.125, 0.125, 0.0)).unwrap();
+        assert!(
+            radius >= 0.125 && bound > radius && bound <= 0.5,
+            "{bound} {radius}"
+        );
+    }
+
+    /// B102 term "an off-diagonal radius counts in both rows": the verified bound is at
+    /// most `½·λ̂ ≈ ¼` (the largest shift of B70), so an off-diagonal radius `0.2` and a
+    /// diagonal radius `0.1` in row 0 make `‖H_rad‖_∞ = 0.3 > ¼`; counted in row 1 only, the
+    /// largest row would be `0.2 < ¼` and certify. Half of each is certified.
+    #[test]
+    fn term_b102_off_diagonal_radius_counts_in_both_rows() {
+        assert!(certify_positive_definite(&widened(0.1, 0.0, 0.2)).is_err());
+        assert!(certify_positive_definite(&widened(0.05, 0.0, 0.1)).is_ok());
+    }
+}
