@@ -328,3 +328,50 @@ fn b98_malformed_circle_claims_are_bad_input_naming_the_field() {
         assert!(!err.contains("panicked"), "{name}: {err}");
     }
 }
+
+/// Every field of a `circle_pattern` claim is used by the re-check: the claim that holds
+/// (law-of-cosines angles computed here at 400 bits) is never `holds` with one radius
+/// `10⁻²⁰` larger, one intersection angle changed, one angle shifted by `10⁻³⁰`, or
+/// `ε = 0` (the angles are truncated decimals of irrational values).
+#[test]
+fn b98_circle_pattern_claim_fields_radii_phi_angles_epsilon_are_each_used() {
+    let mesh = icosahedron().mesh;
+    let r: Vec<Rational> = (0..mesh.n_vertices())
+        .map(|v| Rational::from((v as u64 * 7 % 5 + 1, 3)))
+        .collect();
+    let choices = [(0, 1), (1, 12), (1, 3), (2, 5), (1, 2)];
+    let phi: Vec<Rational> = (0..mesh.n_edges())
+        .map(|e| Rational::from(choices[(e * 3) % 5]))
+        .collect();
+    let angles = cosine_law_angles(&mesh, &r, &phi);
+    let claim = pattern_claim(&mesh, &r, &phi, &angles, "1e-40");
+    assert_eq!(verdict(&claim).0, ClaimVerdict::Holds);
+    let mut radius = r.clone();
+    radius[0] += Rational::from((1, 10u128.pow(20)));
+    let mut angle = phi.clone();
+    angle[0] = if angle[0] == Rational::from((1, 12)) {
+        Rational::from((1, 3))
+    } else {
+        Rational::from((1, 12))
+    };
+    let mut shifted = angles.clone();
+    shifted[2] += Float::with_val(400, 1e-30);
+    let altered = [
+        (
+            "one radius 1e-20 larger",
+            pattern_claim(&mesh, &radius, &phi, &angles, "1e-40"),
+        ),
+        (
+            "one Φ changed",
+            pattern_claim(&mesh, &r, &angle, &angles, "1e-40"),
+        ),
+        (
+            "one angle shifted",
+            pattern_claim(&mesh, &r, &phi, &shifted, "1e-40"),
+        ),
+        ("ε = 0", pattern_claim(&mesh, &r, &phi, &angles, "0")),
+    ];
+    for (what, c) in altered {
+        assert_ne!(verdict(&c).0, ClaimVerdict::Holds, "{what}");
+    }
+}

@@ -101,3 +101,38 @@ fn t32_certify_energy_refuses_malformed_claims() {
         assert!(err.contains(mention), "{name}: {err}");
     }
 }
+
+/// Every field of an `energy` claim is used by the re-check: the closed-form claim that
+/// holds is never `holds` with `u` moved at one vertex (energy and gradient kept), targets
+/// of 3 (gradient kept), the energy or one gradient entry off by `10⁻²²`, or `ε = 0`.
+#[test]
+fn t32_energy_claim_fields_u_targets_energy_gradient_epsilon_are_each_used() {
+    use penner::oracle::certify::{certify, ClaimVerdict};
+    use penner::oracle::claim::parse_value;
+    let verdict = |c: &Value| certify(&parse_value(c).unwrap()).unwrap().verdict;
+    let base = claim(E_TETRA, [PI; 4], "1e-30");
+    assert_eq!(verdict(&base), ClaimVerdict::Holds);
+    let with = |f: &dyn Fn(&mut Value)| {
+        let mut c = base.clone();
+        f(&mut c);
+        c
+    };
+    let off = "8.11953285127722900016972043419616228753351446024239832";
+    let g_off = "3.14159265358979323846274338327950288419716939937510582097494459";
+    let altered = [
+        ("u moved at v0", with(&|c| c["u"][0] = json!("1/1000"))),
+        (
+            "targets 3",
+            with(&|c| c["targets"] = json!(["3", "3", "3", "3"])),
+        ),
+        ("energy 1e-22 off", with(&|c| c["energy"] = json!(off))),
+        (
+            "gradient 1e-20 off",
+            with(&|c| c["gradient"][1] = json!(g_off)),
+        ),
+        ("ε = 0", with(&|c| c["epsilon"] = json!("0"))),
+    ];
+    for (what, c) in altered {
+        assert_ne!(verdict(&c), ClaimVerdict::Holds, "{what}");
+    }
+}
