@@ -399,4 +399,24 @@ mod terms {
         assert!(certify_positive_definite(&widened(0.1, 0.0, 0.2)).is_err());
         assert!(certify_positive_definite(&widened(0.05, 0.0, 0.1)).is_ok());
     }
+
+    /// B102: a matrix that is not a finite lower-triangular enclosure is refused, never
+    /// certified (an entry above the diagonal, out of range, `lo > hi`, NaN, infinite).
+    #[test]
+    fn term_b102_malformed_enclosures_are_refused() {
+        let good = widened(0.0, 0.0, 0.0);
+        assert!(certify_positive_definite(&good).is_ok());
+        for (k, bad) in [
+            (1, (0, 1, 0.5, 0.5)),
+            (1, (2, 0, 0.5, 0.5)),
+            (0, (0, 0, 1.5, 0.5)),
+            (0, (0, 0, f64::NAN, 1.0)),
+            (0, (0, 0, 1.0, f64::INFINITY)),
+            (0, (0, 0, f64::NEG_INFINITY, 1.0)),
+        ] {
+            let mut m = good.clone();
+            m.entries[k] = bad;
+            assert!(certify_positive_definite(&m).is_err(), "{bad:?}");
+        }
+    }
 }

@@ -374,4 +374,15 @@ mod terms {
             "no product had its nearest on the wrong side"
         );
     }
+
+    /// B36 `None` when a bound leaves binary64: `e^{720}` overflows while `e^{−720}` is a
+    /// positive subnormal; a centre length `10³⁰⁸` times `e` overflows.
+    #[test]
+    fn term_b36_bounds_outside_binary64_are_refused() {
+        assert!(exp_pm_radius(&Rational::from(720)).is_none());
+        assert!(exp_pm_radius(&Rational::from(700)).is_some());
+        let p = Precision::new(64).expect("precision");
+        assert!(box_lengths(&[I::from_f64(1e308, p)], &Rational::from(1)).is_none());
+        assert!(box_lengths(&[I::from_f64(1e300, p)], &Rational::from(1)).is_some());
+    }
 }

@@ -646,6 +646,74 @@ mod terms {
         );
     }
 
+    /// B39 (2), the interval Hessian's Gershgorin bound on a box of radius `2⁻⁵⁰` agrees
+    /// within `10⁻¹⁰` (relative; the box moves it by `O(2⁻⁵⁰)`, binary64 by a few ulps) with the binary64 Gershgorin bound of the solver's own
+    /// assembly (an independent evaluation) on uneven tetrahedra (one edge of length 1.6,
+    /// at each of the six positions, so that the smallest row is each vertex in turn) and
+    /// on the one-vertex torus (loops: the diagonal term `4·w·t²` of an edge from a vertex
+    /// to itself), and never exceeds it by more than that.
+    #[test]
+    fn term_b39_gershgorin_rows_match_the_binary64_assembly() {
+        let mut cases: Vec<(Mesh, Vec<f64>)> = (0..6)
+            .map(|e| {
+                let mesh = builders::tetrahedron().mesh;
+                let l = (0..6).map(|k| if k == e { 1.6 } else { 1.0 }).collect();
+                (mesh, l)
+            })
+            .collect();
+        cases.push((builders::one_vertex_torus(), vec![1.0, 1.2, 1.4]));
+        for (mesh, lengths) in cases {
+            let base = base_log_i(&lengths_i(&lengths, prec()));
+            let x: Vec<f64> = base.iter().map(Real::approx_f64).collect();
+            let zero = vec![0.0; mesh.n_vertices()];
+            let estimate =
+                super::super::hyperbolic::gershgorin_estimate_log(&mesh, &x, &zero).unwrap();
+            let u = vec![Rational::new(); mesh.n_vertices()];
+            let tiny = Rational::from(1) >> 50u32;
+            let outcome = existence_on_box(&mesh, &base, &u, &tiny, 0.0, prec());
+            let mu = match outcome {
+                Existence::Holds { mu, .. } => mu,
+                Existence::Undecided { reason } => {
+                    assert!(
+                        estimate <= 0.0,
+                        "{lengths:?}: {reason}, estimate {estimate}"
+                    );
+                    continue;
+                }
+            };
+            assert!(
+                (mu - estimate).abs() <= 1e-10 * estimate.abs(),
+                "{lengths:?}: μ = {mu}, binary64 {estimate}"
+            );
+        }
+    }
+
+    /// B39 (2), `μ > 0` required: a nearly degenerate tetrahedron (one edge close to the
+    /// sum `1 + 1`, strict on the box) whose Gershgorin bound is negative is refused for
+    /// that reason; without the test a negative `μ` would make `γ/μ ≤ r` hold.
+    #[test]
+    fn term_b39_gershgorin_bound_must_be_positive() {
+        let refused = (90..100).map(|k| 1.0 + f64::from(k) / 100.0).any(|long| {
+            let (mesh, base) = tetrahedron(long);
+            let outcome = existence_on_box(&mesh, &base, &zeros(), &r(), 1e-3, prec());
+            matches!(&outcome, Existence::Undecided { reason } if reason.contains("Gershgorin bound of the Hessian on the box not positive"))
+        });
+        assert!(refused, "no tetrahedron with a negative Gershgorin bound");
+    }
+
+    /// B39 (3), `γ` from squares: enclosures of magnitude 3 (where `2b` and `b/b` would be
+    /// smaller than `b²`) give an upper bound `≥ √18` and a lower bound `≤ √18`.
+    #[test]
+    fn term_b39_residual_norm_squares_large_entries() {
+        let p = prec();
+        let three = I::from_f64(3.0, p);
+        let (lo, hi) = norm2_bounds(&[three.clone(), three], p);
+        assert!(
+            hi >= 18f64.sqrt() && lo <= 18f64.sqrt() && lo >= 4.0,
+            "{lo} {hi}"
+        );
+    }
+
     fn leibon_sum_f64(mesh: &Mesh, e: Edge, x: &[f64]) -> Option<f64> {
         super::super::hyperbolic_flips::leibon_sum(mesh, e, &|f: Edge| x[f.idx()]).ok()
     }
