@@ -169,25 +169,50 @@ fn flip_real<T: Real + 'static>(
 
 /// A positive finite input length that the binary64 exponent range of `f64` or `Dd`
 /// turns into `0` or `∞` names its real cause, not "length inf" (MPFR's range holds it).
+/// Exact lengths decide directly; otherwise (positions, squared lengths) the length of
+/// the first such edge is recomputed at 128 MPFR bits, whose exponent range holds every
+/// length of finite decimal positions (the message only; the run is refused either way).
 fn binary64_range<T: Real + 'static>(case: &FlipCase, l: &[T], name: &str) -> Result<(), CliError> {
     let narrow = [std::any::TypeId::of::<f64>(), std::any::TypeId::of::<Dd>()];
     if !narrow.contains(&std::any::TypeId::of::<T>()) {
         return Ok(());
     }
-    let Some(exact) = case.exact_lengths() else {
+    let Some((i, a)) = l
+        .iter()
+        .map(Real::approx_f64)
+        .enumerate()
+        .find(|(_, a)| *a == 0.0 || a.is_infinite())
+    else {
         return Ok(());
     };
-    for (i, (x, q)) in l.iter().zip(exact).enumerate() {
-        let a = x.approx_f64();
-        if *q > 0 && (a == 0.0 || a.is_infinite()) {
-            let side = if a == 0.0 { "below" } else { "beyond" };
-            return Err(CliError::Input(format!(
-                "{name}: edge e{i} has a length {side} the binary64 range of this precision; \
-                 use MPFR bits, e.g. --precision 128"
-            )));
-        }
+    // (positive, the length itself in binary64's range)
+    let (positive, representable) = match case.exact_lengths() {
+        Some(exact) => (exact[i] > 0, false),
+        None => penner::scalar::Precision::new(128)
+            .ok()
+            .and_then(|p| case.lengths::<Mpfr>(p).get(i).cloned())
+            .map_or((false, false), |m| {
+                let f = m.as_float();
+                let x = m.approx_f64();
+                (
+                    f.is_finite() && f.is_sign_positive() && !f.is_zero(),
+                    x > 0.0 && x.is_finite(),
+                )
+            }),
+    };
+    if !positive {
+        return Ok(());
     }
-    Ok(())
+    let side = if a == 0.0 { "below" } else { "beyond" };
+    let cause = if representable {
+        let way = if a == 0.0 { "underflows" } else { "overflows" };
+        format!("edge e{i}'s squared length {way} binary64 when computed from its positions")
+    } else {
+        format!("edge e{i} has a length {side} the binary64 range")
+    };
+    Err(CliError::Input(format!(
+        "{name}: {cause} of this precision; use MPFR bits, e.g. --precision 128"
+    )))
 }
 
 /// The flip options of every run: default, with the sequence recorded (for the replay)

@@ -144,6 +144,44 @@ fn delaunay_at_binary64_names_lengths_outside_its_range_and_mpfr_takes_them() {
         let out = penner(&["delaunay", s, "--precision", "128"]);
         assert_eq!(out.status.code(), Some(0), "{side}: {}", text(&out.stderr));
     }
+    // Positions (OBJ): coordinates 1e200 and 1e-200 give lengths inside binary64 whose
+    // squares leave it; 1e400 gives lengths beyond it. MPFR takes all three.
+    for (scale, word) in [
+        (
+            "1e200",
+            "squared length overflows binary64 when computed from its positions",
+        ),
+        (
+            "1e-200",
+            "squared length underflows binary64 when computed from its positions",
+        ),
+        ("1e400", "has a length beyond the binary64 range"),
+    ] {
+        let obj = format!(
+            "v 0 0 0\nv {scale} 0 0\nv 0 {scale} 0\nv 0 0 {scale}\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n"
+        );
+        let surface = write(&d, &format!("tet{scale}.obj"), obj.as_bytes());
+        let s = surface.to_str().expect("path");
+        let out = penner(&["delaunay", s, "--precision", "f64"]);
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(3), "{scale}: {err}");
+        assert!(
+            err.contains(&format!(
+                "edge e0{}",
+                if word.starts_with("has") { " " } else { "'s " }
+            )) && err.contains(word),
+            "{scale}: {err}"
+        );
+        let out = penner(&[
+            "delaunay",
+            s,
+            "--precision",
+            "128",
+            "-o",
+            &format!("{s}.out.json"),
+        ]);
+        assert_eq!(out.status.code(), Some(0), "{scale}: {}", text(&out.stderr));
+    }
     // Control: an ordinary length at binary64 is accepted.
     let surface = write(&d, "tet1.json", tetrahedron_of_side("1").as_bytes());
     let out = penner(&[
