@@ -12,7 +12,7 @@ use penner::circles::maximal::stopping::bits_for;
 use penner::circles::maximal::svg::{render_disk_svg, render_sphere_svg};
 use penner::circles::maximal::tangency::{check_packing, exact_circles, PackingVerdict};
 use penner::circles::maximal::{
-    maximal_disk, maximal_disk_within, maximal_sphere, DiskPacking, Options as Opts,
+    maximal_disk, maximal_disk_within, maximal_sphere, DiskPacking, MaximalError, Options as Opts,
 };
 use penner::scalar::{parse_rational, Mpfr, Precision, Real};
 use rug::Rational;
@@ -91,7 +91,21 @@ fn compute(
     eps_f64: Option<f64>,
     shown: &str,
 ) -> Result<Computed, CliError> {
-    let bad = |e: &penner::circles::maximal::MaximalError| CliError::Input(format!("{shown}: {e}"));
+    let bad = |e: &MaximalError| match e {
+        // Valid input that this computation does not reach: not computed (exit 2).
+        MaximalError::NoInteriorVertex => {
+            let hint = if o.sphere {
+                " (the sphere needs a vertex outside the star of the puncture)"
+            } else {
+                ""
+            };
+            CliError::NotConverged(format!("{shown}: not computed: {e}{hint}"))
+        }
+        MaximalError::Solve(_) | MaximalError::Layout(_) => {
+            CliError::NotConverged(format!("{shown}: not computed: {e}"))
+        }
+        _ => CliError::Input(format!("{shown}: {e}")),
+    };
     let mut bits = match eps_f64 {
         Some(e) if o.bits > 53 => asked_bits.max(bits_for(e, mesh.n_vertices())),
         _ => asked_bits,

@@ -192,3 +192,28 @@ fn delaunay_at_binary64_names_lengths_outside_its_range_and_mpfr_takes_them() {
     ]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
 }
+
+/// A maximal packing penner does not reach on valid input is not computed (exit 2), never
+/// bad input: the tetrahedron punctured at a vertex leaves one triangle without interior
+/// vertex, as does a square of two triangles for `--disk`. Control: the octahedron packs.
+#[test]
+fn pack_without_an_interior_vertex_is_not_computed_not_bad_input() {
+    let d = scratch("exit-pack-no-interior");
+    let tet = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    let square = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
+    let octa = "v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\n\
+                f 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n";
+    for (name, text_of, mode, expected) in [
+        ("tet.obj", tet, "--sphere", 2),
+        ("square.obj", square, "--disk", 2),
+        ("octa.obj", octa, "--sphere", 0),
+    ] {
+        let p = write(&d, name, text_of.as_bytes());
+        let out = penner(&["pack", p.to_str().expect("path"), mode]);
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(expected), "{name}: {err}");
+        if expected == 2 {
+            assert!(err.contains("not computed: no interior vertex"), "{name}: {err}");
+        }
+    }
+}
