@@ -206,7 +206,7 @@ fn binary64_range<T: Real + 'static>(case: &FlipCase, l: &[T], name: &str) -> Re
     let side = if a == 0.0 { "below" } else { "beyond" };
     let cause = if representable {
         let way = if a == 0.0 { "underflows" } else { "overflows" };
-        format!("edge e{i}'s squared length {way} binary64 when computed from its positions")
+        format!("edge e{i}'s squared length {way} binary64")
     } else {
         format!("edge e{i} has a length {side} the binary64 range")
     };

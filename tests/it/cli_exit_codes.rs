@@ -147,14 +147,8 @@ fn delaunay_at_binary64_names_lengths_outside_its_range_and_mpfr_takes_them() {
     // Positions (OBJ): coordinates 1e200 and 1e-200 give lengths inside binary64 whose
     // squares leave it; 1e400 gives lengths beyond it. MPFR takes all three.
     for (scale, word) in [
-        (
-            "1e200",
-            "squared length overflows binary64 when computed from its positions",
-        ),
-        (
-            "1e-200",
-            "squared length underflows binary64 when computed from its positions",
-        ),
+        ("1e200", "squared length overflows binary64"),
+        ("1e-200", "squared length underflows binary64"),
         ("1e400", "has a length beyond the binary64 range"),
     ] {
         let obj = format!(
@@ -213,7 +207,10 @@ fn pack_without_an_interior_vertex_is_not_computed_not_bad_input() {
         let err = text(&out.stderr);
         assert_eq!(out.status.code(), Some(expected), "{name}: {err}");
         if expected == 2 {
-            assert!(err.contains("not computed: no interior vertex"), "{name}: {err}");
+            assert!(
+                err.contains("not computed: no interior vertex"),
+                "{name}: {err}"
+            );
         }
     }
 }
