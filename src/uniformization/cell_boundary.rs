@@ -383,3 +383,36 @@ fn corner_sums<'a>(m: &Mesh, e: Edge, len: &dyn Fn(Edge) -> &'a I) -> Vec<(usize
     }
     out
 }
+
+/// B35's hull (proofs/B35, **Terms**): the block of a `U`-edge must hold the values of both
+/// configurations, whichever has the lower or the upper end.
+#[cfg(test)]
+mod terms {
+    use super::{hull, I};
+    use crate::scalar::{Mpfr, Precision, Real};
+
+    fn iv(lo: f64, hi: f64) -> I {
+        let p = Precision::new(64).expect("precision");
+        I::new(Mpfr::from_f64(lo, p), Mpfr::from_f64(hi, p))
+    }
+
+    fn ends(x: &I) -> (f64, f64) {
+        (x.lo().as_float().to_f64(), x.hi().as_float().to_f64())
+    }
+
+    /// B35 term "the entrywise hull of the two configurations": disjoint, overlapping and
+    /// nested pairs, in both orders, give the smallest interval holding both.
+    #[test]
+    fn term_b35_hull_holds_both_configurations() {
+        for (a, b, want) in [
+            ((0.0, 1.0), (2.0, 3.0), (0.0, 3.0)),
+            ((0.0, 2.0), (1.0, 3.0), (0.0, 3.0)),
+            ((0.0, 3.0), (1.0, 2.0), (0.0, 3.0)),
+            ((-1.0, -0.5), (-2.0, 4.0), (-2.0, 4.0)),
+        ] {
+            let (x, y) = (iv(a.0, a.1), iv(b.0, b.1));
+            assert_eq!(ends(&hull(&x, &y)), want, "{a:?} ∪ {b:?}");
+            assert_eq!(ends(&hull(&y, &x)), want, "{b:?} ∪ {a:?}");
+        }
+    }
+}
