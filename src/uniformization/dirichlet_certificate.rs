@@ -433,4 +433,55 @@ mod terms {
             "{outcome:?}"
         );
     }
+
+    /// B76's data are checked before any enclosure: wrong counts, a pole length that is not
+    /// positive and finite, and an enclosed metric that does not match the disk are
+    /// `Undecided` with the reason (never a panic, never `Holds`). Control: the same convex
+    /// disk with its own metric enclosed holds.
+    #[test]
+    fn term_b76_malformed_data_is_undecided() {
+        let good = quad([[-1.0, 0.0], [0.0, -0.2], [1.0, 0.0], [0.0, 1.0]]);
+        let p = Precision::new(u64::from(BITS)).expect("precision");
+        let metric = DiskMetric {
+            lengths: good.lengths.iter().map(|&x| I::from_f64(x, p)).collect(),
+            pole_length: good
+                .pole_length
+                .iter()
+                .map(|l| l.map(|x| I::from_f64(x, p)))
+                .collect(),
+        };
+        let outcome = check_disk_certificate_on(&good, Some(&metric), BITS);
+        assert!(
+            matches!(outcome, CertificateOutcome::Holds { .. }),
+            "{outcome:?}"
+        );
+        let mut cases: Vec<(&str, DiskCertificateData)> = Vec::new();
+        let with = |f: &dyn Fn(&mut DiskCertificateData)| {
+            let mut d = good.clone();
+            f(&mut d);
+            d
+        };
+        cases.push(("pole lengths", with(&|d| d.pole_length.truncate(3))));
+        cases.push(("targets", with(&|d| d.over_pi.truncate(3))));
+        cases.push(("scale factors", with(&|d| d.u.truncate(3))));
+        cases.push(("lengths", with(&|d| d.lengths.truncate(4))));
+        for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+            cases.push(("pole length", with(&|d| d.pole_length[2] = Some(bad))));
+        }
+        for (what, d) in &cases {
+            let why = reason(check_disk_certificate(d, BITS));
+            assert!(
+                why.contains("expected") || why.contains("not positive"),
+                "{what}: {why}"
+            );
+        }
+        let mut short = metric.clone();
+        short.lengths.pop();
+        let mut unlinked = metric.clone();
+        unlinked.pole_length[1] = None;
+        for m in [short, unlinked] {
+            let why = reason(check_disk_certificate_on(&good, Some(&m), BITS));
+            assert!(why.contains("does not match"), "{why}");
+        }
+    }
 }
