@@ -484,4 +484,40 @@ mod terms {
             assert!(why.contains("does not match"), "{why}");
         }
     }
+
+    /// B76 with a free vertex: the regular hexagonal wheel (spokes and rim 1) with pole
+    /// lengths 2 at its six link vertices, so `w_a = −2 log 2`, rim lengths `1/4` and
+    /// spokes `½e^{u_c/2}`; the centre's angle is `2π` exactly at `u_c = −2 log 2` (the
+    /// triangles are equilateral: closed form). The certificate holds at the binary64
+    /// `u_c` on a box of radius `10⁻⁹` (the residual is `O(10⁻¹⁶)`); `u_c = 0` (the
+    /// Dirichlet values ignored) and `u_c = +2 log 2` (their sign flipped) are refused.
+    #[test]
+    fn term_b76_dirichlet_values_and_the_free_residual_decide() {
+        let faces: Vec<[u32; 3]> = (1..=6).map(|i| [0, i, i % 6 + 1]).collect();
+        let disk = Mesh::from_faces(7, &faces).expect("a wheel");
+        let mut pole_length = vec![Some(2.0); 7];
+        pole_length[0] = None;
+        let solved = -2.0 * 2f64.ln();
+        let data = |u: f64| DiskCertificateData {
+            disk: disk.clone(),
+            lengths: vec![1.0; disk.n_edges()],
+            pole_length: pole_length.clone(),
+            over_pi: vec![Rational::from(2); 7],
+            flip_sequence: Vec::new(),
+            u: vec![Rational::from_f64(u).expect("finite"); 7],
+            radius: Rational::from_f64(1e-9).expect("finite"),
+        };
+        let outcome = check_disk_certificate(&data(solved), BITS);
+        let CertificateOutcome::Holds { distance, .. } = outcome else {
+            panic!("{outcome:?}")
+        };
+        assert!(distance < 1e-12, "{distance:e}");
+        for wrong in [0.0, -solved] {
+            let outcome = check_disk_certificate(&data(wrong), BITS);
+            assert!(
+                matches!(outcome, CertificateOutcome::Undecided { .. }),
+                "u_c = {wrong}: {outcome:?}"
+            );
+        }
+    }
 }
