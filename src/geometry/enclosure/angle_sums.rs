@@ -141,6 +141,14 @@ fn quadrant_of(x: &Bounds, y: &Bounds) -> Option<i64> {
     }
 }
 
+/// Bounds of `π` at `bits`: MPFR's constant rounded toward −∞ and toward +∞.
+fn pi_bounds(bits: u32) -> Bounds {
+    Bounds {
+        lo: Float::with_val_round(bits, Constant::Pi, Round::Down).0,
+        hi: Float::with_val_round(bits, Constant::Pi, Round::Up).0,
+    }
+}
+
 /// `θ = mπ/2 + atan(y'/x')` for the box `x × y` rotated by `i^{−m}`, where `m` is
 /// `Q_{n−1} + 1` or `Q_{n−1} + 2` (whichever leaves the rotated box in the open right
 /// half-plane); `None` when neither does. proof: B33 ("Last corner")
@@ -261,10 +269,7 @@ pub fn enclose_cone_angles(mesh: &Mesh, lengths: &[I]) -> EnclosedConeAngles {
             }
         }
     }
-    let pi = Bounds {
-        lo: Float::with_val_round(bits, Constant::Pi, Round::Down).0,
-        hi: Float::with_val_round(bits, Constant::Pi, Round::Up).0,
-    };
+    let pi = pi_bounds(bits);
     let mut fallback = Vec::new();
     let mut theta: Vec<I> = acc
         .iter()
@@ -302,3 +307,7 @@ pub fn enclose_cone_angles(mesh: &Mesh, lengths: &[I]) -> EnclosedConeAngles {
     }
     EnclosedConeAngles { theta, fallback }
 }
+
+#[cfg(test)]
+#[path = "angle_sums_terms.rs"]
+mod terms;
