@@ -8,11 +8,14 @@ use super::input::{load_flip_case, FlipCase};
 use penner::io::json::exact_number;
 use penner::scalar::{Dd, Real};
 use penner::uniformization::certificate::{
-    certify_near, prove, CertificateError, CertificateOutcome, Proof,
+    certify_near, CertificateError, CertificateOutcome, Proof,
 };
-use penner::uniformization::claim_form::to_claim;
+use penner::uniformization::pipeline::{
+    uniformize_closed, CertifiedMetric, ClosedOutcome, Options as ClosedOptions, PipelineError,
+    Precision,
+};
 use penner::uniformization::refine::refine;
-use penner::uniformization::{uniformize_with_progress, Targets, UniformizeOptions};
+use penner::uniformization::Targets;
 use std::fmt::Write as _;
 use std::io::{IsTerminal, Write};
 use std::path::Path;
@@ -33,19 +36,11 @@ pub struct Options<'a> {
     pub extra: &'a super::args::UniformizeExtra,
 }
 
-/// Interval bits and refinement tolerance of a precision word: `f64` → 1e-10 and `dd` →
-/// 1e-28 (refined in double-double, [`prove_dd`]), certified at 128 bits; `N` → `2^{−(N−56)}` at N bits (MPFR-256: ≈ 6·10⁻⁶¹).
+/// Interval bits and refinement tolerance of a precision word ([`Precision`]).
 fn bits_and_tolerance(p: &str) -> Result<(u32, f64), CliError> {
-    match p {
-        "f64" => Ok((128, 1e-10)),
-        "dd" => Ok((128, 1e-28)),
-        other => match other.parse::<u32>() {
-            Ok(b) if (128..=4096).contains(&b) => Ok((b, 2f64.powi(-(b as i32 - 56)))),
-            _ => Err(CliError::Input(format!(
-                "--precision: expected f64, dd or MPFR bits 128..=4096, got {other:?}"
-            ))),
-        },
-    }
+    p.parse::<Precision>()
+        .map(Precision::bits_and_tolerance)
+        .map_err(|e| CliError::Input(format!("--precision: {e}")))
 }
 
 pub(super) fn read_targets(path: &Path, n: usize) -> Result<Targets, CliError> {
@@ -162,8 +157,8 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
             &shown, &surface, &lengths, shift, &precision, o.output, o.extra,
         );
     }
-    let (mesh, lengths, shift) = scaled_input(case);
-    if !mesh.is_closed() {
+    if !case.mesh().is_closed() {
+        let (mesh, lengths, shift) = scaled_input(case);
         let input = super::uniformize_boundary::Input {
             shown: &shown,
             mesh: &mesh,
@@ -174,6 +169,7 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         };
         return super::uniformize_boundary::run(&input, o);
     }
+    let surface = into_surface(case);
     let targets =
         match (o.targets, o.flat) {
             (Some(_), true) => {
@@ -181,8 +177,8 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
                     "give either --targets FILE or --flat, not both".into(),
                 ))
             }
-            (Some(p), false) => read_targets(p, mesh.n_vertices())?,
-            (None, true) => Targets::flat(mesh.n_vertices()),
+            (Some(p), false) => read_targets(p, surface.mesh.n_vertices())?,
+            (None, true) => Targets::flat(surface.mesh.n_vertices()),
             (None, false) => return Err(CliError::Input(
                 "the target angles are required: --targets FILE (a JSON array of Θ_i/π) or --flat"
                     .into(),
@@ -190,7 +186,10 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         };
     let bar = std::io::stderr().is_terminal().then(|| {
         let b = indicatif::ProgressBar::new_spinner();
-        b.set_message(format!("uniformizing {shown} ({} faces)", mesh.n_faces()));
+        b.set_message(format!(
+            "uniformizing {shown} ({} faces)",
+            surface.mesh.n_faces()
+        ));
         b.enable_steady_tick(std::time::Duration::from_millis(120));
         b
     });
@@ -202,19 +201,31 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
             ));
         }
     };
-    let sol = uniformize_with_progress(
-        &mesh,
-        &lengths,
-        &targets,
-        &UniformizeOptions::default(),
-        &mut progress,
-    )
-    .map_err(|e| CliError::Input(format!("{shown}: {e}")))?;
+    let options = ClosedOptions {
+        precision: o.precision.parse::<Precision>().map_err(CliError::Input)?,
+        certify: true,
+    };
+    let outcome =
+        uniformize_closed(&surface, &targets, &options, &mut progress).map_err(|e| match e {
+            PipelineError::Input(e) => CliError::Input(format!("{shown}: {e}")),
+            PipelineError::Certificate(e) => certificate_error(&shown, e),
+        })?;
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    report_closed(&shown, &outcome, o)
+}
+
+/// The report of [`uniformize_closed`]'s outcome, the SVG and the claim written.
+fn report_closed(shown: &str, outcome: &ClosedOutcome, o: &Options<'_>) -> Result<u8, CliError> {
+    let sol = &outcome.solution;
+    let bits = outcome.bits;
     let mut out = String::new();
-    if shift != 0 {
+    if outcome.shift != 0 {
         let _ = writeln!(
             out,
-            "{shown}: lengths divided by 2^{shift} (exactly) before solving: the cone angles and u do not change with the scale, and the certificate is about the rescaled surface"
+            "{shown}: lengths divided by 2^{} (exactly) before solving: the cone angles and u do not change with the scale, and the certificate is about the rescaled surface",
+            outcome.shift
         );
     }
     let _ = writeln!(
@@ -225,10 +236,7 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         sol.flip_sequence.len(),
         sol.steps.iter().map(|s| s.flips).collect::<Vec<_>>()
     );
-    if !sol.converged() {
-        if let Some(b) = &bar {
-            b.finish_and_clear();
-        }
+    let Some(proof) = &outcome.proof else {
         let _ = writeln!(
             out,
             "not converged ({:?}); max |Θ − θ| = {:e}; no certificate",
@@ -236,21 +244,9 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         );
         super::files::emit(&out)?;
         return Ok(code::UNDECIDED);
-    }
+    };
     if let Some(path) = o.extra.svg.as_deref() {
-        out.push_str(&super::uniformize_svg::write(path, &sol)?);
-    }
-    if let Some(b) = &bar {
-        b.set_message(format!("refining and certifying at {bits} bits"));
-    }
-    let proof = if o.precision == "dd" {
-        prove_dd(&sol, bits, tolerance)
-    } else {
-        prove(&sol, bits, tolerance)
-    }
-    .map_err(|e| certificate_error(&shown, e))?;
-    if let Some(b) = &bar {
-        b.finish_and_clear();
+        out.push_str(&super::uniformize_svg::write(path, sol)?);
     }
     if o.precision == "dd" {
         let _ = writeln!(
@@ -265,19 +261,32 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
             sol.residual_max, proof.residual_max
         );
     }
+    let holds = match &outcome.metric {
+        Some(CertifiedMetric::Rounded { reason }) => format!(
+            "certified for the binary64-rounded lengths of the input, not its exact metric ({reason})"
+        ),
+        _ => "certified for the input's exact metric".to_string(),
+    };
     let status = report_certificate(
         &mut out,
-        &proof,
-        &sol.mesh,
-        bits,
+        &proof.outcome,
+        outcome.claim(),
         o.output,
         &Certified {
-            holds: "certified",
+            holds: &holds,
             written: "certificate",
         },
     )?;
     super::files::emit(&out)?;
     Ok(status)
+}
+
+/// The exact surface of a loaded case.
+fn into_surface(case: FlipCase) -> penner::io::Surface {
+    match case {
+        FlipCase::Exact(s) => s,
+        FlipCase::Decimal(d) => d.into_surface(),
+    }
 }
 
 /// The words of [`report_certificate`]'s lines: what a certified result is called and what
@@ -294,13 +303,12 @@ pub(super) struct Certified<'a> {
 /// `HOLDS` when certified, `UNDECIDED` otherwise.
 pub(super) fn report_certificate(
     out: &mut String,
-    proof: &Proof,
-    mesh: &penner::mesh::Mesh,
-    bits: u32,
+    outcome: &CertificateOutcome,
+    claim: Option<serde_json::Value>,
     output: Option<&Path>,
     words: &Certified<'_>,
 ) -> Result<u8, CliError> {
-    let (status, residual) = match &proof.outcome {
+    let status = match outcome {
         CertificateOutcome::Holds {
             distance,
             mu,
@@ -311,16 +319,15 @@ pub(super) fn report_certificate(
                 "{}: an exact solution lies within {distance:e} (2-norm) of u; Hessian ≥ {mu:e} on the box; ‖Θ − θ(u)‖₂ ≤ {residual:e}",
                 words.holds
             );
-            (code::HOLDS, *residual)
+            code::HOLDS
         }
         CertificateOutcome::Undecided { reason } => {
             let _ = writeln!(out, "not certified: {reason}");
-            (code::UNDECIDED, f64::INFINITY)
+            code::UNDECIDED
         }
     };
     if let Some(path) = output {
-        if status == code::HOLDS {
-            let claim = to_claim(&proof.data, &mesh.face_list(), residual, bits);
+        if let (code::HOLDS, Some(claim)) = (status, claim) {
             let text = serde_json::to_string_pretty(&claim).unwrap_or_default();
             let mut f = create_new(path)?;
             f.write_all(text.as_bytes())

@@ -10,7 +10,8 @@ use penner::scalar::{Certified, Sign};
 use penner::uniformization::boundary::{
     flat_with_even_boundary, uniformize_with_boundary, BoundaryUniformization,
 };
-use penner::uniformization::certificate::prove;
+use penner::uniformization::certificate::{prove, CertificateOutcome};
+use penner::uniformization::claim_form::to_claim;
 use penner::uniformization::layout::{face_orientations, unfold, unfold_within};
 use penner::uniformization::svg::{render_layout_svg, scaled_lengths_f64};
 use penner::uniformization::UniformizeOptions;
@@ -121,11 +122,19 @@ pub fn run(i: &Input<'_>, o: &super::uniformize::Options<'_>) -> Result<u8, CliE
         i.mesh.n_vertices(),
         i.mesh.n_faces()
     );
+    let claim = match &proof.outcome {
+        CertificateOutcome::Holds { residual, .. } => Some(to_claim(
+            &proof.data,
+            &sol.mesh.face_list(),
+            *residual,
+            i.bits,
+        )),
+        CertificateOutcome::Undecided { .. } => None,
+    };
     let status = super::uniformize::report_certificate(
         &mut out,
-        &proof,
-        &sol.mesh,
-        i.bits,
+        &proof.outcome,
+        claim,
         o.output,
         &super::uniformize::Certified {
             holds: "certified on the double (by symmetry and uniqueness it solves the boundary problem on copy 1, B79)",

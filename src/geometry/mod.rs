@@ -7,6 +7,7 @@ pub mod cross_ratio;
 pub mod curvature;
 pub mod enclosure;
 pub mod energy;
+pub mod exact3d;
 pub mod laplacian;
 pub mod scaling;
 pub mod triangle;

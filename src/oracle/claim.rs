@@ -234,6 +234,7 @@ const KIND_FIELDS: [(&str, &[&str]); 12] = [
     (
         "uniformization",
         &[
+            "euclidean_flips",
             "targets",
             "flips",
             "u",
@@ -556,6 +557,10 @@ fn uniformization_claim(v: &Value, surface: &Surface) -> Result<Assertion, Claim
         radius,
         final_faces,
         residual_bound,
+        euclidean_flips: v
+            .get("euclidean_flips")
+            .map(|_| edge_indices(v, "euclidean_flips"))
+            .transpose()?,
     };
     crate::uniformization::claim_form::validate(surface, &claim).map_err(|e| err(e.to_string()))?;
     Ok(Assertion::Uniformization(claim))

@@ -317,6 +317,9 @@ pub struct T0Metric {
     pub values: Vec<Mpfr>,
     /// Enclosures of the exact lengths of `T₀`.
     pub enclosures: Vec<Interval<Mpfr>>,
+    /// The Euclidean flips from the input triangulation to `T₀`, in order (an edge keeps
+    /// its index when flipped).
+    pub euclidean: Vec<Edge>,
 }
 
 /// Refine `sol` at `bits` of MPFR precision (to `tolerance`), then try to certify boxes of

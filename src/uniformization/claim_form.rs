@@ -7,17 +7,27 @@
 //! strings), `radius` (the sup-norm box), `final_faces` (the final triangulation's vertex
 //! triples, checked) and `residual_bound` (a claimed upper bound on `‖Θ − θ(u)‖₂` over the
 //! free vertices, checked). `max_bits` is the interval precision of the re-check.
+//!
+//! Two forms. Without `euclidean_flips`, `surface` is `T₀` itself with binary64 lengths
+//! (the binary64-rounded metric, as written for inputs whose exact metric was not
+//! certified). With `euclidean_flips` (the flips from `surface` to its intrinsic Delaunay
+//! triangulation `T₀`, indices into the surface's edge order), `surface` is the input as
+//! given — exact lengths, squared lengths or positions — and the re-check replays those
+//! flips on enclosures of its exact lengths, each admitted only on a certified strictly
+//! convex quadrilateral (B73 (a)), so a `holds` is about the input's own metric.
 
 use super::certificate::{
     check_certificate, CertificateData, CertificateError, CertificateOutcome,
 };
-use super::refine::carry_lengths;
+use super::certificate::{check_certificate_on, I};
+use super::input_metric::{exact_squared_on_t0, replay_enclosed, t0_delaunay};
+use super::refine::{carry_lengths, carry_lengths_from};
 use super::targets::Targets;
 use crate::io::json::{edge_order, to_value};
 use crate::io::{Metric, Surface};
 use crate::mesh::Edge;
 use crate::predicates::delaunay::{delaunay_sign_squared, QuadEdges};
-use crate::scalar::{Mpfr, Precision, Sign};
+use crate::scalar::{Mpfr, Precision, Real, Sign};
 use rug::{Integer, Rational};
 use serde_json::{json, Value};
 
@@ -36,6 +46,9 @@ pub struct UniformizationClaim {
     pub final_faces: Vec<[u32; 3]>,
     /// The claimed bound on `‖Θ − θ(u)‖₂`.
     pub residual_bound: Rational,
+    /// The Euclidean flips from the surface to `T₀` (the input-metric form), or `None`
+    /// (the surface is `T₀` with binary64 lengths).
+    pub euclidean_flips: Option<Vec<usize>>,
 }
 
 /// A malformed `uniformization` claim.
@@ -57,6 +70,16 @@ pub enum ClaimFormError {
     #[error("flips[{position}]: edge index {index} out of range (the surface has {edges} edges)")]
     FlipIndex {
         /// Position in `flips`.
+        position: usize,
+        /// The index.
+        index: usize,
+        /// Edges.
+        edges: usize,
+    },
+    /// A Euclidean flip index is out of range.
+    #[error("euclidean_flips[{position}]: edge index {index} out of range (the surface has {edges} edges)")]
+    EuclideanFlipIndex {
+        /// Position in `euclidean_flips`.
         position: usize,
         /// The index.
         index: usize,
@@ -133,18 +156,53 @@ pub fn to_claim(
     })
 }
 
+/// The certificate `data` (whose `t0` is `input`'s mesh after the Euclidean flips
+/// `euclidean`) as a `uniformization` claim about `input`'s own exact metric at `bits`:
+/// `surface` is `input` as given and `euclidean_flips` the flips to `T₀` (module
+/// documentation), with the final faces and a residual bound.
+pub fn to_claim_on_input(
+    data: &CertificateData,
+    input: &Surface,
+    euclidean: &[Edge],
+    final_faces: &[[u32; 3]],
+    residual_bound: f64,
+    bits: u32,
+) -> Value {
+    let order = edge_order(&input.mesh);
+    let mut user = vec![0usize; order.len()];
+    for (k, &e) in order.iter().enumerate() {
+        user[e] = k;
+    }
+    let dec = |q: &Rational| exact_decimal(q).unwrap_or_else(|| q.to_string());
+    json!({
+        "penner_claim": 1,
+        "kind": "uniformization",
+        "max_bits": bits,
+        "surface": to_value(input),
+        "euclidean_flips": euclidean.iter().map(|e| user[e.idx()]).collect::<Vec<_>>(),
+        "targets": data.targets.over_pi().iter().map(ToString::to_string).collect::<Vec<_>>(),
+        "flips": data.flip_sequence.iter().map(|e| user[e.idx()]).collect::<Vec<_>>(),
+        "u": data.u.iter().map(dec).collect::<Vec<_>>(),
+        "radius": dec(&data.radius),
+        "final_faces": final_faces,
+        "residual_bound": dec(&Rational::from_f64(residual_bound).unwrap_or_default()),
+    })
+}
+
 /// The checks of a claim that need no arithmetic beyond ℚ: binary64 lengths, flip indices
 /// in range, the targets (count, positivity, Gauss–Bonnet), one `u` per vertex, a positive
 /// radius. A failure is bad input, named by field.
 pub fn validate(surface: &Surface, claim: &UniformizationClaim) -> Result<(), ClaimFormError> {
-    let Metric::Lengths(l) = &surface.metric else {
-        return Err(ClaimFormError::SquaredLengths);
-    };
     let order = edge_order(&surface.mesh);
-    for (k, &e) in order.iter().enumerate() {
-        let q = &l[e];
-        if Rational::from_f64(q.to_f64()).as_ref() != Some(q) {
-            return Err(ClaimFormError::NotBinary64 { index: k });
+    if claim.euclidean_flips.is_none() {
+        let Metric::Lengths(l) = &surface.metric else {
+            return Err(ClaimFormError::SquaredLengths);
+        };
+        for (k, &e) in order.iter().enumerate() {
+            let q = &l[e];
+            if Rational::from_f64(q.to_f64()).as_ref() != Some(q) {
+                return Err(ClaimFormError::NotBinary64 { index: k });
+            }
         }
     }
     if let Some((position, &index)) = claim
@@ -154,6 +212,14 @@ pub fn validate(surface: &Surface, claim: &UniformizationClaim) -> Result<(), Cl
         .find(|(_, &i)| i >= order.len())
     {
         return Err(ClaimFormError::FlipIndex {
+            position,
+            index,
+            edges: order.len(),
+        });
+    }
+    let mut euclidean = claim.euclidean_flips.iter().flatten().enumerate();
+    if let Some((position, &index)) = euclidean.find(|(_, &i)| i >= order.len()) {
+        return Err(ClaimFormError::EuclideanFlipIndex {
             position,
             index,
             edges: order.len(),
@@ -192,6 +258,9 @@ pub fn recheck(
     claim: &UniformizationClaim,
     bits: u32,
 ) -> Result<CertificateOutcome, ClaimFormError> {
+    if let Some(euclidean) = &claim.euclidean_flips {
+        return recheck_on_input(surface, claim, euclidean, bits);
+    }
     let mesh = &surface.mesh;
     let Metric::Lengths(l) = &surface.metric else {
         return Err(ClaimFormError::SquaredLengths);
@@ -246,16 +315,71 @@ pub fn recheck(
         return Err(ClaimFormError::FinalFaces);
     }
     let outcome = check_certificate(&data, bits)?;
+    Ok(within_residual_bound(outcome, claim))
+}
+
+/// [`recheck`] of the input-metric form (module documentation): the Euclidean flips
+/// replayed on enclosures of `surface`'s exact lengths (B73 (a)), `T₀` certified
+/// intrinsic Delaunay for them, the Ptolemy flips reaching `final_faces`, then
+/// [`check_certificate_on`] with the enclosures (B71) and the residual bound.
+fn recheck_on_input(
+    surface: &Surface,
+    claim: &UniformizationClaim,
+    euclidean: &[usize],
+    bits: u32,
+) -> Result<CertificateOutcome, ClaimFormError> {
+    let undecided = |reason: String| Ok(CertificateOutcome::Undecided { reason });
+    let prec =
+        Precision::new(u64::from(bits)).map_err(|_| CertificateError::Bits(u64::from(bits)))?;
+    let mesh = &surface.mesh;
+    let order = edge_order(mesh);
+    let edge = |k: usize| Edge(order[k] as u32);
+    let sequence: Vec<Edge> = euclidean.iter().map(|&k| edge(k)).collect();
+    let (t0, l0) = match replay_enclosed(mesh, surface.lengths::<I>(prec), &sequence) {
+        Ok(x) => x,
+        Err(reason) => return undecided(reason),
+    };
+    let exact = exact_squared_on_t0(surface, &sequence);
+    if let Err(e) = t0_delaunay(&t0, &l0, &exact) {
+        let k = order.iter().position(|&x| x == e.idx()).unwrap_or(e.idx());
+        return undecided(format!(
+            "edge {k} of T₀ is not certified intrinsic Delaunay for the surface's metric"
+        ));
+    }
+    let flips: Vec<Edge> = claim.flips.iter().map(|&k| edge(k)).collect();
+    let (final_mesh, _) =
+        carry_lengths_from(&t0, l0.clone(), &flips).map_err(CertificateError::from)?;
+    if final_mesh.face_list() != claim.final_faces {
+        return Err(ClaimFormError::FinalFaces);
+    }
+    let data = CertificateData {
+        t0,
+        l0: l0.iter().map(Real::approx_f64).collect(),
+        targets: Targets::from_multiples_of_pi(claim.targets_over_pi.clone()),
+        flip_sequence: flips,
+        u: claim.u.clone(),
+        radius: claim.radius.clone(),
+    };
+    let outcome = check_certificate_on(&data, Some(&l0), bits)?;
+    Ok(within_residual_bound(outcome, claim))
+}
+
+/// `outcome`, made undecided when it holds with an enclosed residual above the claim's
+/// `residual_bound`.
+fn within_residual_bound(
+    outcome: CertificateOutcome,
+    claim: &UniformizationClaim,
+) -> CertificateOutcome {
     if let CertificateOutcome::Holds { residual, .. } = &outcome {
         let enclosed = Rational::from_f64(*residual).unwrap_or_default();
         if enclosed > claim.residual_bound {
-            return Ok(CertificateOutcome::Undecided {
+            return CertificateOutcome::Undecided {
                 reason: format!(
                     "the enclosed residual {residual:e} is not below the claimed residual_bound {:e}",
                     claim.residual_bound.to_f64()
                 ),
-            });
+            };
         }
     }
-    Ok(outcome)
+    outcome
 }

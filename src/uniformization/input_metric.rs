@@ -9,14 +9,17 @@
 //! input metric, the two corner angles at each end of the edge are certified to sum to
 //! less than `π` ([`strictly_convex`]).
 
-use super::certificate::T0Metric;
+use super::certificate::{T0Metric, I};
 use super::newton::Uniformization;
 use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
 use crate::algorithms::flips::flip_euclidean;
+use crate::geometry::exact3d::{opposite_in_plane, squared_distance};
 use crate::geometry::triangle::corner_angle;
+use crate::io::Surface;
 use crate::mesh::{Edge, Mesh};
-use crate::predicates::delaunay::{Quad, QuadEdges};
+use crate::predicates::delaunay::{delaunay_sign_squared, enclose_p, Quad, QuadEdges};
 use crate::scalar::{Interval, Mpfr, Real, Sign};
+use rug::Rational;
 
 /// The input metric on `sol`'s `T₀`: `mesh` and `lengths` are what [`super::uniformize`]
 /// was given (binary64), `values` the input lengths in MPFR and `enclosures` enclosures of
@@ -49,7 +52,11 @@ pub fn input_on_t0(
     for &e in &rep.sequence {
         flip_euclidean(&mut mv, &mut values, e).map_err(|err| err.to_string())?;
     }
-    Ok(T0Metric { values, enclosures })
+    Ok(T0Metric {
+        values,
+        enclosures,
+        euclidean: rep.sequence,
+    })
 }
 
 /// Replay the Euclidean flips `sequence` on `mesh` with the enclosed lengths
@@ -96,4 +103,70 @@ pub fn strictly_convex(q: &Quad<Interval<Mpfr>>) -> bool {
         let slack = pi.clone() - &a;
         slack.is_valid() && slack.sign() == Some(Sign::Positive)
     })
+}
+
+/// The exact squared lengths of `T₀` where they are known, one entry per edge: the input's
+/// own (`ℓ²` of its lengths, or of its positions) on edges no flip of `sequence` changed,
+/// and, for inputs with positions, `|p_k − p_l|²` on an edge flipped across a flat hinge:
+/// `k`, `l` coplanar with `ij` and on opposite sides of it (decided exactly,
+/// [`opposite_in_plane`]), and both triangles straight (all five edges still have their
+/// 3-D lengths). The flip's quadrilateral is strictly convex (admitted by
+/// [`replay_enclosed`]), so the new diagonal is the straight segment `kl` of that plane. `None` on other flipped edges (their lengths are only enclosed).
+pub(crate) fn exact_squared_on_t0(surface: &Surface, sequence: &[Edge]) -> Vec<Option<Rational>> {
+    let mut mesh = surface.mesh.clone();
+    let mut sq: Vec<Option<Rational>> = surface.metric.squared().into_iter().map(Some).collect();
+    for &e in sequence {
+        let Some(q) = QuadEdges::of(&mesh, e) else {
+            return vec![None; sq.len()];
+        };
+        let h = e.side(0);
+        let t = e.side(1);
+        let (i, j) = (mesh.tail(h).idx(), mesh.tip(h).idx());
+        let (k, l) = (mesh.tip(mesh.next(h)).idx(), mesh.tip(mesh.next(t)).idx());
+        let straight = q.edges.to_array().iter().all(|x| sq[x.idx()].is_some());
+        let new = match &surface.positions {
+            Some(p) if straight && opposite_in_plane(&p[i], &p[j], &p[k], &p[l]) => {
+                Some(squared_distance(&p[k], &p[l]))
+            }
+            _ => None,
+        };
+        if mesh.flip(e).is_err() {
+            return vec![None; sq.len()];
+        }
+        sq[e.idx()] = new;
+    }
+    sq
+}
+
+/// Whether every edge of `mesh` is certified intrinsic Delaunay for every metric in
+/// `lengths` (`P ≥ 0`, B60, B62); where the five squared lengths of an edge's
+/// quadrilateral are known exactly (`exact`, [`exact_squared_on_t0`]) the sign is decided
+/// exactly (B63: a tie `P = 0` is Delaunay). `Err` names the first edge not certified.
+pub(crate) fn t0_delaunay(
+    mesh: &Mesh,
+    lengths: &[I],
+    exact: &[Option<Rational>],
+) -> Result<(), Edge> {
+    for e in mesh.edges() {
+        let Some(q) = QuadEdges::of(mesh, e) else {
+            continue;
+        };
+        let sq = q
+            .edges
+            .to_array()
+            .map(|x| exact.get(x.idx()).cloned().flatten());
+        let ok = match sq {
+            [Some(ij), Some(jk), Some(ki), Some(il), Some(lj)] => {
+                let quad = Quad { ij, jk, ki, il, lj };
+                delaunay_sign_squared(quad.as_refs()) != Sign::Negative
+            }
+            _ => super::ball_argument::certified_nonnegative(&enclose_p(
+                &q.lengths(lengths).map(Clone::clone).to_array(),
+            )),
+        };
+        if !ok {
+            return Err(e);
+        }
+    }
+    Ok(())
 }

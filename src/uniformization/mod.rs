@@ -8,6 +8,8 @@
 //! - [`certificate`]: an a-posteriori existence proof near a computed `u` (B70, B71);
 //! - [`targets`]: prescribed angles as exact multiples of π and Gauss–Bonnet.
 //! - [`boundary`]: surfaces with boundary (cone and boundary angles) by the double (B79).
+//! - [`pipeline`]: the closed-surface pipeline as one call (solve, refine, certify for the
+//!   input's exact metric, the claim).
 
 pub(crate) mod ball_argument;
 pub mod boundary;
@@ -31,6 +33,7 @@ pub mod krawczyk;
 pub mod layout;
 pub mod newton;
 pub(crate) mod newton_driver;
+pub mod pipeline;
 pub mod refine;
 pub mod scaling;
 pub mod sphere;

@@ -24,14 +24,13 @@
 use super::certificate::{CertificateOutcome, I};
 use super::claim_form::exact_decimal;
 use super::dirichlet_certificate::{check_disk_certificate_on, DiskCertificateData, DiskMetric};
-use super::input_metric::replay_enclosed;
+use super::input_metric::{exact_squared_on_t0, replay_enclosed, t0_delaunay};
 use super::refine::{carry_lengths_from, RefineError};
 use super::sphere::{check_pole, disk_of, SphereUniformization};
 use crate::io::json::{edge_order, to_value};
 use crate::io::Surface;
-use crate::mesh::{Edge, Mesh, Vertex};
-use crate::predicates::delaunay::{delaunay_sign_squared, enclose_p, QuadEdges};
-use crate::scalar::{Precision, Real, Sign};
+use crate::mesh::{Edge, Vertex};
+use crate::scalar::{Precision, Real};
 use rug::Rational;
 use serde_json::{json, Value};
 
@@ -173,28 +172,6 @@ pub fn validate(surface: &Surface, claim: &SphereClaim) -> Result<(), SphereClai
     Ok(())
 }
 
-/// Whether every edge of `mesh` is certified intrinsic Delaunay for every metric in
-/// `lengths` (`P ≥ 0`, B60, B62); with `exact_squared` (the surface's own exact squared
-/// lengths, when no flip changed them) the sign is decided exactly (B63). `Err` names the
-/// first edge not certified.
-fn t0_delaunay(mesh: &Mesh, lengths: &[I], exact_squared: Option<&[Rational]>) -> Result<(), Edge> {
-    for e in mesh.edges() {
-        let Some(q) = QuadEdges::of(mesh, e) else {
-            continue;
-        };
-        let ok = match exact_squared {
-            Some(sq) => delaunay_sign_squared(q.lengths(sq)) != Sign::Negative,
-            None => super::ball_argument::certified_nonnegative(&enclose_p(
-                &q.lengths(lengths).map(Clone::clone).to_array(),
-            )),
-        };
-        if !ok {
-            return Err(e);
-        }
-    }
-    Ok(())
-}
-
 /// Re-check a `sphere_uniformization` claim about `surface` from scratch at `bits` (the
 /// steps of the module documentation). `Undecided` outcomes carry the reason; malformed
 /// claims are errors. Never a refutation. proof: B90
@@ -216,8 +193,8 @@ pub fn recheck(
         Ok(x) => x,
         Err(reason) => return undecided(reason),
     };
-    let squared = euclidean.is_empty().then(|| surface.metric.squared());
-    if let Err(e) = t0_delaunay(&t0, &l0, squared.as_deref()) {
+    let exact = exact_squared_on_t0(surface, &euclidean);
+    if let Err(e) = t0_delaunay(&t0, &l0, &exact) {
         let k = order.iter().position(|&x| x == e.idx()).unwrap_or(e.idx());
         return undecided(format!(
             "edge {k} of T₀ is not certified intrinsic Delaunay for the surface's metric"

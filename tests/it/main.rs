@@ -90,6 +90,7 @@ mod uniformization;
 mod uniformization_boundary;
 mod uniformization_hyperbolic;
 mod uniformization_hyperbolic_flips;
+mod uniformization_input_metric;
 mod uniformization_layout;
 mod uniformization_speed;
 mod uniformization_sphere;

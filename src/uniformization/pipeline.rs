@@ -1,0 +1,315 @@
+//! Uniformization of a closed surface with prescribed cone angles (flat or cones, T24) as
+//! one library call, the pipeline behind `penner uniformize --flat | --targets`: the `f64`
+//! solve with Ptolemy flips, refinement and a certificate about the **input's exact
+//! metric** (B73 (a), B71), and the claim that `penner certify` re-checks.
+//!
+//! The solve sees the binary64 rounding of the input lengths (positions give square roots
+//! of rational squared lengths, decimals may not be binary64). The certificate is first
+//! attempted for the exact input: the solve's Euclidean flips to `T₀` are replayed on
+//! enclosures of the exact lengths, each admitted only on a certified strictly convex
+//! quadrilateral ([`input_on_t0`]), the refinement runs on the input lengths and the ball
+//! argument on their enclosures. Only when that replay is refused (a flip whose
+//! quadrilateral is not certified strictly convex for the exact lengths, e.g. an exact tie)
+//! or its box does not hold is the binary64-rounded metric certified instead, and the
+//! outcome says so ([`CertifiedMetric::Rounded`]).
+//!
+//! ```
+//! use penner::io::Surface;
+//! use penner::mesh::builders;
+//! use penner::uniformization::pipeline::{uniformize_closed, CertifiedMetric, Options};
+//! use penner::uniformization::Targets;
+//! use rug::Rational;
+//! // The regular tetrahedron at integer positions: edge lengths √8, not binary64 numbers.
+//! let s = Surface::from_embedded("tetrahedron", builders::tetrahedron()).unwrap();
+//! let t = Targets::from_multiples_of_pi(vec![Rational::from(1); 4]); // cone angles π
+//! let out = uniformize_closed(&s, &t, &Options::default(), &mut |_| {}).unwrap();
+//! assert!(out.certified());
+//! assert_eq!(out.metric, Some(CertifiedMetric::Input));
+//! assert!(out.claim().unwrap()["euclidean_flips"].is_array());
+//! ```
+
+use super::certificate::{certify_near, prove, prove_on, CertificateError, CertificateOutcome};
+use super::certificate::{Proof, T0Metric};
+use super::claim_form::{to_claim, to_claim_on_input};
+use super::input_metric::{exact_squared_on_t0, input_on_t0, t0_delaunay};
+use super::newton::{uniformize_with_progress, StepReport, Uniformization, UniformizeOptions};
+use super::refine::{refine, refine_on};
+use super::targets::Targets;
+use super::UniformizeError;
+use crate::io::json::edge_order;
+use crate::io::Surface;
+use crate::scalar::{Dd, Interval, Mpfr, Precision as Bits, Real};
+use rug::Rational;
+use serde_json::Value;
+
+/// The working precision of a pipeline: where the solution is refined before the
+/// certificate, which always runs in MPFR interval arithmetic (directed rounding).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Precision {
+    /// Refined to `10⁻¹⁰` in binary64's neighbourhood, certified at 128 bits.
+    F64,
+    /// Refined in double-double to `10⁻²⁸`, certified at 128 bits.
+    Dd,
+    /// Refined at `N` MPFR bits (`128 ≤ N ≤ 4096`) to `2^{−(N−56)}`, certified at `N`.
+    Mpfr(u32),
+}
+
+impl Default for Precision {
+    /// 256 MPFR bits.
+    fn default() -> Precision {
+        Precision::Mpfr(256)
+    }
+}
+
+impl std::str::FromStr for Precision {
+    type Err = String;
+
+    /// `f64`, `dd` or MPFR bits `128..=4096`.
+    fn from_str(word: &str) -> Result<Precision, String> {
+        match word {
+            "f64" => Ok(Precision::F64),
+            "dd" => Ok(Precision::Dd),
+            other => match other.parse::<u32>() {
+                Ok(b) if (128..=4096).contains(&b) => Ok(Precision::Mpfr(b)),
+                _ => Err(format!(
+                    "expected f64, dd or MPFR bits 128..=4096, got {other:?}"
+                )),
+            },
+        }
+    }
+}
+
+impl Precision {
+    /// The certificate's interval bits and the refinement's tolerance on `max |Θ − θ|`.
+    pub fn bits_and_tolerance(self) -> (u32, f64) {
+        match self {
+            Precision::F64 => (128, 1e-10),
+            Precision::Dd => (128, 1e-28),
+            Precision::Mpfr(b) => (b, 2f64.powi(-(b as i32 - 56))),
+        }
+    }
+}
+
+/// Options of [`uniformize_closed`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct Options {
+    /// The working precision.
+    pub precision: Precision,
+    /// Attempt a certificate (otherwise the result is numerical: the `f64` solve alone).
+    pub certify: bool,
+}
+
+impl Default for Options {
+    /// 256 bits, certified.
+    fn default() -> Options {
+        Options {
+            precision: Precision::default(),
+            certify: true,
+        }
+    }
+}
+
+/// Which metric a certificate is about.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum CertifiedMetric {
+    /// The input's own exact metric (after the exact rescaling by `2^{−shift}`).
+    Input,
+    /// The binary64 rounding of the input lengths only; `reason` says why the input's
+    /// exact metric was not certified.
+    Rounded {
+        /// Why the exact-metric certificate was not obtained.
+        reason: String,
+    },
+}
+
+/// The outcome of [`uniformize_closed`].
+#[derive(Clone, Debug)]
+pub struct ClosedOutcome {
+    /// The surface solved: the input divided by `2^shift` exactly when its lengths are far
+    /// from 1 (uniformization is scale invariant; `u` does not change).
+    pub surface: Surface,
+    /// The exact power of two the lengths were divided by (0: none).
+    pub shift: i64,
+    /// The `f64` solve (T₀, the Ptolemy flips, `u`, the residual, the stop reason).
+    pub solution: Uniformization,
+    /// The refinement and certificate, when the solve converged and a certificate was
+    /// asked for.
+    pub proof: Option<Proof>,
+    /// The metric the certificate is about (with `proof`).
+    pub metric: Option<CertifiedMetric>,
+    /// The certificate's interval bits.
+    pub bits: u32,
+    /// The input-metric replay, kept for the claim.
+    t0_metric: Option<T0Metric>,
+}
+
+impl ClosedOutcome {
+    /// Whether an exact solution was proved to exist near the refined `u`.
+    pub fn certified(&self) -> bool {
+        matches!(
+            self.proof.as_ref().map(|p| &p.outcome),
+            Some(CertificateOutcome::Holds { .. })
+        )
+    }
+
+    /// The `uniformization` claim of a certified outcome, ready to write: about the input
+    /// surface as given with its Euclidean flips (`euclidean_flips`) for
+    /// [`CertifiedMetric::Input`], about `T₀` with binary64 lengths otherwise.
+    pub fn claim(&self) -> Option<Value> {
+        let proof = self.proof.as_ref()?;
+        let CertificateOutcome::Holds { residual, .. } = &proof.outcome else {
+            return None;
+        };
+        let final_faces = self.solution.mesh.face_list();
+        match (&self.metric, &self.t0_metric) {
+            (Some(CertifiedMetric::Input), Some(m)) => Some(to_claim_on_input(
+                &proof.data,
+                &self.surface,
+                &m.euclidean,
+                &final_faces,
+                *residual,
+                self.bits,
+            )),
+            _ => Some(to_claim(&proof.data, &final_faces, *residual, self.bits)),
+        }
+    }
+}
+
+/// Errors of [`uniformize_closed`]: the input or targets refused, or a certificate
+/// parameter refused. Not converging and not certifying are outcomes, not errors.
+#[derive(Debug, thiserror::Error)]
+pub enum PipelineError {
+    /// The surface or targets are refused (e.g. Gauss–Bonnet, a non-closed surface).
+    #[error(transparent)]
+    Input(#[from] UniformizeError),
+    /// The refinement or certificate could not be set up.
+    #[error(transparent)]
+    Certificate(#[from] CertificateError),
+}
+
+/// Uniformize the closed `surface` to the cone angles `targets` (module documentation):
+/// the solve (calling `progress` after every Newton step), then, when it converged and
+/// `options.certify`, the refinement and the certificate, for the input's exact metric
+/// where possible.
+pub fn uniformize_closed(
+    surface: &Surface,
+    targets: &Targets,
+    options: &Options,
+    progress: &mut dyn FnMut(&StepReport),
+) -> Result<ClosedOutcome, PipelineError> {
+    let (surface, shift) = rescaled(surface);
+    let lengths = surface.lengths::<f64>(());
+    let solution = uniformize_with_progress(
+        &surface.mesh,
+        &lengths,
+        targets,
+        &UniformizeOptions::default(),
+        progress,
+    )?;
+    let (bits, tolerance) = options.precision.bits_and_tolerance();
+    let mut out = ClosedOutcome {
+        surface,
+        shift,
+        solution,
+        proof: None,
+        metric: None,
+        bits,
+        t0_metric: None,
+    };
+    if !out.solution.converged() || !options.certify {
+        return Ok(out);
+    }
+    let prec = Bits::new(u64::from(bits)).map_err(|_| CertificateError::Bits(bits.into()))?;
+    let sol = &out.solution;
+    let replay = input_on_t0(
+        sol,
+        &out.surface.mesh,
+        &lengths,
+        out.surface.lengths::<Mpfr>(prec),
+        out.surface.lengths::<Interval<Mpfr>>(prec),
+    )
+    .and_then(|m| t0_delaunay_for_input(&out.surface, sol, m));
+    let reason = match replay {
+        Ok(m) => {
+            let proof = match options.precision {
+                Precision::Dd => {
+                    let l0 = m
+                        .values
+                        .iter()
+                        .map(|x| Dd::from_rational(&x.to_rational().unwrap_or_default(), ()))
+                        .collect();
+                    let r = refine_on::<Dd>(sol, l0, (), tolerance, 30)
+                        .map_err(CertificateError::from)?;
+                    certify_near(sol, Some(&m), &exact(&r.u), r.residual_max(), bits)?
+                }
+                _ => prove_on(sol, Some(&m), bits, tolerance)?,
+            };
+            if matches!(proof.outcome, CertificateOutcome::Holds { .. }) {
+                out.proof = Some(proof);
+                out.metric = Some(CertifiedMetric::Input);
+                out.t0_metric = Some(m);
+                return Ok(out);
+            }
+            match &proof.outcome {
+                CertificateOutcome::Undecided { reason } => reason.clone(),
+                CertificateOutcome::Holds { .. } => unreachable!("returned above"),
+            }
+        }
+        Err(reason) => reason,
+    };
+    let proof = match options.precision {
+        Precision::Dd => {
+            let r = refine::<Dd>(sol, (), tolerance, 30).map_err(CertificateError::from)?;
+            certify_near(sol, None, &exact(&r.u), r.residual_max(), bits)?
+        }
+        _ => prove(sol, bits, tolerance)?,
+    };
+    out.proof = Some(proof);
+    out.metric = Some(CertifiedMetric::Rounded { reason });
+    Ok(out)
+}
+
+/// `m`, when `T₀` is certified intrinsic Delaunay for the input's exact metric (exactly
+/// where its squared lengths are known, [`exact_squared_on_t0`]; on the enclosures
+/// elsewhere): the decorated metric of the certificate is then the input's (B73 (a)).
+fn t0_delaunay_for_input(
+    surface: &Surface,
+    sol: &Uniformization,
+    m: T0Metric,
+) -> Result<T0Metric, String> {
+    let exact = exact_squared_on_t0(surface, &m.euclidean);
+    match t0_delaunay(&sol.initial_mesh, &m.enclosures, &exact) {
+        Ok(()) => Ok(m),
+        Err(e) => {
+            let k = edge_order(&surface.mesh)
+                .iter()
+                .position(|&x| x == e.idx())
+                .unwrap_or(e.idx());
+            Err(format!(
+                "edge {k} of T₀ is not certified intrinsic Delaunay for the input's exact metric"
+            ))
+        }
+    }
+}
+
+/// The exact values of a refined `u` (a non-finite entry becomes 0, which the certificate
+/// then refuses: its residual is not small).
+fn exact<T: Real>(u: &[T]) -> Vec<Rational> {
+    u.iter()
+        .map(|x| x.to_rational().unwrap_or_default())
+        .collect()
+}
+
+/// The surface divided by an exact power of two `2^shift` when its binary64 lengths are
+/// not all in `[2⁻¹⁰⁰, 2¹⁰⁰]` (their squares then leave binary64's range;
+/// [`Surface::normalized_scale`]), and the shift.
+pub fn rescaled(surface: &Surface) -> (Surface, i64) {
+    let l = surface.lengths::<f64>(());
+    let in_range = l
+        .iter()
+        .all(|&x| x.is_finite() && (f64::powi(2.0, -100)..=f64::powi(2.0, 100)).contains(&x));
+    match surface.normalized_scale().filter(|_| !in_range) {
+        Some((s, k)) => (s, k),
+        None => (surface.clone(), 0),
+    }
+}
