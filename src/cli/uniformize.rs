@@ -6,15 +6,11 @@ use super::error::{code, CliError};
 use super::files::{create_new, read_text};
 use super::input::{load_flip_case, FlipCase};
 use penner::io::json::exact_number;
-use penner::scalar::{Dd, Real};
-use penner::uniformization::certificate::{
-    certify_near, CertificateError, CertificateOutcome, Proof,
-};
+use penner::uniformization::certificate::CertificateOutcome;
 use penner::uniformization::pipeline::{
-    uniformize_closed, CertifiedMetric, ClosedOutcome, Options as ClosedOptions, PipelineError,
-    Precision,
+    rescaled, uniformize_closed, CertifiedMetric, ClosedOutcome, Options as ClosedOptions,
+    PipelineError, Precision,
 };
-use penner::uniformization::refine::refine;
 use penner::uniformization::Targets;
 use std::fmt::Write as _;
 use std::io::{IsTerminal, Write};
@@ -69,62 +65,6 @@ pub(super) fn read_targets(path: &Path, n: usize) -> Result<Targets, CliError> {
     Ok(Targets::from_multiples_of_pi(q))
 }
 
-/// The triangulation and its binary64 lengths, after dividing the surface by an exact power
-/// of two `2^shift` when its lengths are far from 1 (`io::Surface::normalized_scale`, as the
-/// check registry does): a surface scaled by 2^±1000 has normal binary64 lengths but squared
-/// lengths outside binary64's range. Uniformization is scale invariant (θ depends on
-/// ratios of lengths), so `u` is the same for both.
-fn scaled_input(case: FlipCase) -> (penner::mesh::Mesh, Vec<f64>, i64) {
-    let lengths: Vec<f64> = case.lengths::<f64>(());
-    if in_range(&lengths) {
-        return (case.mesh().clone(), lengths, 0);
-    }
-    let surface = match case {
-        FlipCase::Exact(s) => s,
-        FlipCase::Decimal(d) => d.into_surface(),
-    };
-    match surface.normalized_scale() {
-        Some((scaled, k)) => (scaled.mesh.clone(), scaled.lengths::<f64>(()), k),
-        None => (surface.mesh.clone(), lengths, 0),
-    }
-}
-
-/// Whether binary64 lengths lie in `[2⁻¹⁰⁰, 2¹⁰⁰]` (their squares then in binary64's range).
-fn in_range(l: &[f64]) -> bool {
-    l.iter()
-        .all(|&x| x.is_finite() && (f64::powi(2.0, -100)..=f64::powi(2.0, 100)).contains(&x))
-}
-
-/// The input as an exact surface, divided by `2^shift` as in [`scaled_input`] (only when
-/// its lengths are far from 1), and the shift.
-fn exact_input(case: FlipCase) -> (penner::io::Surface, i64) {
-    let far = !in_range(&case.lengths::<f64>(()));
-    let surface = match case {
-        FlipCase::Exact(s) => s,
-        FlipCase::Decimal(d) => d.into_surface(),
-    };
-    match surface.normalized_scale().filter(|_| far) {
-        Some((scaled, k)) => (scaled, k),
-        None => (surface, 0),
-    }
-}
-
-/// `--precision dd`: refine in double-double (residuals in `Dd`, the `f64` factor), then
-/// certify the double-double `u` (taken exactly) at `bits` of MPFR interval arithmetic:
-/// double-double has no directed rounding, so it cannot carry the proof itself.
-pub(super) fn prove_dd(
-    sol: &penner::uniformization::Uniformization,
-    bits: u32,
-    tolerance: f64,
-) -> Result<Proof, CertificateError> {
-    let r = refine::<Dd>(sol, (), tolerance, 30)?;
-    let u: Vec<rug::Rational> =
-        r.u.iter()
-            .map(|x| x.to_rational().unwrap_or_default())
-            .collect();
-    certify_near(sol, None, &u, r.residual_max(), bits)
-}
-
 /// Run `penner uniformize`.
 #[allow(clippy::too_many_lines)] // solve, refine, certify and write, in order
 pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
@@ -135,7 +75,7 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         return super::uniformize_hyperbolic::run(&shown, &case, o, bits, tolerance);
     }
     if o.extra.sphere {
-        let (surface, shift) = exact_input(case);
+        let (surface, shift) = rescaled(&into_surface(case));
         let lengths = surface.lengths::<f64>(());
         let precision = match o.precision {
             "f64" => super::uniformize_sphere::SpherePrecision {
@@ -158,14 +98,15 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         );
     }
     if !case.mesh().is_closed() {
-        let (mesh, lengths, shift) = scaled_input(case);
+        let (surface, shift) = rescaled(&into_surface(case));
+        let lengths = surface.lengths::<f64>(());
         let input = super::uniformize_boundary::Input {
             shown: &shown,
-            mesh: &mesh,
+            surface: &surface,
+            mesh: &surface.mesh,
             lengths: &lengths,
             shift,
             bits,
-            tolerance,
         };
         return super::uniformize_boundary::run(&input, o);
     }

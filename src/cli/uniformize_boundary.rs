@@ -10,9 +10,10 @@ use penner::scalar::{Certified, Sign};
 use penner::uniformization::boundary::{
     flat_with_even_boundary, uniformize_with_boundary, BoundaryUniformization,
 };
-use penner::uniformization::certificate::{prove, CertificateOutcome};
-use penner::uniformization::claim_form::to_claim;
 use penner::uniformization::layout::{face_orientations, unfold, unfold_within};
+use penner::uniformization::pipeline::{
+    certify_solution, double_surface, CertifiedMetric, PipelineError, Precision,
+};
 use penner::uniformization::svg::{render_layout_svg, scaled_lengths_f64};
 use penner::uniformization::UniformizeOptions;
 use std::fmt::Write as _;
@@ -23,6 +24,8 @@ use std::path::Path;
 pub struct Input<'a> {
     /// The file name shown.
     pub shown: &'a str,
+    /// The surface (with boundary), after the rescaling by `2^shift`.
+    pub surface: &'a penner::io::Surface,
     /// The triangulation (with boundary).
     pub mesh: &'a penner::mesh::Mesh,
     /// Its lengths.
@@ -31,8 +34,6 @@ pub struct Input<'a> {
     pub shift: i64,
     /// MPFR bits and refinement tolerance.
     pub bits: u32,
-    /// Refinement tolerance.
-    pub tolerance: f64,
 }
 
 /// Run `penner uniformize` on a surface with boundary.
@@ -106,12 +107,20 @@ pub fn run(i: &Input<'_>, o: &super::uniformize::Options<'_>) -> Result<u8, CliE
     if let Some(path) = o.extra.svg.as_deref() {
         out.push_str(&write_svg(path, &b)?);
     }
-    let proof = if o.precision == "dd" {
-        super::uniformize::prove_dd(sol, i.bits, i.tolerance)
-    } else {
-        prove(sol, i.bits, i.tolerance)
-    }
-    .map_err(|e| super::uniformize::certificate_error(shown, e))?;
+    let precision = o.precision.parse::<Precision>().map_err(CliError::Input)?;
+    let (Some(double), Some(lengths)) = (
+        double_surface(i.surface, &b.double),
+        b.double.pull_back_edges(i.lengths),
+    ) else {
+        return Err(CliError::NotConverged(format!(
+            "{shown}: not certified: the exact metric could not be pulled back to the double"
+        )));
+    };
+    let c = certify_solution(&double, &lengths, sol, precision).map_err(|e| match e {
+        PipelineError::Input(e) => CliError::Input(format!("{shown}: {e}")),
+        PipelineError::Certificate(e) => super::uniformize::certificate_error(shown, e),
+    })?;
+    let proof = &c.proof;
     let _ = writeln!(
         out,
         "converged: max |Θ − θ| = {:e} (f64), {:e} after refinement",
@@ -122,14 +131,12 @@ pub fn run(i: &Input<'_>, o: &super::uniformize::Options<'_>) -> Result<u8, CliE
         i.mesh.n_vertices(),
         i.mesh.n_faces()
     );
-    let claim = match &proof.outcome {
-        CertificateOutcome::Holds { residual, .. } => Some(to_claim(
-            &proof.data,
-            &sol.mesh.face_list(),
-            *residual,
-            i.bits,
-        )),
-        CertificateOutcome::Undecided { .. } => None,
+    let claim = c.claim(&double, sol, i.bits);
+    let holds = match &c.metric {
+        CertifiedMetric::Input => "certified on the double for the input's exact metric (by symmetry and uniqueness it solves the boundary problem on copy 1, B79)".to_string(),
+        CertifiedMetric::Rounded { reason } => format!(
+            "certified on the double for the binary64-rounded lengths of the input, not its exact metric ({reason}; by symmetry and uniqueness it solves the boundary problem on copy 1, B79)"
+        ),
     };
     let status = super::uniformize::report_certificate(
         &mut out,
@@ -137,7 +144,7 @@ pub fn run(i: &Input<'_>, o: &super::uniformize::Options<'_>) -> Result<u8, CliE
         claim,
         o.output,
         &super::uniformize::Certified {
-            holds: "certified on the double (by symmetry and uniqueness it solves the boundary problem on copy 1, B79)",
+            holds: &holds,
             written: &written,
         },
     )?;

@@ -37,7 +37,8 @@ use super::refine::{refine, refine_on};
 use super::targets::Targets;
 use super::UniformizeError;
 use crate::io::json::edge_order;
-use crate::io::Surface;
+use crate::io::{Metric, Surface};
+use crate::mesh::double::Double;
 use crate::scalar::{Dd, Interval, Mpfr, Precision as Bits, Real};
 use rug::Rational;
 use serde_json::Value;
@@ -156,22 +157,12 @@ impl ClosedOutcome {
     /// surface as given with its Euclidean flips (`euclidean_flips`) for
     /// [`CertifiedMetric::Input`], about `T₀` with binary64 lengths otherwise.
     pub fn claim(&self) -> Option<Value> {
-        let proof = self.proof.as_ref()?;
-        let CertificateOutcome::Holds { residual, .. } = &proof.outcome else {
-            return None;
+        let c = Certification {
+            proof: self.proof.clone()?,
+            metric: self.metric.clone()?,
+            t0_metric: self.t0_metric.clone(),
         };
-        let final_faces = self.solution.mesh.face_list();
-        match (&self.metric, &self.t0_metric) {
-            (Some(CertifiedMetric::Input), Some(m)) => Some(to_claim_on_input(
-                &proof.data,
-                &self.surface,
-                &m.euclidean,
-                &final_faces,
-                *residual,
-                self.bits,
-            )),
-            _ => Some(to_claim(&proof.data, &final_faces, *residual, self.bits)),
-        }
+        c.claim(&self.surface, &self.solution, self.bits)
     }
 }
 
@@ -206,7 +197,7 @@ pub fn uniformize_closed(
         &UniformizeOptions::default(),
         progress,
     )?;
-    let (bits, tolerance) = options.precision.bits_and_tolerance();
+    let (bits, _) = options.precision.bits_and_tolerance();
     let mut out = ClosedOutcome {
         surface,
         shift,
@@ -219,19 +210,71 @@ pub fn uniformize_closed(
     if !out.solution.converged() || !options.certify {
         return Ok(out);
     }
+    let c = certify_solution(&out.surface, &lengths, &out.solution, options.precision)?;
+    out.proof = Some(c.proof);
+    out.metric = Some(c.metric);
+    out.t0_metric = c.t0_metric;
+    Ok(out)
+}
+
+/// A proof attempt by [`certify_solution`], the metric it is about, and (for the input
+/// metric) the replay to `T₀` that the claim records.
+#[derive(Clone, Debug)]
+pub struct Certification {
+    /// The refinement and certificate outcome.
+    pub proof: Proof,
+    /// The metric the proof is about.
+    pub metric: CertifiedMetric,
+    t0_metric: Option<T0Metric>,
+}
+
+impl Certification {
+    /// The `uniformization` claim when the proof holds: about `surface` (the closed
+    /// surface given to [`certify_solution`]) with its Euclidean flips for the input
+    /// metric, about `T₀` with binary64 lengths otherwise.
+    pub fn claim(&self, surface: &Surface, sol: &Uniformization, bits: u32) -> Option<Value> {
+        let CertificateOutcome::Holds { residual, .. } = &self.proof.outcome else {
+            return None;
+        };
+        let final_faces = sol.mesh.face_list();
+        Some(match (&self.metric, &self.t0_metric) {
+            (CertifiedMetric::Input, Some(m)) => to_claim_on_input(
+                &self.proof.data,
+                surface,
+                &m.euclidean,
+                &final_faces,
+                *residual,
+                bits,
+            ),
+            _ => to_claim(&self.proof.data, &final_faces, *residual, bits),
+        })
+    }
+}
+
+/// Refine and certify a converged closed-surface solve `sol` of `surface` (whose binary64
+/// lengths `lengths` the solve was given, on `surface.mesh`) at `precision`: for the
+/// input's exact metric when its Euclidean flips to `T₀` replay on enclosures and `T₀` is
+/// certified Delaunay for it and the box holds, otherwise for the binary64-rounded metric,
+/// with the reason (module documentation).
+pub fn certify_solution(
+    surface: &Surface,
+    lengths: &[f64],
+    sol: &Uniformization,
+    precision: Precision,
+) -> Result<Certification, PipelineError> {
+    let (bits, tolerance) = precision.bits_and_tolerance();
     let prec = Bits::new(u64::from(bits)).map_err(|_| CertificateError::Bits(bits.into()))?;
-    let sol = &out.solution;
     let replay = input_on_t0(
         sol,
-        &out.surface.mesh,
-        &lengths,
-        out.surface.lengths::<Mpfr>(prec),
-        out.surface.lengths::<Interval<Mpfr>>(prec),
+        &surface.mesh,
+        lengths,
+        surface.lengths::<Mpfr>(prec),
+        surface.lengths::<Interval<Mpfr>>(prec),
     )
-    .and_then(|m| t0_delaunay_for_input(&out.surface, sol, m));
+    .and_then(|m| t0_delaunay_for_input(surface, sol, m));
     let reason = match replay {
         Ok(m) => {
-            let proof = match options.precision {
+            let proof = match precision {
                 Precision::Dd => {
                     let l0 = m
                         .values
@@ -244,29 +287,31 @@ pub fn uniformize_closed(
                 }
                 _ => prove_on(sol, Some(&m), bits, tolerance)?,
             };
-            if matches!(proof.outcome, CertificateOutcome::Holds { .. }) {
-                out.proof = Some(proof);
-                out.metric = Some(CertifiedMetric::Input);
-                out.t0_metric = Some(m);
-                return Ok(out);
-            }
-            match &proof.outcome {
-                CertificateOutcome::Undecided { reason } => reason.clone(),
-                CertificateOutcome::Holds { .. } => unreachable!("returned above"),
+            match proof.outcome {
+                CertificateOutcome::Holds { .. } => {
+                    return Ok(Certification {
+                        proof,
+                        metric: CertifiedMetric::Input,
+                        t0_metric: Some(m),
+                    })
+                }
+                CertificateOutcome::Undecided { reason } => reason,
             }
         }
         Err(reason) => reason,
     };
-    let proof = match options.precision {
+    let proof = match precision {
         Precision::Dd => {
             let r = refine::<Dd>(sol, (), tolerance, 30).map_err(CertificateError::from)?;
             certify_near(sol, None, &exact(&r.u), r.residual_max(), bits)?
         }
         _ => prove(sol, bits, tolerance)?,
     };
-    out.proof = Some(proof);
-    out.metric = Some(CertifiedMetric::Rounded { reason });
-    Ok(out)
+    Ok(Certification {
+        proof,
+        metric: CertifiedMetric::Rounded { reason },
+        t0_metric: None,
+    })
 }
 
 /// `m`, when `T₀` is certified intrinsic Delaunay for the input's exact metric (exactly
@@ -312,4 +357,16 @@ pub fn rescaled(surface: &Surface) -> (Surface, i64) {
         Some((s, k)) => (s, k),
         None => (surface.clone(), 0),
     }
+}
+
+/// The double `D` of a surface with boundary (B79) as a closed [`Surface`] with `surface`'s
+/// exact metric pulled back to both copies (no positions: copy 2 is the mirror image, not
+/// an embedding). `None` when `double` is not the double of `surface.mesh`.
+pub fn double_surface(surface: &Surface, double: &Double) -> Option<Surface> {
+    let metric = match &surface.metric {
+        Metric::Lengths(v) => Metric::Lengths(double.pull_back_edges(v)?),
+        Metric::SquaredLengths(v) => Metric::SquaredLengths(double.pull_back_edges(v)?),
+    };
+    let name = format!("double of {}", surface.name);
+    Surface::new(name, double.mesh.clone(), metric, None).ok()
 }

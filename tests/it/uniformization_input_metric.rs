@@ -356,3 +356,56 @@ fn t24_ties_across_flat_hinges_are_decided_exactly_with_positions() {
         other => panic!("a tie without positions cannot be decided: {other:?}"),
     }
 }
+
+/// A disk (a hexagonal cap with an inner ring, exact decimal positions: irrational
+/// lengths) with `--flat`'s even boundary angles: the solve on the double is certified for
+/// the input's exact metric pulled back to both copies (`double_surface`), its claim
+/// holds, and with one pulled-back squared length moved by 10⁻⁶ it does not.
+#[test]
+fn b79_boundary_double_certifies_the_exact_metric_of_decimal_positions() {
+    use penner::uniformization::boundary::{flat_with_even_boundary, uniformize_with_boundary};
+    use penner::uniformization::pipeline::{certify_solution, double_surface};
+    let ring = |r: &str, k: usize, z: &str| -> Vec<[Rational; 3]> {
+        let r = decimal(r);
+        (0..k)
+            .map(|i| {
+                let a = std::f64::consts::TAU * i as f64 / k as f64 + 0.1;
+                let c = Rational::from_f64((a.cos() * 1000.0).round() / 1000.0).unwrap();
+                let s = Rational::from_f64((a.sin() * 1000.0).round() / 1000.0).unwrap();
+                [Rational::from(&r * &c), Rational::from(&r * &s), decimal(z)]
+            })
+            .collect()
+    };
+    let mut positions = vec![[decimal("0.013"), decimal("-0.021"), decimal("0.37")]];
+    positions.extend(ring("0.5", 6, "0.29"));
+    positions.extend(ring("1", 6, "0"));
+    let mut faces = Vec::new();
+    for i in 0..6u32 {
+        let (a, b) = (1 + i, 1 + (i + 1) % 6);
+        let (c, d) = (7 + i, 7 + (i + 1) % 6);
+        faces.extend([[0, a, b], [a, c, d], [a, d, b]]);
+    }
+    let mesh = Mesh::from_faces(13, &faces).expect("disk");
+    let sq = penner::io::surface::squared_lengths_from_positions(&mesh, &positions);
+    let s = Surface::new("cap", mesh, Metric::SquaredLengths(sq), Some(positions)).unwrap();
+    let t = flat_with_even_boundary(&s.mesh);
+    let l = s.lengths::<f64>(());
+    let opts = penner::uniformization::UniformizeOptions::default();
+    let b = uniformize_with_boundary(&s.mesh, &l, &t, &opts, &mut |_| {}).expect("solves");
+    assert!(b.solution.converged());
+    let d = double_surface(&s, &b.double).expect("the double's metric");
+    let dl = b.double.pull_back_edges(&l).unwrap();
+    let c = certify_solution(&d, &dl, &b.solution, P::default()).expect("certifies");
+    assert_eq!(c.metric, CertifiedMetric::Input);
+    let claim = c.claim(&d, &b.solution, 256).expect("holds");
+    assert_eq!(answer(&claim), ClaimVerdict::Holds);
+    let mut moved = claim.clone();
+    let q: Rational = moved["surface"]["squared_lengths"][3]
+        .as_str()
+        .unwrap()
+        .parse()
+        .unwrap();
+    moved["surface"]["squared_lengths"][3] =
+        Value::String((q * Rational::from((1_000_001, 1_000_000))).to_string());
+    assert_ne!(answer(&moved), ClaimVerdict::Holds, "another metric");
+}
