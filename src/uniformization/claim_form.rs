@@ -333,8 +333,16 @@ fn recheck_on_input(
         Precision::new(u64::from(bits)).map_err(|_| CertificateError::Bits(u64::from(bits)))?;
     let mesh = &surface.mesh;
     let order = edge_order(mesh);
-    let edge = |k: usize| Edge(order[k] as u32);
-    let sequence: Vec<Edge> = euclidean.iter().map(|&k| edge(k)).collect();
+    let edges = order.len();
+    let mut sequence = Vec::with_capacity(euclidean.len());
+    for (position, &index) in euclidean.iter().enumerate() {
+        let &e = order.get(index).ok_or(ClaimFormError::EuclideanFlipIndex {
+            position,
+            index,
+            edges,
+        })?;
+        sequence.push(Edge(e as u32));
+    }
     let (t0, l0) = match replay_enclosed(mesh, surface.lengths::<I>(prec), &sequence) {
         Ok(x) => x,
         Err(reason) => return undecided(reason),
@@ -346,7 +354,15 @@ fn recheck_on_input(
             "edge {k} of T₀ is not certified intrinsic Delaunay for the surface's metric"
         ));
     }
-    let flips: Vec<Edge> = claim.flips.iter().map(|&k| edge(k)).collect();
+    let mut flips = Vec::with_capacity(claim.flips.len());
+    for (position, &index) in claim.flips.iter().enumerate() {
+        let &e = order.get(index).ok_or(ClaimFormError::FlipIndex {
+            position,
+            index,
+            edges,
+        })?;
+        flips.push(Edge(e as u32));
+    }
     let (final_mesh, _) =
         carry_lengths_from(&t0, l0.clone(), &flips).map_err(CertificateError::from)?;
     if final_mesh.face_list() != claim.final_faces {

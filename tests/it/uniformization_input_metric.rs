@@ -22,33 +22,17 @@ use serde_json::Value;
 
 const BITS: u32 = 320;
 
-/// An octahedron with vertices `±e_i` moved by the decimal offsets `d` (exact decimals),
+/// The octahedron of `builders` (vertices `±e_i`) moved by the decimal offsets `d`,
 /// and cone angles `4π/3` at every vertex (Gauss–Bonnet: `6·(2π − 4π/3) = 4π`).
 fn octahedron(d: &[[&str; 3]; 6]) -> (Surface, Targets) {
-    let base = [
-        [1, 0, 0],
-        [-1, 0, 0],
-        [0, 1, 0],
-        [0, -1, 0],
-        [0, 0, 1],
-        [0, 0, -1],
-    ];
-    let positions: Vec<[Rational; 3]> = base
+    let penner::mesh::builders::Embedded {
+        mesh, positions, ..
+    } = penner::mesh::builders::octahedron();
+    let positions: Vec<[Rational; 3]> = positions
         .iter()
         .zip(d)
-        .map(|(b, o)| [0, 1, 2].map(|i| decimal(o[i]) + b[i]))
+        .map(|(b, o)| [0, 1, 2].map(|i| decimal(o[i]) + &b[i]))
         .collect();
-    let faces = [
-        [0, 2, 4],
-        [2, 1, 4],
-        [1, 3, 4],
-        [3, 0, 4],
-        [2, 0, 5],
-        [1, 2, 5],
-        [3, 1, 5],
-        [0, 3, 5],
-    ];
-    let mesh = Mesh::from_faces(6, &faces).expect("octahedron");
     let sq = penner::io::surface::squared_lengths_from_positions(&mesh, &positions);
     let s = Surface::new(
         "octahedron",
