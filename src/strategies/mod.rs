@@ -222,15 +222,19 @@ pub fn conformally_scaled(s: Surface) -> impl Strategy<Value = (Surface, Vec<Rat
 }
 
 /// A valid surface with a triangle within `10⁻ᵏ` (k = 3..=60) of violating the triangle
-/// inequality: the two-triangle sphere with lengths (a, b, a + b − ε), the one-vertex
+/// inequality: the two-triangle sphere with lengths (a, b, a + b − ε),
+/// `ε = 10⁻ᵏ·min(a, b)/16` (near also relative to its size), the one-vertex
 /// torus with the same lengths (both faces near-degenerate), or a planar quadrilateral
 /// with a vertex at height 2⁻⁽ᵏ⁺¹⁰⁾ above a diagonal.
 pub fn near_degenerate_surface() -> impl Strategy<Value = Surface> {
     (0usize..3, 1u32..=1000, 1u32..=1000, 3u32..=60).prop_map(|(kind, a, b, k)| {
         let (a, b) = (Rational::from((a, 100)), Rational::from((b, 100)));
-        let eps = Rational::from((1, Integer::from(Integer::u_pow_u(10, k))));
+        // ε = 10⁻ᵏ·min(a, b)/16: near-degenerate relative to the triangle's size too, so
+        // 16·Area² ≈ 8ab(a + b)ε < 10⁻ᵏ·(a + b)⁴/16 (ab·min(a, b) ≤ (a + b)³/8).
+        let eps = Rational::from((1, Integer::from(Integer::u_pow_u(10, k)) * 16u32))
+            * Rational::from(a.clone().min(b.clone()));
         let c = Rational::from(&a + &b) - eps;
-        // a + b − c = ε > 0, and a + c − b = 2a − ε > 0 since ε ≤ 10⁻³ < 2a.
+        // a + b − c = ε > 0, and a + c − b = 2a − ε > 0 since ε < a.
         let lengths = vec![a, b, c];
         match kind {
             0 => Surface {
