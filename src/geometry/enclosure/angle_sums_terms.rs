@@ -81,57 +81,63 @@ fn term_b33_quarter_count_decides_apex_angles_beyond_a_full_turn() {
 /// rotations are needed (a rotation tried alone, or the other order, misses some `α`).
 #[test]
 fn term_b33_last_rotation_is_the_one_with_a_positive_real_part() {
-    let mut product = 0;
     let (mut first, mut second) = (0, 0);
-    for j in 0..57 {
-        let a = 0.2 + 0.05 * f64::from(j) + 1e-3;
-        let (m, l) = fan(&[a, a, a]);
-        let e = enclose(&m, &l, 128);
-        let r = reference_apex(&m, &l);
-        assert!(contains(&e.theta[0], &r), "α = {a}: {:?}", e.theta[0]);
-        if e.fallback.contains(&0) {
-            continue;
-        }
-        product += 1;
-        // Which rotation the reference needs: Q_{n−1} = ⌊2α·2/π⌋ (two corners), and
-        // m = Q_{n−1} + 1 exactly when θ − (Q_{n−1}+1)π/2 < π/2.
-        let q = (2.0 * 2.0 * a / std::f64::consts::PI).floor();
-        if r.as_float().to_f64() - (q + 1.0) * std::f64::consts::FRAC_PI_2
-            < std::f64::consts::FRAC_PI_2
-        {
-            first += 1;
-        } else {
-            second += 1;
+    let quarter = std::f64::consts::FRAC_PI_2;
+    for k in 3..=6 {
+        for j in 0..57 {
+            let a = 0.2 + 0.05 * f64::from(j) + 1e-3;
+            let (m, l) = fan(&vec![a; k]);
+            let e = enclose(&m, &l, 128);
+            let r = reference_apex(&m, &l);
+            assert!(contains(&e.theta[0], &r), "{k}×{a}: {:?}", e.theta[0]);
+            // Every partial sum off the axes by 10⁻⁴: the count is certified, so the
+            // product path must decide (a wrong quarter or rotation falls back instead).
+            let off_axes = (1..k).all(|i| {
+                let t = i as f64 * a / quarter;
+                (t - t.round()).abs() > 1e-4
+            });
+            if off_axes {
+                assert!(!e.fallback.contains(&0), "{k}×{a}: fell back");
+            }
+            // Which rotation the reference needs: Q_{n−1} = ⌊(k−1)α/(π/2)⌋, and
+            // m = Q_{n−1} + 1 exactly when θ − (Q_{n−1}+1)π/2 < π/2.
+            let q = ((k - 1) as f64 * a / quarter).floor();
+            if r.as_float().to_f64() - (q + 1.0) * quarter < quarter {
+                first += 1;
+            } else {
+                second += 1;
+            }
         }
     }
-    assert!(
-        product >= 50 && first >= 10 && second >= 10,
-        "{product} {first} {second}"
-    );
+    assert!(first >= 40 && second >= 40, "{first} {second}");
 }
 
-/// Term "not guessed on an axis": apex corners of exactly π/2 (3-4-5 right triangles,
-/// exact in binary64) put the running products on the axes; the count is then not
-/// certified and the apex takes the per-corner fallback, which still holds 2π.
+/// Term "not guessed on an axis": apex corners of exactly π/2, π/2, π/2 (3-4-5 right
+/// triangles, exact in binary64) and then 2: the first three running products lie on the
+/// axes, so their quarters are not certified and the apex takes the per-corner fallback,
+/// which holds `3π/2 + 2`. Counting on from a stale quarter would miss a whole turn (the
+/// three unknown steps span 3π/2, the fourth closes past 2π).
 #[test]
 fn term_b33_products_on_an_axis_fall_back() {
     let faces = [[0, 1, 2], [0, 2, 3], [0, 3, 4], [0, 4, 1]];
     let m = Mesh::from_faces(5, &faces).expect("fan");
+    let spoke = [3.0, 4.0, 3.0, 4.0];
     let mut len = vec![0.0; m.n_edges()];
     for e in m.edges() {
         let h = e.halfedge();
         let (a, b) = (m.tail(h).idx(), m.tip(h).idx());
         len[e.idx()] = match (a.min(b), a.max(b)) {
-            (0, v) if v % 2 == 1 => 3.0,
-            (0, _) => 4.0,
+            (0, v) => spoke[v - 1],
+            (1, 4) => (25.0 - 24.0 * 2f64.cos()).sqrt(),
             _ => 5.0,
         };
     }
     let e = enclose(&m, &len, 128);
     assert!(e.fallback.contains(&0), "the apex must fall back");
-    let two_pi = Mpfr(Float::with_val(512, Constant::Pi) * 2u32);
-    assert!(contains(&e.theta[0], &two_pi), "{:?}", e.theta[0]);
-    // Control: the same fan with apex corners 0.5 off the axes takes the product path.
+    let r = reference_apex(&m, &len);
+    assert!(r.as_float().to_f64() > 6.7, "3π/2 + 2");
+    assert!(contains(&e.theta[0], &r), "{:?}", e.theta[0]);
+    // Control: the same fan with apex corners off the axes takes the product path.
     let (m, l) = fan(&[1.4, 1.7, 1.6, 1.5]);
     assert!(!enclose(&m, &l, 128).fallback.contains(&0));
 }
