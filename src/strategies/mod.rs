@@ -232,7 +232,7 @@ pub fn near_degenerate_surface() -> impl Strategy<Value = Surface> {
         // ε = 10⁻ᵏ·min(a, b)/16: near-degenerate relative to the triangle's size too, so
         // 16·Area² ≈ 8ab(a + b)ε < 10⁻ᵏ·(a + b)⁴/16 (ab·min(a, b) ≤ (a + b)³/8).
         let eps = Rational::from((1, Integer::from(Integer::u_pow_u(10, k)) * 16u32))
-            * Rational::from(a.clone().min(b.clone()));
+            * a.clone().min(b.clone());
         let c = Rational::from(&a + &b) - eps;
         // a + b − c = ε > 0, and a + c − b = 2a − ε > 0 since ε < a.
         let lengths = vec![a, b, c];
