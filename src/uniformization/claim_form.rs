@@ -136,24 +136,7 @@ pub fn to_claim(
         positions: None,
         name: "uniformization input (intrinsic Delaunay)".into(),
     };
-    let order = edge_order(&data.t0);
-    let mut user = vec![0usize; order.len()];
-    for (k, &e) in order.iter().enumerate() {
-        user[e] = k;
-    }
-    let dec = |q: &Rational| exact_decimal(q).unwrap_or_else(|| q.to_string());
-    json!({
-        "penner_claim": 1,
-        "kind": "uniformization",
-        "max_bits": bits,
-        "surface": to_value(&surface),
-        "targets": data.targets.over_pi().iter().map(ToString::to_string).collect::<Vec<_>>(),
-        "flips": data.flip_sequence.iter().map(|e| user[e.idx()]).collect::<Vec<_>>(),
-        "u": data.u.iter().map(dec).collect::<Vec<_>>(),
-        "radius": dec(&data.radius),
-        "final_faces": final_faces,
-        "residual_bound": dec(&Rational::from_f64(residual_bound).unwrap_or_default()),
-    })
+    claim_value(data, &surface, None, final_faces, residual_bound, bits)
 }
 
 /// The certificate `data` (whose `t0` is `input`'s mesh after the Euclidean flips
@@ -168,25 +151,48 @@ pub fn to_claim_on_input(
     residual_bound: f64,
     bits: u32,
 ) -> Value {
-    let order = edge_order(&input.mesh);
+    claim_value(
+        data,
+        input,
+        Some(euclidean),
+        final_faces,
+        residual_bound,
+        bits,
+    )
+}
+
+/// The `uniformization` claim about `surface`, with `euclidean_flips` when given; flips
+/// as indices into `surface`'s edge order.
+fn claim_value(
+    data: &CertificateData,
+    surface: &Surface,
+    euclidean: Option<&[Edge]>,
+    final_faces: &[[u32; 3]],
+    residual_bound: f64,
+    bits: u32,
+) -> Value {
+    let order = edge_order(&surface.mesh);
     let mut user = vec![0usize; order.len()];
     for (k, &e) in order.iter().enumerate() {
         user[e] = k;
     }
     let dec = |q: &Rational| exact_decimal(q).unwrap_or_else(|| q.to_string());
-    json!({
+    let mut v = json!({
         "penner_claim": 1,
         "kind": "uniformization",
         "max_bits": bits,
-        "surface": to_value(input),
-        "euclidean_flips": euclidean.iter().map(|e| user[e.idx()]).collect::<Vec<_>>(),
+        "surface": to_value(surface),
         "targets": data.targets.over_pi().iter().map(ToString::to_string).collect::<Vec<_>>(),
         "flips": data.flip_sequence.iter().map(|e| user[e.idx()]).collect::<Vec<_>>(),
         "u": data.u.iter().map(dec).collect::<Vec<_>>(),
         "radius": dec(&data.radius),
         "final_faces": final_faces,
         "residual_bound": dec(&Rational::from_f64(residual_bound).unwrap_or_default()),
-    })
+    });
+    if let Some(flips) = euclidean {
+        v["euclidean_flips"] = json!(flips.iter().map(|e| user[e.idx()]).collect::<Vec<_>>());
+    }
+    v
 }
 
 /// The checks of a claim that need no arithmetic beyond ℚ: binary64 lengths, flip indices
