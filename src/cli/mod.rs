@@ -11,6 +11,7 @@ mod input;
 mod output;
 mod pack;
 mod pack_maximal;
+mod progress;
 mod replay;
 mod report;
 mod uniformize;

@@ -9,6 +9,7 @@ pub mod certify;
 pub mod certify_circles;
 pub mod certify_energy;
 pub mod certify_hyperbolic;
+pub mod check_surface;
 pub mod claim;
 pub mod claim_circles;
 pub mod claim_hyperbolic;

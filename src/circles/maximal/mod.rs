@@ -14,6 +14,7 @@
 
 pub mod hyperbolic;
 pub mod layout;
+pub mod pipeline;
 pub mod solve;
 pub mod sphere;
 pub mod stopping;
