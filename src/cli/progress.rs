@@ -3,7 +3,7 @@
 //! last one finished, and one bar per running long check over its elements
 //! ([`ElementBars`]). Nothing is drawn on a pipe or with `--json`.
 
-use penner::oracle::check_surface::CheckOptions;
+use penner::oracle::check_surface::{select, select_controls, CheckOptions};
 use penner::oracle::registry::Row;
 use penner::oracle::Surface;
 
@@ -19,7 +19,6 @@ pub fn with_check_progress<R>(
     if json || !std::io::stderr().is_terminal() {
         return run(options, &|_| {});
     }
-    use penner::oracle::check_surface::{select, select_controls};
     let precs = options.precisions.len() + usize::from(options.negative_controls);
     let chosen = if options.negative_controls {
         select_controls(&options.only)
