@@ -317,7 +317,7 @@ pub fn recheck(
         Precision::new(u64::from(bits)).map_err(|_| CertificateError::Bits(u64::from(bits)))?;
     let (final_mesh, _) = carry_lengths::<Mpfr>(&data.t0, &data.l0, &data.flip_sequence, prec)
         .map_err(CertificateError::from)?;
-    if final_mesh.face_list() != claim.final_faces {
+    if !same_faces(&final_mesh.face_list(), &claim.final_faces) {
         return Err(ClaimFormError::FinalFaces);
     }
     let outcome = check_certificate(&data, bits)?;
@@ -371,7 +371,7 @@ fn recheck_on_input(
     }
     let (final_mesh, _) =
         carry_lengths_from(&t0, l0.clone(), &flips).map_err(CertificateError::from)?;
-    if final_mesh.face_list() != claim.final_faces {
+    if !same_faces(&final_mesh.face_list(), &claim.final_faces) {
         return Err(ClaimFormError::FinalFaces);
     }
     let data = CertificateData {
@@ -404,4 +404,46 @@ fn within_residual_bound(
         }
     }
     outcome
+}
+
+/// Whether two face lists are the same triangle faces up to the order of the faces and the
+/// starting corner of each (orientation kept): a triangulation re-read from a claim and
+/// flipped may number its faces' slots and corners differently from the writer's, while
+/// every flip acts on the same faces (the re-check computes on its own replay; this field
+/// is the claim's statement of where the flips end).
+pub fn same_faces(a: &[[u32; 3]], b: &[[u32; 3]]) -> bool {
+    let canonical = |faces: &[[u32; 3]]| {
+        let mut v: Vec<[u32; 3]> = faces
+            .iter()
+            .map(|&[x, y, z]| {
+                if x <= y && x <= z {
+                    [x, y, z]
+                } else if y <= z {
+                    [y, z, x]
+                } else {
+                    [z, x, y]
+                }
+            })
+            .collect();
+        v.sort_unstable();
+        v
+    };
+    a.len() == b.len() && canonical(a) == canonical(b)
+}
+
+#[cfg(test)]
+mod same_faces_tests {
+    use super::same_faces;
+
+    /// Face order and starting corners do not matter; orientation, a vertex and a missing
+    /// or repeated face do.
+    #[test]
+    fn same_faces_up_to_order_and_rotation_only() {
+        let a = [[0, 1, 2], [2, 1, 3]];
+        assert!(same_faces(&a, &[[1, 3, 2], [2, 0, 1]]));
+        assert!(!same_faces(&a, &[[0, 2, 1], [2, 1, 3]]), "orientation");
+        assert!(!same_faces(&a, &[[0, 1, 2], [2, 1, 4]]), "a vertex");
+        assert!(!same_faces(&a, &[[0, 1, 2]]), "a face missing");
+        assert!(!same_faces(&a, &[[0, 1, 2], [0, 1, 2]]), "a face repeated");
+    }
 }

@@ -219,7 +219,7 @@ pub fn recheck(
             index: claim.flips.first().copied().unwrap_or_default(),
         },
     })?;
-    if final_mesh.face_list() != claim.final_faces {
+    if !super::claim_form::same_faces(&final_mesh.face_list(), &claim.final_faces) {
         return Err(SphereClaimError::FinalFaces);
     }
     check_pole(&final_mesh, pole).map_err(pole_err)?;

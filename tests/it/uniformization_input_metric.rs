@@ -381,7 +381,7 @@ fn b79_boundary_double_certifies_the_exact_metric_of_decimal_positions() {
     let dl = b.double.pull_back_edges(&l).unwrap();
     let c = certify_solution(&d, &dl, &b.solution, P::default()).expect("certifies");
     assert_eq!(c.metric, CertifiedMetric::Input);
-    let claim = c.claim(&d, &b.solution, 256).expect("holds");
+    let claim = c.claim(&d, 256).expect("holds");
     assert_eq!(answer(&claim), ClaimVerdict::Holds);
     let mut moved = claim.clone();
     let q: Rational = moved["surface"]["squared_lengths"][3]
@@ -392,4 +392,53 @@ fn b79_boundary_double_certifies_the_exact_metric_of_decimal_positions() {
     moved["surface"]["squared_lengths"][3] =
         Value::String((q * Rational::from((1_000_001, 1_000_000))).to_string());
     assert_ne!(answer(&moved), ClaimVerdict::Holds, "another metric");
+}
+
+/// The claim's final triangulation is the one its own flips reach: on a 4×4 torus of
+/// revolution (OBJ positions as shortest round-trip decimals, flat targets) the MPFR refinement flips
+/// near-ties differently from the `f64` solve (B69), so the final faces of the solve are not
+/// those of the certificate's flip sequence. The written claim holds under
+/// `penner certify`; the faces of the `f64` solve in its place are refused.
+#[test]
+fn b69_claim_final_faces_follow_the_refined_flips() {
+    let (n, m, big, small) = (4usize, 4usize, 2.0f64, 0.7f64);
+    let mut obj = String::new();
+    for i in 0..n {
+        for j in 0..m {
+            let (a, b) = (
+                std::f64::consts::TAU * i as f64 / n as f64,
+                std::f64::consts::TAU * j as f64 / m as f64,
+            );
+            let w = big + small * b.cos();
+            obj += &format!(
+                "v {:e} {:e} {:e}\n",
+                w * a.cos(),
+                w * a.sin(),
+                small * b.sin()
+            );
+        }
+    }
+    let id = |i: usize, j: usize| (i % n) * m + (j % m) + 1;
+    for i in 0..n {
+        for j in 0..m {
+            let (a, b, c, d) = (id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+            obj += &format!("f {a} {b} {c}\nf {a} {c} {d}\n");
+        }
+    }
+    let dir = crate::support::scratch("torus-final-faces");
+    let path = dir.join("torus4.obj");
+    std::fs::write(&path, obj).unwrap();
+    let torus = penner::io::read_path(&path).expect("reads");
+    let t = Targets::flat(torus.mesh.n_vertices());
+    let out = uniformize_closed(&torus, &t, &Options::default(), &mut |_| {}).expect("solves");
+    let proof = out.proof.as_ref().expect("converged");
+    assert_ne!(
+        proof.data.flip_sequence, out.solution.flip_sequence,
+        "the test wants a refinement that flips differently"
+    );
+    let claim = out.claim().expect("certified");
+    assert_eq!(answer(&claim), ClaimVerdict::Holds);
+    let mut stale = claim.clone();
+    stale["final_faces"] = serde_json::json!(out.solution.mesh.face_list());
+    assert_ne!(answer(&stale), ClaimVerdict::Holds, "the solve's faces");
 }

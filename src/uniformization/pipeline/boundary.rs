@@ -81,7 +81,7 @@ impl BoundaryOutcome {
     /// The double's `uniformization` claim of a certified outcome, ready to write.
     pub fn claim(&self) -> Option<Value> {
         let (c, d) = (self.certification.as_ref()?, self.double.as_ref()?);
-        c.claim(d, &self.boundary.solution, self.bits)
+        c.claim(d, self.bits)
     }
 
     /// `max |θ_v − target|` on copy 1 (`f64`, numerical: half the double's target at seam

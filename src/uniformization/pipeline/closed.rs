@@ -80,7 +80,7 @@ impl ClosedOutcome {
             metric: self.metric.clone()?,
             t0_metric: self.t0_metric.clone(),
         };
-        c.claim(&self.surface, &self.solution, self.bits)
+        c.claim(&self.surface, self.bits)
     }
 }
 
@@ -138,11 +138,17 @@ impl Certification {
     /// The `uniformization` claim when the proof holds: about `surface` (the closed
     /// surface given to [`certify_solution`]) with its Euclidean flips for the input
     /// metric, about `T₀` with binary64 lengths otherwise.
-    pub fn claim(&self, surface: &Surface, sol: &Uniformization, bits: u32) -> Option<Value> {
+    pub fn claim(&self, surface: &Surface, bits: u32) -> Option<Value> {
         let CertificateOutcome::Holds { residual, .. } = &self.proof.outcome else {
             return None;
         };
-        let final_faces = sol.mesh.face_list();
+        // The final triangulation of the proof's own flips (the refinement may flip near
+        // ties differently from the f64 solve, B69), which is what the re-check replays.
+        let mut last = self.proof.data.t0.clone();
+        for &e in &self.proof.data.flip_sequence {
+            last.flip(e).ok()?;
+        }
+        let final_faces = last.face_list();
         Some(match (&self.metric, &self.t0_metric) {
             (CertifiedMetric::Input, Some(m)) => to_claim_on_input(
                 &self.proof.data,
