@@ -211,8 +211,8 @@ def check(
 
     Returns one dict per (check, precision), as ``penner check --json`` prints them:
     ``case``, ``theorem``, ``title``, ``precision``, ``precision_bits``, ``seconds`` and
-    ``result`` (``verdict``: ``holds`` / ``fails`` / ``undecided`` / ``n/a``, whether it is
-    certified, the witnesses of a failure). T01, for instance, is Gauss–Bonnet:
+    ``result`` (``verdict``: ``holds`` / ``fails`` / ``undecided`` / ``not_applicable``,
+    whether it is ``certified``, the witnesses of a failure). T01, for instance, is Gauss–Bonnet:
     ``Σ_i (2π − Σ angles at i) = 2πχ``.
     """
     s = _surface_of(V, F, l)
@@ -318,7 +318,7 @@ def certify(claim: Union[Dict[str, Any], str]) -> Dict[str, Any]:
     "certified": …, "counterexample": …, "witnesses": …}``. A malformed claim raises
     :class:`InputError`.
 
-    >>> penner.certify(penner.uniformize(V, F, flat=True).claim)["verdict"]
+    >>> penner.certify(penner.uniformize(V, F, targets=[1, 1, 1, 1]).claim)["verdict"]
     'holds'
     """
     if isinstance(claim, (str, bytes)):

@@ -24,7 +24,7 @@ __all__ = ["check_corpus", "run_one"]
 def run_one(path: Union[str, "os.PathLike[str]"], command: str = "check", **options: Any) -> Dict[str, Any]:
     """One row for one file: ``file``, ``command``, ``verdict``, ``certified``,
     ``seconds``, ``error`` (None unless the file was refused) and, for ``check``, the
-    counts of rows per verdict (``holds``, ``fails``, ``undecided``, ``n/a``)."""
+    counts of rows per verdict (``holds``, ``fails``, ``undecided``, ``not_applicable``)."""
     start = time.perf_counter()
     row: Dict[str, Any] = {
         "file": os.fspath(path),
@@ -39,7 +39,7 @@ def run_one(path: Union[str, "os.PathLike[str]"], command: str = "check", **opti
         if command == "check":
             rows = penner.check(s, **options)
             verdicts = [r["result"].get("verdict") for r in rows]
-            for word in ("holds", "fails", "undecided", "n/a"):
+            for word in ("holds", "fails", "undecided", "not_applicable"):
                 row[word] = verdicts.count(word)
             if row["fails"]:
                 row["verdict"] = "fails"
