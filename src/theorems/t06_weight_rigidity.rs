@@ -400,6 +400,31 @@ mod terms {
         assert!(certify_positive_definite(&widened(0.05, 0.0, 0.1)).is_ok());
     }
 
+    /// B102 term `λ_min(H_mid) − ‖H_rad‖_∞ > 0`, strict: `[[1, ½, 0], [½, 1, 0], [0, 0, 1]]`
+    /// with the entry `(2, 0)` widened to `[−r, r]` (its midpoint stays exactly 0, so the
+    /// verified bound `λ` is the same for every `r`). `‖H_rad‖_∞` is `r` rounded up twice
+    /// (the radius, then the row sum; the point entries before it add radii below
+    /// half an ulp of `r`), so at `r = λ` lowered by two ulps it equals `λ`
+    /// exactly: only semi-definiteness follows, refused; one ulp lower is certified.
+    #[test]
+    fn term_b102_radius_equal_to_the_bound_is_refused() {
+        let with_radius = |r: f64| IntervalLower {
+            n: 3,
+            entries: vec![
+                (0, 0, 1.0, 1.0),
+                (1, 0, 0.5, 0.5),
+                (1, 1, 1.0, 1.0),
+                (2, 2, 1.0, 1.0),
+                (2, 0, -r, r),
+            ],
+        };
+        let (bound, _) = certify_positive_definite(&with_radius(0.0)).unwrap();
+        let at_bound = down(down(bound));
+        assert!(certify_positive_definite(&with_radius(at_bound)).is_err());
+        let (again, radius) = certify_positive_definite(&with_radius(down(at_bound))).unwrap();
+        assert_eq!((again, radius), (bound, down(bound)));
+    }
+
     /// B102: a matrix that is not a finite lower-triangular enclosure is refused, never
     /// certified (an entry above the diagonal, out of range, `lo > hi`, NaN, infinite).
     #[test]

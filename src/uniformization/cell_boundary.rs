@@ -384,12 +384,15 @@ fn corner_sums<'a>(m: &Mesh, e: Edge, len: &dyn Fn(Edge) -> &'a I) -> Vec<(usize
     out
 }
 
-/// B35's hull (proofs/B35, **Terms**): the block of a `U`-edge must hold the values of both
-/// configurations, whichever has the lower or the upper end.
+/// B35's terms (proofs/B35, **Terms**): the hull of a `U`-edge's block must hold the values
+/// of both configurations, whichever has the lower or the upper end; the flipped faces must
+/// be strict on the box.
 #[cfg(test)]
 mod terms {
-    use super::{hull, I};
+    use super::{cell_over_box, hull, I};
+    use crate::mesh::Mesh;
     use crate::scalar::{Mpfr, Precision, Real};
+    use crate::uniformization::refine::scaled;
 
     fn iv(lo: f64, hi: f64) -> I {
         let p = Precision::new(64).expect("precision");
@@ -413,6 +416,102 @@ mod terms {
             let (x, y) = (iv(a.0, a.1), iv(b.0, b.1));
             assert_eq!(ends(&hull(&x, &y)), want, "{a:?} ∪ {b:?}");
             assert_eq!(ends(&hull(&y, &x)), want, "{b:?} ∪ {a:?}");
+        }
+    }
+
+    /// The lengths of `mesh`'s edges between the planar `points`, enclosed.
+    fn planar_lengths(mesh: &Mesh, points: &[[f64; 2]], prec: Precision) -> Vec<I> {
+        mesh.edges()
+            .map(|e| {
+                let h = e.halfedge();
+                let [a, b] = [mesh.tail(h), mesh.tip(h)].map(|v| points[v.idx()]);
+                I::from_f64((a[0] - b[0]).hypot(a[1] - b[1]), prec)
+            })
+            .collect()
+    }
+
+    /// [`cell_over_box`] on the box `u ∈ [−r, r]ⱽ` around the lengths `base`.
+    fn cell_on(
+        mesh: &Mesh,
+        base: &[I],
+        r: f64,
+        prec: Precision,
+    ) -> Result<super::CellOverBox, String> {
+        let interval = I::new(Mpfr::from_f64(-r, prec), Mpfr::from_f64(r, prec));
+        let boxed = vec![interval; mesh.n_vertices()];
+        let lb = scaled(mesh, base, &boxed);
+        cell_over_box(mesh, base, &boxed, &lb)
+    }
+
+    /// B35 condition 2, the flipped faces strict on the box: four points of the unit circle
+    /// `i = (−1, 0)`, `k = e^{−iε}`, `j = (1, 0)`, `l = e^{iε}` (`ε = 10⁻²`), the faces `ijk`
+    /// and `jil` of `T`. Cocircular, so `P_ij = 0` and `ij ∈ U` on every box. `T`'s faces
+    /// have triangle slacks of order `ε`, but the flipped face `klj` is a cap: its slack is
+    /// `4 sin(ε/2)(1 − cos(ε/2)) ≈ ε³/8 ≈ 1.25·10⁻⁷` (closed form). On the box `u ∈ [−r, r]⁴`
+    /// with `r = 10⁻³` the lengths vary by about `10⁻⁵`, so `klj` is not certified strict:
+    /// refused, naming the flipped edge, while every condition on `T` holds; with
+    /// `r = 10⁻⁹` it is certified, with `U = {ij}`.
+    #[test]
+    fn term_b35_flipped_faces_strict_on_the_box() {
+        let prec = Precision::new(128).expect("precision");
+        let eps = 1e-2f64;
+        let points = [
+            [-1.0, 0.0],
+            [eps.cos(), -eps.sin()],
+            [1.0, 0.0],
+            [eps.cos(), eps.sin()],
+        ];
+        let mesh = Mesh::from_faces(4, &[[0, 2, 1], [2, 0, 3]]).expect("two triangles");
+        let base = planar_lengths(&mesh, &points, prec);
+        let cell = |r: f64| cell_on(&mesh, &base, r, prec);
+        let Err(why) = cell(1e-3) else {
+            panic!("the cap klj is certified strict on a box of radius 1e-3")
+        };
+        assert!(why.contains("beside the flipped"), "{why}");
+        let Ok(fine) = cell(1e-9) else {
+            panic!("radius 1e-9 not certified")
+        };
+        let boundary = fine.boundary.expect("ij is a tie on every box");
+        assert_eq!(boundary.edges.len(), 1);
+    }
+
+    /// B35 condition 3, every edge outside `U` Delaunay in each configuration: `i = (−1, 0)`,
+    /// `k = (0, −1)`, `j = (1, 0)` on the unit circle, `l = (0, ¾)` inside it, so the edge
+    /// `ij` (faces `ijk`, `jil`) is not Delaunay and in `U`; a third face `kjm` with
+    /// `m = s·e^{−iπ/4}` just outside the circle. The edge `kj` sees `i` (angle `π/4`) in
+    /// `T` but `l` (a larger angle) once `ij` is flipped. At `s = 1.02` the opposite angles
+    /// of `kj` sum to `π − 0.048` in `T` and `π + 0.094` after the flip (values checked
+    /// below by `atan2`): refused, naming `kj` and `ij`, although every condition on `T`
+    /// holds; at `s = 1.2` (`π − 0.29` after the flip) certified.
+    #[test]
+    fn term_b35_other_edges_delaunay_in_each_configuration() {
+        let prec = Precision::new(128).expect("precision");
+        let mesh = Mesh::from_faces(5, &[[0, 2, 1], [2, 0, 3], [1, 2, 4]]).expect("three faces");
+        let angle = |p: [f64; 2], a: [f64; 2], b: [f64; 2]| {
+            let (v, w) = ([a[0] - p[0], a[1] - p[1]], [b[0] - p[0], b[1] - p[1]]);
+            (v[0] * w[1] - v[1] * w[0])
+                .atan2(v[0] * w[0] + v[1] * w[1])
+                .abs()
+        };
+        let [i, k, j, l] = [[-1.0, 0.0], [0.0, -1.0], [1.0, 0.0], [0.0, 0.75]];
+        let pi = std::f64::consts::PI;
+        for (s, refused) in [(1.02, true), (1.2, false)] {
+            let m = [s * (pi / 4.0).cos(), -s * (pi / 4.0).sin()];
+            let in_t = angle(i, k, j) + angle(m, k, j) - pi;
+            let flipped = angle(l, k, j) + angle(m, k, j) - pi;
+            assert!(
+                in_t < -0.04 && (flipped > 0.09) == refused,
+                "{in_t} {flipped}"
+            );
+            let base = planar_lengths(&mesh, &[i, k, j, l, m], prec);
+            match cell_on(&mesh, &base, 1e-6, prec) {
+                Err(why) if refused => assert!(why.contains("once"), "{why}"),
+                Ok(cell) if !refused => {
+                    assert_eq!(cell.boundary.expect("ij in U").edges.len(), 1);
+                }
+                Err(why) => panic!("s = {s}: {why}"),
+                Ok(_) => panic!("s = {s}: kj not Delaunay after the flip, certified"),
+            }
         }
     }
 }

@@ -485,39 +485,65 @@ mod terms {
         }
     }
 
-    /// B76 with a free vertex: the regular hexagonal wheel (spokes and rim 1) with pole
-    /// lengths 2 at its six link vertices, so `w_a = −2 log 2`, rim lengths `1/4` and
+    /// The regular hexagonal wheel (spokes and rim 1) with pole lengths 2 at its six link
+    /// vertices and the centre free at scale factor `u_c`, on a box of radius `radius`.
+    fn wheel(u_c: f64, radius: f64) -> DiskCertificateData {
+        let faces: Vec<[u32; 3]> = (1..=6).map(|i| [0, i, i % 6 + 1]).collect();
+        let disk = Mesh::from_faces(7, &faces).expect("a wheel");
+        let mut pole_length = vec![Some(2.0); 7];
+        pole_length[0] = None;
+        DiskCertificateData {
+            lengths: vec![1.0; disk.n_edges()],
+            disk,
+            pole_length,
+            over_pi: vec![Rational::from(2); 7],
+            flip_sequence: Vec::new(),
+            u: vec![Rational::from_f64(u_c).expect("finite"); 7],
+            radius: Rational::from_f64(radius).expect("finite"),
+        }
+    }
+
+    /// B76 with a free vertex: [`wheel`], so `w_a = −2 log 2`, rim lengths `1/4` and
     /// spokes `½e^{u_c/2}`; the centre's angle is `2π` exactly at `u_c = −2 log 2` (the
     /// triangles are equilateral: closed form). The certificate holds at the binary64
     /// `u_c` on a box of radius `10⁻⁹` (the residual is `O(10⁻¹⁶)`); `u_c = 0` (the
     /// Dirichlet values ignored) and `u_c = +2 log 2` (their sign flipped) are refused.
     #[test]
     fn term_b76_dirichlet_values_and_the_free_residual_decide() {
-        let faces: Vec<[u32; 3]> = (1..=6).map(|i| [0, i, i % 6 + 1]).collect();
-        let disk = Mesh::from_faces(7, &faces).expect("a wheel");
-        let mut pole_length = vec![Some(2.0); 7];
-        pole_length[0] = None;
         let solved = -2.0 * 2f64.ln();
-        let data = |u: f64| DiskCertificateData {
-            disk: disk.clone(),
-            lengths: vec![1.0; disk.n_edges()],
-            pole_length: pole_length.clone(),
-            over_pi: vec![Rational::from(2); 7],
-            flip_sequence: Vec::new(),
-            u: vec![Rational::from_f64(u).expect("finite"); 7],
-            radius: Rational::from_f64(1e-9).expect("finite"),
-        };
-        let outcome = check_disk_certificate(&data(solved), BITS);
+        let outcome = check_disk_certificate(&wheel(solved, 1e-9), BITS);
         let CertificateOutcome::Holds { distance, .. } = outcome else {
             panic!("{outcome:?}")
         };
         assert!(distance < 1e-12, "{distance:e}");
         for wrong in [0.0, -solved] {
-            let outcome = check_disk_certificate(&data(wrong), BITS);
+            let outcome = check_disk_certificate(&wheel(wrong, 1e-9), BITS);
             assert!(
                 matches!(outcome, CertificateOutcome::Undecided { .. }),
                 "u_c = {wrong}: {outcome:?}"
             );
         }
+    }
+
+    /// B76, the box `[q − r, q + r]` with both ends: on [`wheel`] at the solution
+    /// `q = −2 log 2` (residual `O(10⁻¹⁶)`), a box of radius `0.2` is refused because the
+    /// enclosure of the Hessian over it varies by more than its eigenvalue bound; the box
+    /// reduced to either end (`[q + r, q + r]` or `[q − r, q − r]`) is a point where the
+    /// variation is 0 and would certify at distance `10⁻¹⁶`. Radius `0.1` is certified.
+    /// Radius `1.5` reaches `u < −2 log 4`, where the faces `(s, s, ¼)` (spokes
+    /// `s = ½e^{u/2}`) degenerate: refused naming a face, which a box reduced to `q + r`
+    /// would not see.
+    #[test]
+    fn term_b76_box_has_both_ends() {
+        let solved = -2.0 * 2f64.ln();
+        let why = reason(check_disk_certificate(&wheel(solved, 0.2), BITS));
+        assert!(why.contains("variation"), "{why}");
+        let outcome = check_disk_certificate(&wheel(solved, 0.1), BITS);
+        assert!(
+            matches!(outcome, CertificateOutcome::Holds { .. }),
+            "{outcome:?}"
+        );
+        let why = reason(check_disk_certificate(&wheel(solved, 1.5), BITS));
+        assert!(why.contains("strict triangle"), "{why}");
     }
 }
