@@ -52,6 +52,7 @@ __all__ = [
     "catalogue",
     "certify",
     "check",
+    "lobachevsky",
     "read",
     "read_mesh",
     "surface",
@@ -329,3 +330,23 @@ def certify(claim: Union[Dict[str, Any], str]) -> Dict[str, Any]:
         except (TypeError, ValueError) as e:
             raise InputError(f"claim: not a JSON document ({e})") from None
     return _penner.certify(text)
+
+
+def lobachevsky(
+    x: Any, precision: Union[str, int] = "f64", enclosure: bool = False
+) -> Union[float, np.ndarray]:
+    """Lobachevsky's function ``Л(x) = −∫₀ˣ log|2 sin t| dt = ½ Cl₂(2x)`` of a float or an
+    array, evaluated at ``precision`` (``"f64"``, ``"dd"`` or MPFR bits 53..65536) and
+    rounded to binary64. With ``enclosure=True``, an array ``[..., 2]`` of bounds
+    ``(lo, hi)`` rounded outward from a rigorous MPFR enclosure at ``precision`` bits
+    (at least 53), so ``lo ≤ Л(x) ≤ hi`` for the binary64 ``x``. NaN or an infinite ``x``
+    raises :class:`InputError`.
+
+    >>> penner.lobachevsky(np.pi / 6)      # the maximum of Л
+    0.5074708032048268
+    """
+    a = np.asarray(x, dtype=np.float64)
+    out = _penner.lobachevsky(a.ravel().tolist(), str(precision), bool(enclosure))
+    if enclosure:
+        return out.reshape(a.shape + (2,))
+    return float(out[0]) if a.ndim == 0 else out.reshape(a.shape)

@@ -490,6 +490,87 @@ fn certify(py: Python<'_>, claim: String) -> PyResult<Bound<'_, PyAny>> {
     json_to_py(py, &answer)
 }
 
+/// Lobachevsky's function `Л(x) = −∫₀ˣ log|2 sin t| dt` of each finite `x`, evaluated at
+/// `precision` (`f64`, `dd` or MPFR bits 53..=65536; B52–B55) and rounded to the nearest
+/// binary64 number; with `enclosure`, the pairs `(lo, hi)` of binary64 numbers rounded
+/// outward from the rigorous MPFR enclosure at `precision` bits (at least 53).
+#[pyfunction]
+#[pyo3(signature = (x, precision="f64".to_string(), enclosure=false))]
+fn lobachevsky(
+    py: Python<'_>,
+    x: Vec<f64>,
+    precision: String,
+    enclosure: bool,
+) -> PyResult<Bound<'_, PyAny>> {
+    use penner::scalar::{Dd, Interval, Mpfr, Precision as Bits, Real};
+    use penner::special::{lobachevsky as lob, lobachevsky_enclosure};
+    if let Some(i) = x.iter().position(|v| !v.is_finite()) {
+        return Err(InputError::new_err(format!(
+            "x[{i}] = {}: not a finite number",
+            x[i]
+        )));
+    }
+    let bits = match precision.as_str() {
+        "f64" => None,
+        "dd" => Some(0),
+        b => Some(
+            b.parse::<u64>()
+                .ok()
+                .filter(|b| (53..=65536).contains(b))
+                .ok_or_else(|| {
+                    InputError::new_err(format!(
+                        "precision: expected f64, dd or MPFR bits 53..=65536, got {b:?}"
+                    ))
+                })?,
+        ),
+    };
+    let mpfr_bits =
+        |b: u64| Bits::new(b).map_err(|e| InputError::new_err(format!("precision: {e}")));
+    if enclosure {
+        let p = mpfr_bits(bits.filter(|&b| b >= 53).unwrap_or(53))?;
+        let out: Vec<f64> = py.detach(|| {
+            x.iter()
+                .flat_map(|&v| {
+                    let y = lobachevsky_enclosure(&Interval::point(Mpfr::from_f64(v, p)));
+                    let outward = |q: Option<Rational>, r: rug::float::Round, inf: f64| {
+                        q.map_or(inf, |q| rug::Float::with_val_round(53, &q, r).0.to_f64())
+                    };
+                    [
+                        outward(
+                            y.lo().to_rational(),
+                            rug::float::Round::Down,
+                            f64::NEG_INFINITY,
+                        ),
+                        outward(y.hi().to_rational(), rug::float::Round::Up, f64::INFINITY),
+                    ]
+                })
+                .collect()
+        });
+        return array2(py, out, 2);
+    }
+    let out: Vec<f64> = match bits {
+        None => py.detach(|| x.iter().map(lob).collect()),
+        Some(0) => py.detach(|| {
+            x.iter()
+                .map(|&v| lob(&Dd::from_f64(v)).approx_f64())
+                .collect()
+        }),
+        Some(b) => {
+            let p = mpfr_bits(b)?;
+            py.detach(|| {
+                x.iter()
+                    .map(|&v| {
+                        lob(&Mpfr::from_f64(v, p))
+                            .to_rational()
+                            .map_or(f64::NAN, |q| nearest_f64(&q))
+                    })
+                    .collect()
+            })
+        }
+    };
+    Ok(array1(py, out))
+}
+
 /// The extension module.
 #[pymodule]
 fn _penner(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -501,6 +582,7 @@ fn _penner(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(check, m)?)?;
     m.add_function(wrap_pyfunction!(uniformize, m)?)?;
     m.add_function(wrap_pyfunction!(certify, m)?)?;
+    m.add_function(wrap_pyfunction!(lobachevsky, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -332,3 +332,35 @@ def test_help_reads():
     for word in ("(V, F)", "GIL", "InputError", "Gauss–Bonnet", "Θ_i/π"):
         assert word in text
     assert penner.InputError.__doc__ and issubclass(penner.InputError, ValueError)
+
+
+# --- Lobachevsky's function -------------------------------------------------------------
+
+
+def clausen_series(x, terms=200000):
+    """Л(x) = ½ Σ_k sin(2kx)/k², summed in numpy (tail below 1/(2·terms))."""
+    k = np.arange(1, terms + 1)
+    return 0.5 * np.sum(np.sin(2 * np.outer(np.atleast_1d(x), k)) / k**2, axis=1)
+
+
+def test_lobachevsky_against_its_series_and_its_maximum():
+    # Л(π/6) = ½ Cl₂(π/3) = 0.50747080320482681251…, the maximum of Л.
+    assert abs(penner.lobachevsky(np.pi / 6) - 0.5074708032048268) < 4e-16
+    x = np.array([0.1, 0.5, 1.0, 2.5, -0.7, 10.0])
+    for p in ("f64", "dd", 128):
+        np.testing.assert_allclose(penner.lobachevsky(x, p), clausen_series(x), atol=1e-5)
+    # Period π, odd: Л(x + π) = Л(x) = −Л(−x).
+    np.testing.assert_allclose(penner.lobachevsky(x + np.pi), penner.lobachevsky(x), atol=1e-14)
+    np.testing.assert_allclose(penner.lobachevsky(-x), -penner.lobachevsky(x), atol=0)
+    enc = penner.lobachevsky(x, 256, enclosure=True)
+    assert enc.shape == (6, 2)
+    mid = penner.lobachevsky(x, 256)
+    assert np.all(enc[:, 0] <= mid) and np.all(mid <= enc[:, 1])
+    assert np.all(enc[:, 1] - enc[:, 0] <= 2 * np.spacing(np.abs(mid)))
+    # Negative controls: the enclosure excludes a perturbed value; NaN and a bad
+    # precision are refused.
+    assert not np.any((enc[:, 0] <= mid + 1e-12) & (mid + 1e-12 <= enc[:, 1]))
+    with pytest.raises(penner.InputError, match=r"x\[1\] = NaN"):
+        penner.lobachevsky([0.1, np.nan])
+    with pytest.raises(penner.InputError, match="precision"):
+        penner.lobachevsky(0.1, precision=20)
