@@ -1,6 +1,7 @@
 //! The `penner` binary: argument parsing, dispatch, messages and exit codes.
 
 mod args;
+mod certificate_report;
 mod certify;
 mod check;
 mod delaunay;

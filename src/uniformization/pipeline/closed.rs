@@ -1,5 +1,5 @@
-//! Uniformization of a closed surface with prescribed cone angles (flat or cones, T24) as
-//! one library call, the pipeline behind `penner uniformize --flat | --targets`: the `f64`
+//! Uniformization of a closed surface with prescribed cone angles (flat or cones, T24): the
+//! pipeline behind `penner uniformize --flat | --targets`: the `f64`
 //! solve with Ptolemy flips, refinement and a certificate about the **input's exact
 //! metric** (B73 (a), B71), and the claim that `penner certify` re-checks.
 //!
@@ -28,100 +28,18 @@
 //! assert!(out.claim().unwrap()["euclidean_flips"].is_array());
 //! ```
 
-use super::certificate::{certify_near, prove, prove_on, CertificateError, CertificateOutcome};
-use super::certificate::{Proof, T0Metric};
-use super::claim_form::{to_claim, to_claim_on_input};
-use super::input_metric::{exact_squared_on_t0, input_on_t0, t0_delaunay};
-use super::newton::{uniformize_with_progress, StepReport, Uniformization, UniformizeOptions};
-use super::refine::{refine, refine_on};
-use super::targets::Targets;
-use super::UniformizeError;
+use super::{exact, rescaled, CertifiedMetric, Options, PipelineError, Precision};
 use crate::io::json::edge_order;
-use crate::io::{Metric, Surface};
-use crate::mesh::double::Double;
+use crate::io::Surface;
 use crate::scalar::{Dd, Interval, Mpfr, Precision as Bits, Real};
-use rug::Rational;
+use crate::uniformization::certificate::{certify_near, prove, prove_on, CertificateError};
+use crate::uniformization::certificate::{CertificateOutcome, Proof, T0Metric};
+use crate::uniformization::claim_form::{to_claim, to_claim_on_input};
+use crate::uniformization::input_metric::{exact_squared_on_t0, input_on_t0, t0_delaunay};
+use crate::uniformization::newton::{uniformize_with_progress, StepReport, Uniformization};
+use crate::uniformization::refine::{refine, refine_on};
+use crate::uniformization::{Targets, UniformizeOptions};
 use serde_json::Value;
-
-/// The working precision of a pipeline: where the solution is refined before the
-/// certificate, which always runs in MPFR interval arithmetic (directed rounding).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Precision {
-    /// Refined to `10⁻¹⁰` in binary64's neighbourhood, certified at 128 bits.
-    F64,
-    /// Refined in double-double to `10⁻²⁸`, certified at 128 bits.
-    Dd,
-    /// Refined at `N` MPFR bits (`128 ≤ N ≤ 4096`) to `2^{−(N−56)}`, certified at `N`.
-    Mpfr(u32),
-}
-
-impl Default for Precision {
-    /// 256 MPFR bits.
-    fn default() -> Precision {
-        Precision::Mpfr(256)
-    }
-}
-
-impl std::str::FromStr for Precision {
-    type Err = String;
-
-    /// `f64`, `dd` or MPFR bits `128..=4096`.
-    fn from_str(word: &str) -> Result<Precision, String> {
-        match word {
-            "f64" => Ok(Precision::F64),
-            "dd" => Ok(Precision::Dd),
-            other => match other.parse::<u32>() {
-                Ok(b) if (128..=4096).contains(&b) => Ok(Precision::Mpfr(b)),
-                _ => Err(format!(
-                    "expected f64, dd or MPFR bits 128..=4096, got {other:?}"
-                )),
-            },
-        }
-    }
-}
-
-impl Precision {
-    /// The certificate's interval bits and the refinement's tolerance on `max |Θ − θ|`.
-    pub fn bits_and_tolerance(self) -> (u32, f64) {
-        match self {
-            Precision::F64 => (128, 1e-10),
-            Precision::Dd => (128, 1e-28),
-            Precision::Mpfr(b) => (b, 2f64.powi(-(b as i32 - 56))),
-        }
-    }
-}
-
-/// Options of [`uniformize_closed`].
-#[derive(Clone, Debug, PartialEq)]
-pub struct Options {
-    /// The working precision.
-    pub precision: Precision,
-    /// Attempt a certificate (otherwise the result is numerical: the `f64` solve alone).
-    pub certify: bool,
-}
-
-impl Default for Options {
-    /// 256 bits, certified.
-    fn default() -> Options {
-        Options {
-            precision: Precision::default(),
-            certify: true,
-        }
-    }
-}
-
-/// Which metric a certificate is about.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum CertifiedMetric {
-    /// The input's own exact metric (after the exact rescaling by `2^{−shift}`).
-    Input,
-    /// The binary64 rounding of the input lengths only; `reason` says why the input's
-    /// exact metric was not certified.
-    Rounded {
-        /// Why the exact-metric certificate was not obtained.
-        reason: String,
-    },
-}
 
 /// The outcome of [`uniformize_closed`].
 #[derive(Clone, Debug)]
@@ -164,18 +82,6 @@ impl ClosedOutcome {
         };
         c.claim(&self.surface, &self.solution, self.bits)
     }
-}
-
-/// Errors of [`uniformize_closed`]: the input or targets refused, or a certificate
-/// parameter refused. Not converging and not certifying are outcomes, not errors.
-#[derive(Debug, thiserror::Error)]
-pub enum PipelineError {
-    /// The surface or targets are refused (e.g. Gauss–Bonnet, a non-closed surface).
-    #[error(transparent)]
-    Input(#[from] UniformizeError),
-    /// The refinement or certificate could not be set up.
-    #[error(transparent)]
-    Certificate(#[from] CertificateError),
 }
 
 /// Uniformize the closed `surface` to the cone angles `targets` (module documentation):
@@ -335,38 +241,4 @@ fn t0_delaunay_for_input(
             ))
         }
     }
-}
-
-/// The exact values of a refined `u` (a non-finite entry becomes 0, which the certificate
-/// then refuses: its residual is not small).
-fn exact<T: Real>(u: &[T]) -> Vec<Rational> {
-    u.iter()
-        .map(|x| x.to_rational().unwrap_or_default())
-        .collect()
-}
-
-/// The surface divided by an exact power of two `2^shift` when its binary64 lengths are
-/// not all in `[2⁻¹⁰⁰, 2¹⁰⁰]` (their squares then leave binary64's range;
-/// [`Surface::normalized_scale`]), and the shift.
-pub fn rescaled(surface: &Surface) -> (Surface, i64) {
-    let l = surface.lengths::<f64>(());
-    let in_range = l
-        .iter()
-        .all(|&x| x.is_finite() && (f64::powi(2.0, -100)..=f64::powi(2.0, 100)).contains(&x));
-    match surface.normalized_scale().filter(|_| !in_range) {
-        Some((s, k)) => (s, k),
-        None => (surface.clone(), 0),
-    }
-}
-
-/// The double `D` of a surface with boundary (B79) as a closed [`Surface`] with `surface`'s
-/// exact metric pulled back to both copies (no positions: copy 2 is the mirror image, not
-/// an embedding). `None` when `double` is not the double of `surface.mesh`.
-pub fn double_surface(surface: &Surface, double: &Double) -> Option<Surface> {
-    let metric = match &surface.metric {
-        Metric::Lengths(v) => Metric::Lengths(double.pull_back_edges(v)?),
-        Metric::SquaredLengths(v) => Metric::SquaredLengths(double.pull_back_edges(v)?),
-    };
-    let name = format!("double of {}", surface.name);
-    Surface::new(name, double.mesh.clone(), metric, None).ok()
 }
