@@ -340,11 +340,9 @@ fn uniformize<'py>(
             precision,
             certify: false,
         };
+        // Not converging is an outcome; an error here is the input's fault.
         let outcome =
-            uniformize_closed(&s, &targets, &options, &mut |_| {}).map_err(|e| match e {
-                PipelineError::Input(e) => e.to_string(),
-                PipelineError::Certificate(e) => e.to_string(),
-            })?;
+            uniformize_closed(&s, &targets, &options, &mut |_| {}).map_err(|e| e.to_string())?;
         let mut reason = None;
         let mut certification = None;
         if !outcome.solution.converged() {
@@ -368,6 +366,8 @@ fn uniformize<'py>(
                         "not certified: the refinement did not go through: {r}"
                     ));
                 }
+                // penner's own computation did not go through: undecided, not bad input.
+                Err(e) if !e.is_bad_input() => reason = Some(format!("not certified: {e}")),
                 Err(e) => return Err(e.to_string()),
             }
         }
