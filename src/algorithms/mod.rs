@@ -11,6 +11,7 @@
 //! - [`naive`]: an uncertified `f64` baseline, for benchmarks and for showing where raw
 //!   floating-point decisions go wrong.
 
+pub mod delaunay_pipeline;
 pub mod flip_scaled;
 pub mod flip_to_delaunay;
 pub mod flips;

@@ -4,10 +4,8 @@ use super::error::CliError;
 use super::files::read_text;
 use penner::io::repair::{repair, Repairs};
 use penner::io::soup::PolygonSoup;
+pub use penner::io::FlipCase;
 use penner::io::{json, obj, off, DecimalSurface, Metric, ReadError, Surface};
-use penner::mesh::Mesh;
-use penner::scalar::Real;
-use rug::Rational;
 use std::path::Path;
 use std::sync::OnceLock;
 
@@ -97,56 +95,6 @@ pub fn load_case(path: &Path) -> Result<Surface, CliError> {
         s.name = shown;
     }
     Ok(s)
-}
-
-/// A surface loaded for flipping: exact (JSON) or with compact decimal positions (OBJ,
-/// OFF), whose lengths are computed per edge without building the exact metric.
-pub enum FlipCase {
-    /// A surface with an exact metric.
-    Exact(Surface),
-    /// A surface from positions (OBJ, OFF).
-    Decimal(DecimalSurface),
-}
-
-impl FlipCase {
-    /// The triangulation.
-    pub fn mesh(&self) -> &Mesh {
-        match self {
-            FlipCase::Exact(s) => &s.mesh,
-            FlipCase::Decimal(s) => &s.mesh,
-        }
-    }
-    /// The triangulation, to be flipped.
-    pub fn mesh_mut(&mut self) -> &mut Mesh {
-        match self {
-            FlipCase::Exact(s) => &mut s.mesh,
-            FlipCase::Decimal(s) => &mut s.mesh,
-        }
-    }
-    /// The name for messages.
-    pub fn name(&self) -> &str {
-        match self {
-            FlipCase::Exact(s) => &s.name,
-            FlipCase::Decimal(s) => &s.name,
-        }
-    }
-    /// The lengths in backend `T` (`Surface::lengths`).
-    pub fn lengths<T: Real + 'static>(&self, ctx: T::Ctx) -> Vec<T> {
-        match self {
-            FlipCase::Exact(s) => s.lengths(ctx),
-            FlipCase::Decimal(s) => s.lengths(ctx),
-        }
-    }
-    /// The exact lengths, when the metric is given by lengths (not squared lengths).
-    pub fn exact_lengths(&self) -> Option<&Vec<Rational>> {
-        match self {
-            FlipCase::Exact(Surface {
-                metric: Metric::Lengths(l),
-                ..
-            }) => Some(l),
-            _ => None,
-        }
-    }
 }
 
 /// Read the surface at `path` for flipping: OBJ and OFF into the compact form, JSON as in

@@ -5,27 +5,10 @@
 use super::error::CliError;
 use super::files::{create_new, stdout_error};
 use super::input::FlipCase;
-use penner::io::write::{self, MetricKind, Values};
-use rug::Rational;
+pub use penner::algorithms::delaunay_pipeline::FlipValues;
+use penner::io::write::{self, MetricKind};
 use std::io::{BufWriter, Write};
 use std::path::Path;
-
-/// The flipped lengths, indexed by `Edge.idx()`.
-pub enum FlipValues {
-    /// Binary64 lengths (each exactly the value written).
-    Binary64(Vec<f64>),
-    /// Exact values.
-    Exact(Vec<Rational>),
-}
-
-impl FlipValues {
-    fn values(&self) -> Values<'_> {
-        match self {
-            FlipValues::Binary64(v) => Values::Binary64(v),
-            FlipValues::Exact(v) => Values::Exact(v),
-        }
-    }
-}
 
 /// What `-o` asks for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -18,6 +18,7 @@
 
 pub mod decimal;
 pub mod decimal_surface;
+mod flip_case;
 pub mod json;
 pub mod obj;
 pub mod off;
@@ -29,6 +30,7 @@ mod text;
 pub mod write;
 
 pub use decimal_surface::DecimalSurface;
+pub use flip_case::FlipCase;
 pub use surface::{Metric, MetricError, Surface};
 
 use crate::mesh::MeshError;

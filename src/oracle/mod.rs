@@ -15,7 +15,8 @@ pub mod claim_hyperbolic;
 pub mod corpus;
 pub mod failure;
 pub mod flip_claim;
-pub mod precision;
+/// The working precisions (moved to [`crate::scalar::prec`]; kept here for the paths users know).
+pub use crate::scalar::prec as precision;
 #[macro_use]
 pub mod registry;
 // After `registry`, whose `at_precision!` macro it uses.

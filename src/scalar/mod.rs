@@ -20,6 +20,7 @@ pub mod interval;
 mod mpfr;
 mod nearest;
 pub mod parse;
+pub mod prec;
 
 pub use certified::{Certified, Sign, Stage};
 #[doc(hidden)]

@@ -1,7 +1,7 @@
 //! The precisions a check runs at: `f64`, double-double, or MPFR at a chosen bit count,
 //! and the parser of the comma list users write (`f64,dd,128,256`).
 
-use crate::scalar::{Precision, PrecisionError};
+use super::{Precision, PrecisionError};
 use std::fmt;
 
 /// One working precision.
