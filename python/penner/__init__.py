@@ -1,0 +1,352 @@
+"""penner: certified checks of discrete conformal geometry, from numpy arrays.
+
+A surface is given in the ``(V, F)`` convention of the field, or by per-face lengths, or by
+a file:
+
+* ``V`` — vertex positions, an (n, 3) array of float64 (any float dtype is widened
+  losslessly; each value is taken as the exact binary64 number it is) or of exact decimal
+  strings (``"0.1"``, ``"3/2"``, ``"1e-30"``);
+* ``F`` — faces, an (m, 3) array of vertex indices (int32/int64), counter-clockwise;
+* ``l`` — per-face lengths, an (m, 3) array, ``l[f, i]`` the length of the side of face
+  ``f`` opposite its corner ``i`` (libigl's layout), floats or exact strings, in place of
+  ``V``;
+* a path to a ``.json``, ``.obj`` or ``.off`` file (coordinates read exactly), in place of
+  ``V`` and ``F``;
+* a :class:`Surface` made by :func:`surface` or :func:`read`.
+
+Every function validates the surface exactly (positive lengths, strict triangle
+inequalities) and raises :class:`InputError` naming the element (``V[2, 1]``,
+``F[3, 0]``, ``l[5, 2]``, a face) on bad input. The work runs in Rust with the GIL
+released, so threads (and Dask's threaded scheduler) run in parallel.
+
+Example::
+
+    >>> import numpy as np, penner
+    >>> V = np.array([[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]], float)
+    >>> F = np.array([[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]])
+    >>> rows = penner.check(V, F, precision=("f64",), only=["T01"])
+    >>> rows[0]["result"]["verdict"]
+    'holds'
+    >>> r = penner.uniformize(V, F, targets=[1, 1, 1, 1])   # cone angles Θ_i = π
+    >>> r.certified, penner.certify(r.claim)["verdict"]
+    (True, 'holds')
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from . import _penner
+from ._penner import InputError, Surface
+
+__all__ = [
+    "InputError",
+    "Surface",
+    "UniformizeResult",
+    "catalogue",
+    "certify",
+    "check",
+    "lobachevsky",
+    "read",
+    "read_mesh",
+    "surface",
+    "uniformize",
+]
+
+__version__ = _penner.__version__
+
+PathLike = Union[str, "os.PathLike[str]"]
+
+
+def _is_path(x: Any) -> bool:
+    return isinstance(x, (str, bytes, os.PathLike))
+
+
+def _exact_rows(a: Any, name: str) -> List[List[str]]:
+    """Rows of exact literals from an array or nested sequence of strings."""
+    rows = []
+    for i, r in enumerate(a):
+        if isinstance(r, (str, bytes)) or not hasattr(r, "__len__"):
+            raise InputError(f"{name}[{i}] is not a row of three numbers")
+        rows.append([_literal(x, f"{name}[{i}]") for x in r])
+    return rows
+
+
+def _literal(x: Any, where: str) -> str:
+    """One exact literal: a string as given, an int or Fraction exactly, a float at its
+    exact binary64 value."""
+    if isinstance(x, (str, np.str_)):
+        return str(x)
+    if isinstance(x, bytes):
+        return x.decode()
+    if isinstance(x, (bool, np.bool_)):
+        raise InputError(f"{where}: {x!r} is not a number")
+    if isinstance(x, (int, np.integer)):
+        return str(int(x))
+    if isinstance(x, Fraction):
+        return f"{x.numerator}/{x.denominator}"
+    if isinstance(x, (float, np.floating)):
+        x = float(x)
+        if x != x or x in (float("inf"), float("-inf")):
+            raise InputError(f"{where} = {x}: not a finite number")
+        p, q = x.as_integer_ratio()
+        return f"{p}/{q}"
+    raise InputError(f"{where}: {x!r} is not a number")
+
+
+def _numbers(a: Any, name: str) -> Dict[str, Any]:
+    """``{name: float64 array}`` or ``{name_exact: rows of strings}``."""
+    key = name.lower()
+    arr = a if isinstance(a, np.ndarray) else None
+    if arr is None:
+        try:
+            arr = np.asarray(a)
+        except (ValueError, TypeError) as e:  # ragged rows
+            raise InputError(f"{name}: not an (rows, 3) array ({e})") from None
+    kind = arr.dtype.kind
+    if kind == "f":
+        return {key: np.asarray(arr, dtype=np.float64)}
+    if kind in "iu":
+        if arr.size and int(np.max(np.abs(arr.astype(object)))) > 2**53:
+            return {key + "_exact": _exact_rows(arr.tolist(), name)}
+        return {key: arr.astype(np.float64)}
+    if kind in "USO":
+        if arr.ndim != 2:
+            raise InputError(f"{name} has shape {arr.shape}: expected (rows, 3)")
+        return {key + "_exact": _exact_rows(arr.tolist(), name)}
+    raise InputError(f"{name} has dtype {arr.dtype}: expected floats or exact strings")
+
+
+def _faces(F: Any) -> np.ndarray:
+    arr = np.asarray(F)
+    if arr.dtype.kind not in "iu":
+        if arr.dtype.kind == "f" or arr.size == 0:
+            raise InputError(
+                f"F has dtype {arr.dtype}: expected integer vertex indices (int32 or int64)"
+            )
+        raise InputError(f"F has dtype {arr.dtype}: expected integer vertex indices")
+    if arr.dtype.kind == "u" and arr.size and int(arr.max()) > np.iinfo(np.int64).max:
+        raise InputError("F: a vertex index exceeds the int64 range")
+    return arr.astype(np.int64, copy=False)
+
+
+def surface(
+    V: Any = None,
+    F: Any = None,
+    *,
+    l: Any = None,
+    name: str = "array",
+) -> Surface:
+    """Make a :class:`Surface` from ``(V, F)``, from ``F`` and per-face lengths ``l``, or
+    from a file path given as ``V``.
+
+    The surface is validated exactly; for positions the metric is the exact squared
+    lengths ``|p_i − p_j|²`` of the coordinates as given.
+
+    >>> s = penner.surface(F=[[0, 1, 2], [0, 2, 1]], l=[["1", "1", "1"]] * 2)
+    >>> s.euler_characteristic
+    2
+    """
+    if isinstance(V, Surface):
+        return V
+    if _is_path(V):
+        if F is not None or l is not None:
+            raise InputError("a path stands for the whole surface: give no F or l with it")
+        return read(V)
+    if F is None:
+        raise InputError("F (the faces) is required")
+    if (V is None) == (l is None):
+        raise InputError("give exactly one of the positions V or the per-face lengths l")
+    kw: Dict[str, Any] = {"f": _faces(F), "name": name}
+    kw.update(_numbers(V, "V") if V is not None else _numbers(l, "l"))
+    return _penner.make_surface(**kw)
+
+
+def read(path: PathLike) -> Surface:
+    """Read a surface file (``.json``, ``.obj``, ``.off``) into a :class:`Surface`.
+
+    Coordinates and lengths are read exactly. Raises ``OSError`` when the file cannot be
+    opened and :class:`InputError` (naming the line or element) when it is refused.
+    """
+    return _penner.read(os.fspath(path))
+
+
+def read_mesh(path: PathLike) -> Tuple[Optional[np.ndarray], np.ndarray]:
+    """Read a surface file and return ``(V, F)``: positions (n, 3) float64 (nearest
+    binary64 values of the exact coordinates; ``None`` for a surface given by lengths only)
+    and faces (m, 3) int64.
+
+    >>> V, F = penner.read_mesh("bunny.obj")
+    """
+    s = read(path)
+    return s.V, s.F
+
+
+def _surface_of(V: Any, F: Any, l: Any) -> Surface:
+    if isinstance(V, Surface):
+        return V
+    return surface(V, F, l=l)
+
+
+def catalogue() -> List[Tuple[str, str]]:
+    """The checks of this build, as ``(id, title)`` pairs (``docs/catalogue.md``)."""
+    return list(_penner.catalogue())
+
+
+def check(
+    V: Any = None,
+    F: Any = None,
+    *,
+    l: Any = None,
+    precision: Sequence[Union[str, int]] = ("f64", "dd", 256),
+    only: Optional[Sequence[str]] = None,
+) -> List[Dict[str, Any]]:
+    """Run every applicable check (or those named in ``only``, e.g. ``["T01", "T21"]``) at
+    each precision (``"f64"``, ``"dd"``, MPFR bits 53..65536, ``"exact"``).
+
+    Returns one dict per (check, precision), as ``penner check --json`` prints them:
+    ``case``, ``theorem``, ``title``, ``precision``, ``precision_bits``, ``seconds`` and
+    ``result`` (``verdict``: ``holds`` / ``fails`` / ``undecided`` / ``not_applicable``,
+    whether it is ``certified``, the witnesses of a failure). T01, for instance, is Gauss–Bonnet:
+    ``Σ_i (2π − Σ angles at i) = 2πχ``.
+    """
+    s = _surface_of(V, F, l)
+    if isinstance(precision, (str, int)):
+        precision = [precision]
+    return _penner.check(s, [str(p) for p in precision], [str(x) for x in (only or [])])
+
+
+@dataclass(frozen=True)
+class UniformizeResult:
+    """The outcome of :func:`uniformize`.
+
+    ``certified`` is True when an exact solution ``u*`` of ``θ_i(u*) = Θ_i`` is proved to
+    lie within ``distance`` (2-norm, and in the box of sup-norm ``radius``) of ``u``;
+    otherwise ``reason`` says why (not converged, not certified, not asked), and the
+    numerical solution is still returned.
+
+    Attributes:
+        u: (n,) float64 log scale factors (the certificate's centre when certified).
+        u_exact: the same as exact decimal strings (the values of the claim).
+        F_out: (m, 3) the final triangulation (intrinsic Delaunay for the scaled metric).
+        l_out: (m, 3) its lengths ``e^{(u_i+u_j)/2} ℓ_ij``, ``l_out[f, i]`` opposite corner
+            ``i``.
+        uv: (m, 3, 2) a planar layout per corner (a fundamental domain cut along the
+            edges outside a dual spanning tree; NaN for faces not reached).
+        certified, radius, distance, residual: the certificate (``residual`` bounds
+            ``‖Θ − θ(u)‖₂`` when certified, else is the numerical ``max |Θ − θ|``).
+        metric: ``"input"`` (the certificate is about the input's exact metric) or
+            ``"rounded"`` (about its binary64 rounding; ``metric_reason`` says why).
+        claim: the ``uniformization`` claim that :func:`certify` (and ``penner certify``)
+            re-checks from scratch, or None.
+        reason: why the result is not certified, or None.
+    """
+
+    certified: bool
+    u: np.ndarray
+    u_exact: List[str]
+    F_out: np.ndarray
+    l_out: np.ndarray
+    uv: np.ndarray
+    radius: Optional[float]
+    distance: Optional[float]
+    residual: float
+    metric: Optional[str]
+    metric_reason: Optional[str]
+    claim: Optional[Dict[str, Any]]
+    reason: Optional[str]
+    converged: bool
+    stop: str
+    newton_steps: int
+    euclidean_flips: int
+    ptolemy_flips: int
+    shift: int
+    bits: int
+    residual_max_f64: float = field(repr=False, default=float("nan"))
+
+    def __bool__(self) -> bool:
+        return self.certified
+
+
+def uniformize(
+    V: Any = None,
+    F: Any = None,
+    *,
+    l: Any = None,
+    targets: Optional[Sequence[Any]] = None,
+    flat: bool = False,
+    precision: Union[str, int] = 256,
+    certify: bool = True,
+) -> UniformizeResult:
+    """Discrete uniformization of a closed surface with Ptolemy flips (T24): find ``u``
+    such that the metric ``e^{(u_i+u_j)/2} ℓ_ij`` (on the intrinsic Delaunay triangulation
+    it reaches) has cone angle ``Θ_i`` at every vertex — flat (``Θ_i = 2π``, genus 1) with
+    ``flat=True``, or ``targets``, one ``Θ_i/π`` per vertex (ints, ``Fraction``, exact
+    strings such as ``"2/3"``; floats are taken at their exact binary64 value), with
+    ``Σ_i (2π − Θ_i) = 2πχ`` (Gauss–Bonnet).
+
+    The solve runs in binary64, is refined at ``precision`` (``"f64"``, ``"dd"`` or MPFR
+    bits 128..4096) and certified in MPFR interval arithmetic, for the input's exact
+    metric where possible. Not converging or not certifying is a result with
+    ``certified=False`` and ``reason``, never an exception; bad input (including targets
+    that violate Gauss–Bonnet) raises :class:`InputError`. Surfaces with boundary raise
+    ``NotImplementedError`` (not yet in the library's pipeline).
+
+    >>> r = penner.uniformize(V, F, targets=[1, 1, 1, 1])
+    >>> r.certified, r.u.shape
+    (True, (4,))
+    """
+    s = _surface_of(V, F, l)
+    t = None
+    if targets is not None:
+        if isinstance(targets, (str, bytes)):
+            raise InputError("targets: expected one Θ_i/π per vertex, not a string")
+        seq = targets.ravel().tolist() if isinstance(targets, np.ndarray) else list(targets)
+        t = [_literal(x, f"targets[{i}]") for i, x in enumerate(seq)]
+    d = _penner.uniformize(s, t, bool(flat), str(precision), bool(certify))
+    return UniformizeResult(**d)
+
+
+def certify(claim: Union[Dict[str, Any], str]) -> Dict[str, Any]:
+    """Answer a claim (protocol v1, ``docs/oracle.md``; a dict or its JSON text) from
+    scratch, as ``penner certify`` does: ``{"verdict": "holds" | "refuted" | "undecided",
+    "certified": …, "counterexample": …, "witnesses": …}``. A malformed claim raises
+    :class:`InputError`.
+
+    >>> penner.certify(penner.uniformize(V, F, targets=[1, 1, 1, 1]).claim)["verdict"]
+    'holds'
+    """
+    if isinstance(claim, (str, bytes)):
+        text = claim if isinstance(claim, str) else claim.decode()
+    else:
+        try:
+            text = json.dumps(claim, allow_nan=False)
+        except (TypeError, ValueError) as e:
+            raise InputError(f"claim: not a JSON document ({e})") from None
+    return _penner.certify(text)
+
+
+def lobachevsky(
+    x: Any, precision: Union[str, int] = "f64", enclosure: bool = False
+) -> Union[float, np.ndarray]:
+    """Lobachevsky's function ``Л(x) = −∫₀ˣ log|2 sin t| dt = ½ Cl₂(2x)`` of a float or an
+    array, evaluated at ``precision`` (``"f64"``, ``"dd"`` or MPFR bits 53..65536) and
+    rounded to binary64. With ``enclosure=True``, an array ``[..., 2]`` of bounds
+    ``(lo, hi)`` rounded outward from a rigorous MPFR enclosure at ``precision`` bits
+    (at least 53), so ``lo ≤ Л(x) ≤ hi`` for the binary64 ``x``. NaN or an infinite ``x``
+    raises :class:`InputError`.
+
+    >>> penner.lobachevsky(np.pi / 6)      # the maximum of Л
+    0.5074708032048268
+    """
+    a = np.asarray(x, dtype=np.float64)
+    out = _penner.lobachevsky(a.ravel().tolist(), str(precision), bool(enclosure))
+    if enclosure:
+        return out.reshape(a.shape + (2,))
+    return float(out[0]) if a.ndim == 0 else out.reshape(a.shape)
