@@ -19,6 +19,7 @@ use penner::uniformization::pipeline::{
 use penner::uniformization::Targets;
 use rug::{Float, Rational};
 use serde_json::Value;
+use std::fmt::Write as _;
 
 const BITS: u32 = 320;
 
@@ -410,8 +411,9 @@ fn b69_claim_final_faces_follow_the_refined_flips() {
                 std::f64::consts::TAU * j as f64 / m as f64,
             );
             let w = big + small * b.cos();
-            obj += &format!(
-                "v {:e} {:e} {:e}\n",
+            let _ = writeln!(
+                obj,
+                "v {:e} {:e} {:e}",
                 w * a.cos(),
                 w * a.sin(),
                 small * b.sin()
@@ -422,7 +424,11 @@ fn b69_claim_final_faces_follow_the_refined_flips() {
     for i in 0..n {
         for j in 0..m {
             let (a, b, c, d) = (id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
-            obj += &format!("f {a} {b} {c}\nf {a} {c} {d}\n");
+            let _ = writeln!(
+                obj,
+                "f {a} {b} {c}
+f {a} {c} {d}"
+            );
         }
     }
     let dir = crate::support::scratch("torus-final-faces");
