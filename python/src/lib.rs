@@ -457,7 +457,7 @@ fn uniformized_to_py<'py>(py: Python<'py>, done: &Uniformized) -> PyResult<Bound
             if let CertifiedMetric::Rounded { reason } = &c.metric {
                 metric_reason = Some(reason.clone());
             }
-            if let Some(v) = c.claim(&out.surface, sol, out.bits) {
+            if let Some(v) = c.claim(&out.surface, out.bits) {
                 claim = Some(json_to_py(py, &v)?);
             }
         }
