@@ -310,7 +310,9 @@ fn b73_convexity_admits_flips_of_convex_quadrilaterals_only() {
         let (i, j) = ([0.0f64, 0.0], [1.0f64, 0.0]);
         let ang = |p: [f64; 2], a: [f64; 2], b: [f64; 2]| {
             let (v, w) = ([a[0] - p[0], a[1] - p[1]], [b[0] - p[0], b[1] - p[1]]);
-            (v[0] * w[1] - v[1] * w[0]).atan2(v[0] * w[0] + v[1] * w[1]).abs()
+            (v[0] * w[1] - v[1] * w[0])
+                .atan2(v[0] * w[0] + v[1] * w[1])
+                .abs()
         };
         let sum_i = ang(i, k, j) + ang(i, j, l);
         let sum_j = ang(j, i, k) + ang(j, l, i);
