@@ -50,8 +50,10 @@ pub fn report(
         );
     }
     let about = match &outcome.metric {
-        CertifiedMetric::Input => String::new(),
-        CertifiedMetric::Rounded { reason } => format!(" ({reason})"),
+        CertifiedMetric::Input => " for the input's exact metric".to_string(),
+        CertifiedMetric::Rounded { reason } => {
+            format!(" for the binary64-rounded lengths of the input ({reason})")
+        }
     };
     let status = match outcome.certificate.as_ref().map(|c| &c.existence) {
         Some(Existence::Holds {
@@ -83,7 +85,13 @@ pub fn report(
         outcome.gauss_bonnet
     );
     if let Some(path) = output {
-        write_claim(&mut out, path, outcome.claim(), "certificate")?;
+        let what = match (&outcome.metric, outcome.claim_metric()) {
+            (CertifiedMetric::Input, CertifiedMetric::Rounded { .. }) => {
+                "certificate of the binary64-rounded lengths (the claim form's)"
+            }
+            _ => "certificate",
+        };
+        write_claim(&mut out, path, outcome.claim(), what)?;
     }
     emit(&out)?;
     Ok(status)

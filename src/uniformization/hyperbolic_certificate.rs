@@ -48,6 +48,24 @@ pub fn refine_hyperbolic<T: Real>(
     tolerance: f64,
     max_iterations: usize,
 ) -> Result<Refinement<T>, HyperbolicError> {
+    let base0: Vec<T> = sol
+        .lengths
+        .iter()
+        .map(|&x| hyperbolic_log_length(&T::from_f64(x, ctx)))
+        .collect();
+    refine_hyperbolic_on(sol, &base0, ctx, tolerance, max_iterations)
+}
+
+/// [`refine_hyperbolic`] for the logarithmic lengths `base0` of `sol.t0` (e.g. the input's
+/// exact metric replayed to `T₀`, [`super::hyperbolic_flips::replay_geometric_enclosed`]):
+/// the same binary64 factor, residuals in `T` for that metric.
+pub fn refine_hyperbolic_on<T: Real>(
+    sol: &HyperbolicUniformization,
+    base0: &[T],
+    ctx: T::Ctx,
+    tolerance: f64,
+    max_iterations: usize,
+) -> Result<Refinement<T>, HyperbolicError> {
     let mesh = &sol.mesh;
     let factor =
         super::hyperbolic::hessian_factor_log(mesh, &sol.base_log, &sol.u).ok_or_else(|| {
@@ -55,12 +73,7 @@ pub fn refine_hyperbolic<T: Real>(
                 face: first_bad_face(mesh, &sol.base_log, &sol.u),
             }
         })?;
-    let base0: Vec<T> = sol
-        .lengths
-        .iter()
-        .map(|&x| hyperbolic_log_length(&T::from_f64(x, ctx)))
-        .collect();
-    let (_, base) = replay_ptolemy(&sol.t0, &base0, &sol.flips)?;
+    let (_, base) = replay_ptolemy(&sol.t0, base0, &sol.flips)?;
     let theta_target = targets_in::<T>(sol, ctx);
     let u: Vec<T> = sol.u.iter().map(|&x| T::from_f64(x, ctx)).collect();
     let residual = |u: &[T]| -> Result<Vec<T>, std::convert::Infallible> {
@@ -263,7 +276,28 @@ pub fn certify_hyperbolic(
     }
     let prec = Precision::new(u64::from(bits)).map_err(|_| HyperbolicError::Bits(bits))?;
     let base0 = base_log_i(&lengths_i(&sol.lengths, prec));
-    let (mesh, base) = replay_ptolemy(&sol.t0, &base0, &sol.flips)?;
+    certify_hyperbolic_on(sol, &base0, u, prec)
+}
+
+/// [`certify_hyperbolic`] for enclosures `base0` of the logarithmic lengths of `sol.t0`
+/// at `prec` (e.g. the input's exact metric replayed to `T₀`): `T₀` certified hyperbolic
+/// Delaunay for them, the residual and the existence radius on their Ptolemy replay.
+/// proof: B39, B89
+pub fn certify_hyperbolic_on(
+    sol: &HyperbolicUniformization,
+    base0: &[I],
+    u: &[Rational],
+    prec: Precision,
+) -> Result<HyperbolicCertificate, HyperbolicError> {
+    let n = sol.t0.n_vertices();
+    if u.len() != n || base0.len() != sol.t0.n_edges() {
+        return Err(super::error::UniformizeError::TargetCount {
+            expected: n,
+            got: u.len(),
+        }
+        .into());
+    }
+    let (mesh, base) = replay_ptolemy(&sol.t0, base0, &sol.flips)?;
     let point: Vec<I> = u.iter().map(|q| I::from_rational(q, prec)).collect();
     let residual = match enclosed_residual(&mesh, &base, &sol.targets, &point, prec) {
         Ok(r) => r,
@@ -281,7 +315,7 @@ pub fn certify_hyperbolic(
     let (_, residual_norm2) = norm2_bounds(&residual, prec);
     let residual_max = residual.iter().map(abs_up).fold(0.0, f64::max);
     let zero = vec![I::from_f64(0.0, prec); n];
-    let existence = match delaunay_on_box(&sol.t0, &base0, &zero) {
+    let existence = match delaunay_on_box(&sol.t0, base0, &zero) {
         Err(reason) => Existence::Undecided {
             reason: format!("T₀: {reason} (at u = 0)"),
         },

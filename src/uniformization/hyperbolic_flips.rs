@@ -321,3 +321,67 @@ pub fn delaunay_on_box(mesh: &Mesh, base: &[I], boxed: &[I]) -> Result<(), Strin
     }
     Ok(())
 }
+
+/// The geometric flips `flips` of the input (B104) replayed on enclosures `x` of its
+/// logarithmic lengths `2 log sinh(ℓ/2)` (the input's exact metric): each flip admitted
+/// only when both faces are certified strict triangles and the quadrilateral certified
+/// convex at both ends of the diagonal (`θ_i, θ_j < π`, half-angle form on intervals), the
+/// new diagonal's `x_kl = log(sinh²((a − b)/2) + sinh a sinh b sin²(θ_i/2))` enclosed
+/// (B20). The triangulation reached and its enclosures, or the first flip refused.
+/// proof: B104, B73
+pub fn replay_geometric_enclosed(
+    mesh: &Mesh,
+    mut x: Vec<I>,
+    flips: &[Edge],
+) -> Result<(Mesh, Vec<I>), String> {
+    use crate::scalar::Sign;
+    use crate::variational::hyperbolic::sinh;
+    let positive = |v: &I| v.is_valid() && v.sign() == Some(Sign::Positive);
+    let mut m = mesh.clone();
+    for (n, &e) in flips.iter().enumerate() {
+        let refused = |why: &str| format!("flip {n} of the input (edge e{}): {why}", e.0);
+        let [h_jk, h_ki, t_il, t_lj] = quad(&m, e).ok_or_else(|| refused("no quadrilateral"))?;
+        let mut angles = Vec::with_capacity(2);
+        for h in [e.side(0), e.side(1)] {
+            let f = m.face(h).ok_or_else(|| refused("a boundary edge"))?;
+            let l = m
+                .face_halfedges(f)
+                .map(|g| length_from_log(&x[g.edge().idx()]));
+            let half = l[0].lit(0.5);
+            for k in 0..3 {
+                let slack = (l[(k + 1) % 3].clone() + &l[(k + 2) % 3] - &l[k]) * &half;
+                if !positive(&slack) {
+                    return Err(refused("a face not certified a strict triangle"));
+                }
+            }
+            angles.push(angles_half_angle(&l));
+        }
+        let at = |h: HalfEdge, a: &[I; 3]| slot(&m, h).map(|k| a[k].clone());
+        let (Some(i_a), Some(i_b), Some(j_a), Some(j_b)) = (
+            at(h_jk, &angles[0]),
+            at(t_lj, &angles[1]),
+            at(h_ki, &angles[0]),
+            at(t_il, &angles[1]),
+        ) else {
+            return Err(refused("a corner outside its face"));
+        };
+        let pi = I::pi(x[0].ctx());
+        let theta_i = i_a + &i_b;
+        let theta_j = j_a + &j_b;
+        if !positive(&(pi.clone() - &theta_i)) || !positive(&(pi - &theta_j)) {
+            return Err(refused("not certified convex at both ends of the diagonal"));
+        }
+        let a = length_from_log(&x[h_ki.edge().idx()]);
+        let b = length_from_log(&x[t_il.edge().idx()]);
+        let half = a.lit(0.5);
+        let s = sinh(&((a.clone() - &b) * &half));
+        let w = (theta_i * &half).sin();
+        let sinh2 = s.clone() * &s + &(sinh(&a) * &sinh(&b) * &w * &w);
+        if !positive(&sinh2) {
+            return Err(refused("the new diagonal's length not enclosed"));
+        }
+        m.flip(e).map_err(|err| refused(&err.to_string()))?;
+        x[e.idx()] = sinh2.ln();
+    }
+    Ok((m, x))
+}

@@ -33,7 +33,7 @@ use crate::scalar::Real;
 use crate::special::lobachevsky;
 
 /// `sinh x = (eˣ − e⁻ˣ)/2`.
-fn sinh<T: Real>(x: &T) -> T {
+pub fn sinh<T: Real>(x: &T) -> T {
     (x.exp() - &(-x.clone()).exp()) * &x.lit(0.5)
 }
 

@@ -432,3 +432,51 @@ fn b39_cli_uniformize_hyperbolic_certifies_and_refuses_bad_input() {
         text(&out.stderr)
     );
 }
+
+/// B104 on enclosures (issue: certificates about the user's metric): genus 2 with every
+/// length `11/10`, not a binary64 number. The pipeline certifies the exact metric
+/// (`CertifiedMetric::Input`, distance below 10⁻⁵⁰); the claim it writes speaks of the
+/// binary64 lengths (the claim form's) and holds under `penner certify`. Control: the two
+/// certified solutions differ by about the rounding of `11/10` (`> 10⁻²⁰`), far beyond
+/// either distance, so the box certified for the exact metric excludes the rounded
+/// metric's solution and the other way round: they are certificates of different metrics.
+#[test]
+fn b104_hyperbolic_certificate_is_about_the_exact_input_metric() {
+    use penner::io::{Metric, Surface};
+    use penner::oracle::certify::{certify, ClaimVerdict};
+    use penner::oracle::claim::parse_value;
+    use penner::uniformization::hyperbolic_certificate::Existence;
+    use penner::uniformization::pipeline::{uniformize_hyperbolic, CertifiedMetric, Options};
+    let m = builders::genus(2).unwrap();
+    let l = Metric::Lengths(vec![Rational::from((11, 10)); m.n_edges()]);
+    let s = Surface::new("genus 2, lengths 11/10", m, l, None).unwrap();
+    let out = uniformize_hyperbolic(&s, None, &Options::default()).expect("solves");
+    assert_eq!(out.metric, CertifiedMetric::Input);
+    let Some(Existence::Holds { distance, .. }) = out.certificate.as_ref().map(|c| &c.existence)
+    else {
+        panic!("not certified: {:?}", out.certificate.map(|c| c.existence));
+    };
+    assert!(*distance < 1e-50, "{distance:e}");
+    assert!(matches!(
+        out.claim_metric(),
+        CertifiedMetric::Rounded { .. }
+    ));
+    let claim = out.claim().expect("a claim of the binary64 lengths");
+    let answer = certify(&parse_value(&claim).unwrap()).unwrap();
+    assert_eq!(answer.verdict, ClaimVerdict::Holds);
+    let (u_exact, _) = out.refined.as_ref().unwrap();
+    let gap = claim["u"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .zip(u_exact)
+        .map(|(c, e)| {
+            let c = penner::scalar::parse_rational(c.as_str().unwrap()).unwrap();
+            (c - e).abs().to_f64()
+        })
+        .fold(0.0, f64::max);
+    assert!(
+        gap > 1e-20,
+        "the two metrics' solutions differ by {gap:e} only"
+    );
+}
