@@ -8,7 +8,11 @@
 //! cargo run --release --example uniformize_targets -- sphere 100000   # noisy icosphere
 //! cargo run --release --example uniformize_targets -- torus 100000    # sheared torus
 //! cargo run --release --example uniformize_targets -- sphere 100000 f64   # the f64 solve only
+//! cargo run --release --example uniformize_targets -- sphere 100000 write DIR # the OBJ and targets
 //! ```
+//!
+//! `write DIR` writes `DIR/KIND-FACES.obj` (positions as shortest round-trip decimals) and
+//! `DIR/KIND-FACES-targets.json` (`Θ_i/π`) for timing the whole `penner uniformize` command.
 //!
 //! `sphere FACES`: the frequency-ν icosphere (20ν² faces closest to FACES), every vertex
 //! moved by up to 0.2 × the mean edge length, four cones of angle π at the vertices nearest
@@ -84,6 +88,37 @@ fn torus(faces: u64) -> (meshgen::Embedded, Targets) {
     (s, t)
 }
 
+/// Write `s` as `DIR/NAME.obj` and its targets as `DIR/NAME-targets.json` (new files only).
+fn write_case(
+    dir: &std::path::Path,
+    name: &str,
+    s: &meshgen::Embedded,
+    targets: &Targets,
+) -> std::io::Result<()> {
+    use std::fmt::Write as _;
+    let mut obj = String::new();
+    for p in &s.pos {
+        let _ = writeln!(obj, "v {} {} {}", p[0], p[1], p[2]);
+    }
+    for f in &s.faces {
+        let _ = writeln!(obj, "f {} {} {}", f[0] + 1, f[1] + 1, f[2] + 1);
+    }
+    let q: Vec<String> = targets.over_pi().iter().map(ToString::to_string).collect();
+    let write_new = |path: std::path::PathBuf, text: &str| {
+        use std::io::Write as _;
+        std::fs::OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(path)?
+            .write_all(text.as_bytes())
+    };
+    write_new(dir.join(format!("{name}.obj")), &obj)?;
+    write_new(
+        dir.join(format!("{name}-targets.json")),
+        &(serde_json::to_string(&q).unwrap_or_default() + "\n"),
+    )
+}
+
 #[allow(clippy::too_many_lines)] // the three stages and their report, read top to bottom
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -100,6 +135,16 @@ fn main() -> ExitCode {
             return ExitCode::from(3);
         }
     };
+    if args.get(2).map(String::as_str) == Some("write") {
+        let dir = std::path::Path::new(args.get(3).map_or(".", String::as_str));
+        return match write_case(dir, &format!("{kind}-{faces}"), &s, &targets) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("uniformize_targets: {e}");
+                ExitCode::from(4)
+            }
+        };
+    }
     let mesh = s.mesh();
     let lengths = s.lengths(&mesh);
     let t = Instant::now();

@@ -186,6 +186,10 @@ pub struct UniformizeExtra {
     /// Write the planar layout of the result as SVG to this new file.
     #[arg(long, value_name = "FILE")]
     pub svg: Option<PathBuf>,
+    /// Solve in f64 only and skip the refinement and the certificate: the result is
+    /// numerical and says so (exit 2, no claim to write).
+    #[arg(long, conflicts_with = "output")]
+    pub no_certify: bool,
 }
 
 /// Repairs of OBJ/OFF input (`penner::io::repair`), each reported; nothing is changed

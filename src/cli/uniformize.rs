@@ -96,7 +96,7 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         .map_err(|e| CliError::Input(format!("--precision: {e}")))?;
     let options = ClosedOptions {
         precision,
-        certify: true,
+        certify: !o.extra.no_certify,
     };
     let shown = o.path.display().to_string();
     let surface = into_surface(load_flip_case(o.path)?);
@@ -176,7 +176,7 @@ fn report_closed(
         sol.flip_sequence.len(),
         sol.steps.iter().map(|s| s.flips).collect::<Vec<_>>()
     );
-    let Some(proof) = &outcome.proof else {
+    if !sol.converged() {
         let _ = writeln!(
             out,
             "not converged ({:?}); max |Θ − θ| = {:e}; no certificate",
@@ -184,10 +184,15 @@ fn report_closed(
         );
         super::files::emit(&out)?;
         return Ok(code::UNDECIDED);
-    };
+    }
     if let Some(path) = o.extra.svg.as_deref() {
         out.push_str(&super::uniformize_svg::write(path, sol)?);
     }
+    let Some(proof) = &outcome.proof else {
+        out.push_str(&numerical_line(sol.residual_max));
+        super::files::emit(&out)?;
+        return Ok(code::UNDECIDED);
+    };
     if precision == Precision::Dd {
         let _ = writeln!(
             out,
@@ -227,4 +232,11 @@ fn into_surface(case: FlipCase) -> penner::io::Surface {
         FlipCase::Exact(s) => s,
         FlipCase::Decimal(d) => d.into_surface(),
     }
+}
+
+/// The line of a converged solve without a certificate (`--no-certify`): numerical.
+pub(super) fn numerical_line(residual_max: f64) -> String {
+    format!(
+        "converged: max |Θ − θ| = {residual_max:e} (f64); numerical, not certified (--no-certify)\n"
+    )
 }

@@ -65,6 +65,7 @@ pub fn report(
         out.push_str(&write_svg(path, outcome)?);
     }
     let Some(c) = &outcome.certification else {
+        out.push_str(&super::uniformize::numerical_line(sol.residual_max));
         super::files::emit(&out)?;
         return Ok(code::UNDECIDED);
     };

@@ -69,7 +69,10 @@ pub fn report(
             let _ = writeln!(out, "existence not certified: {reason}");
             code::UNDECIDED
         }
-        None => code::UNDECIDED,
+        None => {
+            out.push_str(&super::uniformize::numerical_line(sol.residual_max));
+            code::UNDECIDED
+        }
     };
     let _ = writeln!(
         out,

@@ -80,7 +80,7 @@ pub fn report(
         Some(CertificateOutcome::Undecided { reason }) => {
             let _ = writeln!(out, "disk problem not certified: {reason}");
         }
-        None => {}
+        None => out.push_str("disk problem: numerical, not certified (--no-certify)\n"),
     }
     let planar = &outcome.planar;
     let _ = writeln!(

@@ -14,7 +14,6 @@ use super::newton::Uniformization;
 use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
 use crate::algorithms::flips::flip_euclidean;
 use crate::geometry::exact3d::{opposite_in_plane, squared_distance};
-use crate::geometry::triangle::corner_angle;
 use crate::io::Surface;
 use crate::mesh::{Edge, Mesh};
 use crate::predicates::delaunay::{delaunay_sign_squared, enclose_p, Quad, QuadEdges};
@@ -92,17 +91,34 @@ pub fn replay_enclosed(
 }
 
 /// Whether the quadrilateral `[ij, jk, ki, il, lj]` (faces `ijk`, `jil`) is certified
-/// strictly convex at both ends of its diagonal: `∠kij + ∠jil < π` and `∠ijk + ∠lji < π`,
-/// the corner angles enclosed by the half-angle form (an enclosure that is not a valid
-/// triangle's angle fails the test). proof: B73
+/// strictly convex at both ends of its diagonal: `∠kij + ∠jil < π` and `∠ijk + ∠lji < π`.
+/// For corner angles `α, β ∈ (0, π)`, `α + β < π ⟺ cot α + cot β > 0` (`cot` decreases on
+/// `(0, π)` and `cot(π − β) = −cot β`); with `cot α = (b² + c² − a²)/(4A)` this is
+/// `x₁·4A₂ + x₂·4A₁ > 0` for `x` the numerators and `4A = √(16A²)` from the squared
+/// sides, both areas certified positive (each face a strict triangle). No arc tangent:
+/// the test costs a few products and two square roots per quadrilateral. proof: B73
 pub fn strictly_convex(q: &Quad<Interval<Mpfr>>) -> bool {
-    let at_i = corner_angle(&q.jk, &q.ki, &q.ij) + &corner_angle(&q.lj, &q.il, &q.ij);
-    let at_j = corner_angle(&q.ki, &q.jk, &q.ij) + &corner_angle(&q.il, &q.lj, &q.ij);
-    let pi = Interval::<Mpfr>::pi(q.ij.ctx());
-    [at_i, at_j].into_iter().all(|a| {
-        let slack = pi.clone() - &a;
-        slack.is_valid() && slack.sign() == Some(Sign::Positive)
-    })
+    let sq = |x: &Interval<Mpfr>| x.clone() * x;
+    let [ij, jk, ki, il, lj] = [&q.ij, &q.jk, &q.ki, &q.il, &q.lj].map(sq);
+    let four_area = |a: &Interval<Mpfr>, b: &Interval<Mpfr>, c: &Interval<Mpfr>| {
+        // 16A² = 2a²b² + 2b²c² + 2c²a² − a⁴ − b⁴ − c⁴ (a, b, c squared sides).
+        let two = a.lit(2.0);
+        let p = (a.clone() * b + &(b.clone() * c) + &(c.clone() * a)) * &two
+            - &(a.clone() * a)
+            - &(b.clone() * b)
+            - &(c.clone() * c);
+        (p.is_valid() && p.sign() == Some(Sign::Positive)).then(|| p.sqrt())
+    };
+    let (Some(a1), Some(a2)) = (four_area(&ij, &jk, &ki), four_area(&ij, &il, &lj)) else {
+        return false;
+    };
+    // At i: ∠kij opposite jk in ijk, ∠jil opposite lj in jil; at j: ∠ijk opposite ki,
+    // ∠lji opposite il.
+    let at_i = (ki.clone() + &ij - &jk) * &a2 + &((il.clone() + &ij - &lj) * &a1);
+    let at_j = (jk.clone() + &ij - &ki) * &a2 + &((lj.clone() + &ij - &il) * &a1);
+    [at_i, at_j]
+        .iter()
+        .all(|x| x.is_valid() && x.sign() == Some(Sign::Positive))
 }
 
 /// The exact squared lengths of `T₀` where they are known, one entry per edge: the input's

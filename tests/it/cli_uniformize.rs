@@ -260,3 +260,24 @@ fn t24_cli_uniformize_dd_refines_in_double_double_and_says_where_it_certifies() 
     let out = penner(&["certify", &bad.display().to_string()]);
     assert_eq!(out.status.code(), Some(2), "{}", text(&out.stdout));
 }
+
+/// `--no-certify` solves in f64 only: the report says the result is numerical and not
+/// certified (exit 2, never 0), and a certificate file cannot be asked for with it (usage,
+/// exit 3). Control: the same torus without the flag is certified (exit 0).
+#[test]
+fn uniformize_no_certify_is_numerical_and_says_so() {
+    let d = scratch("uniformize-no-certify");
+    let (m, l) = jittered_torus(5, 6, 2);
+    let surf = surface_file(&d, "torus", m, &l);
+    let out = penner(&["uniformize", &surf, "--flat", "--no-certify"]);
+    let said = text(&out.stdout);
+    assert_eq!(out.status.code(), Some(2), "{said}");
+    assert!(said.contains("numerical, not certified"), "{said}");
+    assert!(!said.contains("an exact solution lies within"), "{said}");
+    let cert = d.join("cert.json").display().to_string();
+    let out = penner(&["uniformize", &surf, "--flat", "--no-certify", "-o", &cert]);
+    assert_eq!(out.status.code(), Some(3));
+    assert!(!std::path::Path::new(&cert).exists());
+    let out = penner(&["uniformize", &surf, "--flat"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stdout));
+}

@@ -266,6 +266,7 @@ fn b73_box_excludes_moved_targets() {
 fn b73_convexity_admits_flips_of_convex_quadrilaterals_only() {
     use penner::predicates::delaunay::Quad;
     use penner::uniformization::input_metric::strictly_convex;
+    use rand::{Rng, SeedableRng};
     let prec = Precision::new(128).unwrap();
     let q = |x: Rational| Interval::<Mpfr>::from_rational(&x, prec);
     let sqrt = |x: i64| Interval::<Mpfr>::from_rational(&Rational::from(x), prec).sqrt();
@@ -289,6 +290,57 @@ fn b73_convexity_admits_flips_of_convex_quadrilaterals_only() {
         lj: sqrt(26),
     };
     assert!(!strictly_convex(&dart));
+    // Exactly π at i: i=(0,0), j=(2,0), k=(1,1), l=(−1,−1) (∠kij = 45°, ∠jil = 135°):
+    // not strictly convex, refused.
+    let flat = Quad {
+        ij: q(Rational::from(2)),
+        jk: sqrt(2),
+        ki: sqrt(2),
+        il: sqrt(2),
+        lj: sqrt(10),
+    };
+    assert!(!strictly_convex(&flat));
+    // Independent oracle: planar quadrilaterals i=(0,0), j=(1,0), k above, l below, their
+    // angle sums at i and j by atan2 in f64; away from π by 10⁻⁶ the verdicts agree.
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(73);
+    let (mut yes, mut no) = (0, 0);
+    for _ in 0..400 {
+        let k = [rng.gen_range(-1.5..2.5), rng.gen_range(0.05..1.5)];
+        let l = [rng.gen_range(-1.5..2.5), -rng.gen_range(0.05..1.5)];
+        let (i, j) = ([0.0f64, 0.0], [1.0f64, 0.0]);
+        let ang = |p: [f64; 2], a: [f64; 2], b: [f64; 2]| {
+            let (v, w) = ([a[0] - p[0], a[1] - p[1]], [b[0] - p[0], b[1] - p[1]]);
+            (v[0] * w[1] - v[1] * w[0])
+                .atan2(v[0] * w[0] + v[1] * w[1])
+                .abs()
+        };
+        let sum_i = ang(i, k, j) + ang(i, j, l);
+        let sum_j = ang(j, i, k) + ang(j, l, i);
+        let pi = std::f64::consts::PI;
+        if (sum_i - pi).abs() < 1e-6 || (sum_j - pi).abs() < 1e-6 {
+            continue;
+        }
+        let d = |a: [f64; 2], b: [f64; 2]| {
+            let r = |x: f64| Rational::from_f64(x).unwrap();
+            let s = r(a[0] - b[0]) * r(a[0] - b[0]) + r(a[1] - b[1]) * r(a[1] - b[1]);
+            Interval::<Mpfr>::from_rational(&s, prec).sqrt()
+        };
+        let quad = Quad {
+            ij: d(i, j),
+            jk: d(j, k),
+            ki: d(k, i),
+            il: d(i, l),
+            lj: d(l, j),
+        };
+        let convex = sum_i < pi && sum_j < pi;
+        assert_eq!(strictly_convex(&quad), convex, "k {k:?} l {l:?}");
+        if convex {
+            yes += 1;
+        } else {
+            no += 1;
+        }
+    }
+    assert!(yes > 50 && no > 50, "{yes} convex, {no} not");
 }
 
 #[test]
