@@ -30,6 +30,12 @@ Example::
     >>> r = penner.uniformize(V, F, targets=[1, 1, 1, 1])   # cone angles Θ_i = π
     >>> r.certified, penner.certify(r.claim)["verdict"]
     (True, 'holds')
+    >>> s = penner.uniformize(V, F, sphere=True)             # inscribed in the unit sphere
+    >>> s.uv.shape, penner.certify(s.claim)["verdict"]
+    ((4, 3), 'holds')
+    >>> F2, l2, info = penner.intrinsic_delaunay(V, F)       # libigl's (m, 3) lengths
+    >>> info["certificate"]
+    'input_metric'
 """
 
 from __future__ import annotations
@@ -46,13 +52,16 @@ from . import _penner
 from ._penner import InputError, Surface
 
 __all__ = [
+    "CheckRows",
     "InputError",
     "Surface",
     "UniformizeResult",
     "catalogue",
     "certify",
     "check",
+    "intrinsic_delaunay",
     "lobachevsky",
+    "pack",
     "read",
     "read_mesh",
     "surface",
@@ -199,6 +208,22 @@ def catalogue() -> List[Tuple[str, str]]:
     return list(_penner.catalogue())
 
 
+class CheckRows(list):
+    """The rows of :func:`check` (a list of dicts, as ``penner check --json`` prints them)
+    with ``failures``: per failing check, the document of its failure file
+    (``penner_failure``, the check, precision, witnesses and a minimal reproducing
+    ``surface``, which ``penner replay`` re-runs)."""
+
+    failures: List[Dict[str, Any]]
+
+    def __init__(self, rows: Sequence[Dict[str, Any]] = (), failures: Sequence[Dict[str, Any]] = ()):
+        super().__init__(rows)
+        self.failures = list(failures)
+
+    def __reduce__(self):  # pickled (Dask) with its failures
+        return (CheckRows, (list(self), self.failures))
+
+
 def check(
     V: Any = None,
     F: Any = None,
@@ -206,20 +231,44 @@ def check(
     l: Any = None,
     precision: Sequence[Union[str, int]] = ("f64", "dd", 256),
     only: Optional[Sequence[str]] = None,
-) -> List[Dict[str, Any]]:
+    reproducers: bool = True,
+    negative_controls: bool = False,
+) -> CheckRows:
     """Run every applicable check (or those named in ``only``, e.g. ``["T01", "T21"]``) at
-    each precision (``"f64"``, ``"dd"``, MPFR bits 53..65536, ``"exact"``).
+    each precision (``"f64"``, ``"dd"``, MPFR bits 53..65536, ``"exact"``), as
+    ``penner check`` does (the library's ``check_surface``).
 
     Returns one dict per (check, precision), as ``penner check --json`` prints them:
     ``case``, ``theorem``, ``title``, ``precision``, ``precision_bits``, ``seconds`` and
     ``result`` (``verdict``: ``holds`` / ``fails`` / ``undecided`` / ``not_applicable``,
     whether it is ``certified``, the witnesses of a failure). T01, for instance, is Gauss–Bonnet:
-    ``Σ_i (2π − Σ angles at i) = 2πχ``.
+    ``Σ_i (2π − Σ angles at i) = 2πχ``. The list's ``failures`` holds, per failing check,
+    its failure file's document with a minimal reproducer (none with
+    ``reproducers=False``; nothing is written to disk). ``negative_controls=True`` runs the
+    perturbed controls instead (each must fail).
+
+    >>> rows = penner.check(V, F, precision=("f64",), only=["T01"])
+    >>> rows[0]["result"]["verdict"], rows.failures
+    ('holds', [])
     """
     s = _surface_of(V, F, l)
     if isinstance(precision, (str, int)):
         precision = [precision]
-    return _penner.check(s, [str(p) for p in precision], [str(x) for x in (only or [])])
+    rows, failures = _penner.check(
+        s,
+        [str(p) for p in precision],
+        [str(x) for x in (only or [])],
+        bool(reproducers),
+        bool(negative_controls),
+    )
+    return CheckRows(rows, failures)
+
+
+_RESULT_FIELDS = (
+    "certified u u_exact F_out l_out uv radius distance residual metric metric_reason claim "
+    "reason converged stop newton_steps euclidean_flips ptolemy_flips shift bits "
+    "residual_max_f64 target layout F_layout pole"
+).split()
 
 
 @dataclass(frozen=True)
@@ -228,24 +277,36 @@ class UniformizeResult:
 
     ``certified`` is True when an exact solution ``u*`` of ``θ_i(u*) = Θ_i`` is proved to
     lie within ``distance`` (2-norm, and in the box of sup-norm ``radius``) of ``u``;
-    otherwise ``reason`` says why (not converged, not certified, not asked), and the
-    numerical solution is still returned.
+    otherwise ``reason`` says why (not converged, not certified, not asked, a step that
+    did not go through), and the numerical solution is still returned.
 
     Attributes:
-        u: (n,) float64 log scale factors (the certificate's centre when certified).
+        target: ``"closed"``, ``"boundary"``, ``"sphere"`` or ``"hyperbolic"``.
+        u: (n,) float64 log scale factors (the certificate's centre when certified; for
+            the sphere, the disk problem's, NaN at the pole; NaN everywhere when nothing
+            was computed).
         u_exact: the same as exact decimal strings (the values of the claim).
-        F_out: (m, 3) the final triangulation (intrinsic Delaunay for the scaled metric).
+        F_out: (m, 3) the final triangulation (intrinsic Delaunay for the scaled metric;
+            with boundary, copy 1 of the double when its seam is intact, else the whole
+            double, whose copy-2 vertices are numbered from n).
         l_out: (m, 3) its lengths ``e^{(u_i+u_j)/2} ℓ_ij``, ``l_out[f, i]`` opposite corner
-            ``i``.
+            ``i`` (hyperbolic lengths for ``hyperbolic``; chords of ``uv`` for the sphere).
         uv: (m, 3, 2) a planar layout per corner (a fundamental domain cut along the
-            edges outside a dual spanning tree; NaN for faces not reached).
+            edges outside a dual spanning tree; NaN for faces not reached); for the sphere
+            the inscribed positions (n, 3) on the unit sphere; None for ``hyperbolic``.
+        layout, F_layout: the sphere's planar disk (the surface punctured at ``pole``):
+            (k, 3, 2) per corner of its faces ``F_layout`` (k, 3).
         certified, radius, distance, residual: the certificate (``residual`` bounds
             ``‖Θ − θ(u)‖₂`` when certified, else is the numerical ``max |Θ − θ|``).
         metric: ``"input"`` (the certificate is about the input's exact metric) or
             ``"rounded"`` (about its binary64 rounding; ``metric_reason`` says why).
-        claim: the ``uniformization`` claim that :func:`certify` (and ``penner certify``)
-            re-checks from scratch, or None.
+        claim: the claim (``uniformization`` — of the double for a surface with boundary —,
+            ``sphere_uniformization`` or ``hyperbolic_uniformization``) that
+            :func:`certify` (and ``penner certify``) re-checks from scratch, or None.
         reason: why the result is not certified, or None.
+        details: what only one target has (``folds``, ``seam_flips``, ``layout_of``,
+            ``mirror_asymmetry`` with boundary; ``planar``, ``deviation`` for the sphere;
+            ``area``, ``gauss_bonnet`` for ``hyperbolic``).
     """
 
     certified: bool
@@ -253,7 +314,7 @@ class UniformizeResult:
     u_exact: List[str]
     F_out: np.ndarray
     l_out: np.ndarray
-    uv: np.ndarray
+    uv: Optional[np.ndarray]
     radius: Optional[float]
     distance: Optional[float]
     residual: float
@@ -269,6 +330,11 @@ class UniformizeResult:
     shift: int
     bits: int
     residual_max_f64: float = field(repr=False, default=float("nan"))
+    target: str = "closed"
+    layout: Optional[np.ndarray] = field(repr=False, default=None)
+    F_layout: Optional[np.ndarray] = field(repr=False, default=None)
+    pole: Optional[int] = None
+    details: Dict[str, Any] = field(repr=False, default_factory=dict)
 
     def __bool__(self) -> bool:
         return self.certified
@@ -281,22 +347,35 @@ def uniformize(
     l: Any = None,
     targets: Optional[Sequence[Any]] = None,
     flat: bool = False,
+    sphere: bool = False,
+    hyperbolic: bool = False,
+    pole: Optional[int] = None,
     precision: Union[str, int] = 256,
     certify: bool = True,
 ) -> UniformizeResult:
-    """Discrete uniformization of a closed surface with Ptolemy flips (T24): find ``u``
-    such that the metric ``e^{(u_i+u_j)/2} ℓ_ij`` (on the intrinsic Delaunay triangulation
-    it reaches) has cone angle ``Θ_i`` at every vertex — flat (``Θ_i = 2π``, genus 1) with
-    ``flat=True``, or ``targets``, one ``Θ_i/π`` per vertex (ints, ``Fraction``, exact
-    strings such as ``"2/3"``; floats are taken at their exact binary64 value), with
-    ``Σ_i (2π − Θ_i) = 2πχ`` (Gauss–Bonnet).
+    """Discrete uniformization with Ptolemy flips: find ``u`` such that the metric
+    ``e^{(u_i+u_j)/2} ℓ_ij`` (on the intrinsic Delaunay triangulation it reaches) has cone
+    angle ``Θ_i`` at every vertex.
+
+    * A closed surface (T24): flat (``Θ_i = 2π``, genus 1) with ``flat=True``, or
+      ``targets``, one ``Θ_i/π`` per vertex (ints, ``Fraction``, exact strings such as
+      ``"2/3"``; floats are taken at their exact binary64 value), with
+      ``Σ_i (2π − Θ_i) = 2πχ`` (Gauss–Bonnet).
+    * A surface with boundary (B79): ``targets`` are ``Θ_v/π`` at interior vertices and
+      the boundary angle sums ``φ_v/π`` at boundary vertices; ``flat=True`` is flat inside
+      with the boundary curvature spread evenly. Solved and certified on the double.
+    * ``sphere=True`` (genus 0, B74–B76): the conformally equivalent convex polyhedron
+      inscribed in the unit sphere; ``uv`` holds its vertices (n, 3), ``layout`` the
+      planar disk of the surface punctured at ``pole`` (default: chosen).
+    * ``hyperbolic=True`` (B38, B39): the lengths read as hyperbolic lengths, ``targets``
+      default ``2π``; the certificate is about the binary64 lengths.
 
     The solve runs in binary64, is refined at ``precision`` (``"f64"``, ``"dd"`` or MPFR
     bits 128..4096) and certified in MPFR interval arithmetic, for the input's exact
     metric where possible. Not converging or not certifying is a result with
     ``certified=False`` and ``reason``, never an exception; bad input (including targets
-    that violate Gauss–Bonnet) raises :class:`InputError`. Surfaces with boundary raise
-    ``NotImplementedError`` (not yet in the library's pipeline).
+    that violate Gauss–Bonnet, ``precision="dd"`` with ``sphere=True``) raises
+    :class:`InputError`.
 
     >>> r = penner.uniformize(V, F, targets=[1, 1, 1, 1])
     >>> r.certified, r.u.shape
@@ -309,8 +388,92 @@ def uniformize(
             raise InputError("targets: expected one Θ_i/π per vertex, not a string")
         seq = targets.ravel().tolist() if isinstance(targets, np.ndarray) else list(targets)
         t = [_literal(x, f"targets[{i}]") for i, x in enumerate(seq)]
-    d = _penner.uniformize(s, t, bool(flat), str(precision), bool(certify))
-    return UniformizeResult(**d)
+    if pole is not None:
+        if isinstance(pole, (bool, np.bool_)) or not isinstance(pole, (int, np.integer)) or pole < 0:
+            raise InputError(f"pole: {pole!r} is not a vertex index")
+        pole = int(pole)
+    d = _penner.uniformize(
+        s, t, bool(flat), str(precision), bool(certify), bool(sphere), bool(hyperbolic), pole
+    )
+    known = {k: d.pop(k) for k in list(d) if k in _RESULT_FIELDS}
+    return UniformizeResult(**known, details=d)
+
+
+def intrinsic_delaunay(
+    V: Any = None,
+    F: Any = None,
+    *,
+    l: Any = None,
+    flips: str = "euclidean",
+    precision: Union[str, int] = "f64",
+    replay: bool = True,
+) -> Tuple[np.ndarray, np.ndarray, Dict[str, Any]]:
+    """Flip the surface to its intrinsic Delaunay triangulation, as ``penner delaunay``
+    does: every interior edge ``ij`` with opposite angles ``α, β`` then has
+    ``cot α + cot β ≥ 0`` (``α + β ≤ π``), each decision certified (B61–B63).
+
+    ``flips`` is ``"euclidean"`` (the lengths of the flipped diagonals are those of the
+    flat quadrilateral) or ``"ptolemy"`` (``ℓ_new = (ℓ_a ℓ_c + ℓ_b ℓ_d)/ℓ_e``);
+    ``precision`` ``"f64"``, ``"dd"``, MPFR bits or ``"exact"`` (Ptolemy flips of exact
+    lengths). A rounded run is replayed on the input's exact metric (``replay``, B80).
+
+    Returns ``(F_out, l_out, info)``: the faces (m, 3) int64, the lengths (m, 3) float64
+    in libigl's layout (``l_out[f, i]`` opposite corner ``i``, as
+    ``igl.intrinsic_delaunay_cotmatrix`` returns them), and ``info`` with ``flips``,
+    ``certificate`` (``"input_metric"``, ``"rounded_metric"`` or ``"none"``), ``holds``,
+    ``words``, ``flip_sequence`` (edge indices) and ``summary`` (the document of
+    ``penner delaunay --summary``). Bad input or options raise :class:`InputError`.
+
+    >>> F2, l2, info = penner.intrinsic_delaunay(V, F)
+    >>> info["certificate"], l2.shape
+    ('input_metric', (4, 3))
+    """
+    s = _surface_of(V, F, l)
+    if not isinstance(flips, str):
+        raise InputError(f"flips: expected \"euclidean\" or \"ptolemy\", got {flips!r}")
+    return tuple(_penner.intrinsic_delaunay(s, flips, str(precision), bool(replay)))  # type: ignore[return-value]
+
+
+def pack(
+    F: Any,
+    mode: str = "disk",
+    *,
+    puncture: int = 0,
+    bits: int = 128,
+    epsilon: Union[str, float, Fraction] = "1e-20",
+) -> Dict[str, Any]:
+    """The maximal circle packing of a triangulation (Koebe–Andreev–Thurston, T11), as
+    ``penner pack`` computes it: circles with disjoint interiors, ``|c_i − c_j| = r_i + r_j``
+    on every edge, boundary circles internally tangent to the unit circle
+    (``|c_i| + r_i = 1``), ``mode="disk"`` for a disk, or ``mode="sphere"`` for a sphere
+    punctured at ``puncture`` (its circles in the unit disk, and caps on the sphere).
+
+    ``F`` is the faces (m, 3) (or a :class:`Surface` or a path: only its faces count).
+    The packing is computed at ``bits`` MPFR bits (53: binary64) and its tangency
+    certified within ``epsilon`` (an exact literal) by exact predicates on the exact
+    values of the computed circles, refined at twice the bits while it misses.
+
+    Returns a dict: ``centres`` (n, 2), ``radii`` (n,), ``unit_disk`` (n,) bool (tangent
+    to the unit circle), ``faces`` (the packed disk's faces; for the sphere, without the
+    star of the puncture, whose row of ``centres`` is NaN), ``caps`` (n, 4) rows
+    ``(N_x, N_y, N_z, H)`` of the caps ``{P: N·P > H}`` for the sphere, ``certified``,
+    ``verdict`` (``"holds"`` or ``"undecided"``: the packing exists, a miss is the
+    computation's), ``reason``, ``max_defect``, ``bits`` reached and ``document`` (the
+    exact values, as ``penner pack -o``). Bad input raises :class:`InputError`.
+
+    >>> p = penner.pack(F_octahedron, mode="sphere")
+    >>> p["certified"], p["caps"].shape
+    (True, (6, 4))
+    """
+    if mode not in ("disk", "sphere"):
+        raise InputError(f"mode: expected \"disk\" or \"sphere\", got {mode!r}")
+    if isinstance(F, Surface) or _is_path(F):
+        F = surface(F).F
+    for name, x in (("puncture", puncture), ("bits", bits)):
+        if isinstance(x, (bool, np.bool_)) or not isinstance(x, (int, np.integer)) or not 0 <= x < 2**31:
+            raise InputError(f"{name}: {x!r} is not a non-negative integer (below 2³¹)")
+    eps = _literal(epsilon, "epsilon")
+    return _penner.pack(_faces(F), mode == "sphere", int(puncture), int(bits), eps)
 
 
 def certify(claim: Union[Dict[str, Any], str]) -> Dict[str, Any]:

@@ -43,13 +43,33 @@ def make_surface(
 ) -> Surface: ...
 def read(path: str) -> Surface: ...
 def catalogue() -> List[Tuple[str, str]]: ...
-def check(surface: Surface, precision: List[str], only: List[str]) -> List[Dict[str, Any]]: ...
+def check(
+    surface: Surface,
+    precision: List[str],
+    only: List[str],
+    reproducers: bool = True,
+    negative_controls: bool = False,
+) -> Tuple[List[Dict[str, Any]], List[Dict[str, Any]]]: ...
 def uniformize(
     surface: Surface,
     targets: Optional[List[str]] = None,
     flat: bool = False,
     precision: str = "256",
     certify: bool = True,
+    sphere: bool = False,
+    hyperbolic: bool = False,
+    pole: Optional[int] = None,
+) -> Dict[str, Any]: ...
+def intrinsic_delaunay(
+    surface: Surface, flips: str = "euclidean", precision: str = "f64", replay: bool = True
+) -> Tuple[npt.NDArray[np.int64], npt.NDArray[np.float64], Dict[str, Any]]: ...
+def pack(
+    f: npt.NDArray[np.int64],
+    sphere: bool = False,
+    puncture: int = 0,
+    bits: int = 128,
+    epsilon: str = "1e-20",
+    name: str = "array",
 ) -> Dict[str, Any]: ...
 def certify(claim: str) -> Dict[str, Any]: ...
 def lobachevsky(

@@ -1,4 +1,4 @@
-"""Run :func:`penner.check` or :func:`penner.uniformize` over many surface files with Dask.
+"""Run :func:`penner.check`, :func:`penner.intrinsic_delaunay` or :func:`penner.uniformize` over many surface files with Dask.
 
 One task per file (``dask.delayed``); every task returns one row, and a file that cannot
 be read or is refused becomes a row with its ``error`` instead of stopping the others.
@@ -24,7 +24,9 @@ __all__ = ["check_corpus", "run_one"]
 def run_one(path: Union[str, "os.PathLike[str]"], command: str = "check", **options: Any) -> Dict[str, Any]:
     """One row for one file: ``file``, ``command``, ``verdict``, ``certified``,
     ``seconds``, ``error`` (None unless the file was refused) and, for ``check``, the
-    counts of rows per verdict (``holds``, ``fails``, ``undecided``, ``not_applicable``)."""
+    counts of rows per verdict (``holds``, ``fails``, ``undecided``, ``not_applicable``)
+    and of ``failures`` (minimal reproducers); for ``delaunay``, the ``flips`` and the
+    ``certificate`` as the verdict."""
     start = time.perf_counter()
     row: Dict[str, Any] = {
         "file": os.fspath(path),
@@ -52,6 +54,12 @@ def run_one(path: Union[str, "os.PathLike[str]"], command: str = "check", **opti
                 for r in rows
                 if r["result"].get("verdict") == "holds"
             )
+            row["failures"] = len(rows.failures)
+        elif command == "delaunay":
+            _, _, info = penner.intrinsic_delaunay(s, **options)
+            row["verdict"] = info["certificate"]
+            row["certified"] = info["holds"]
+            row["flips"] = info["flips"]
         elif command == "uniformize":
             r = penner.uniformize(s, **options)
             row["verdict"] = "certified" if r.certified else "not certified"
@@ -59,7 +67,7 @@ def run_one(path: Union[str, "os.PathLike[str]"], command: str = "check", **opti
             row["reason"] = r.reason
             row["residual"] = r.residual
         else:
-            raise ValueError(f"command: expected 'check' or 'uniformize', got {command!r}")
+            raise ValueError(f"command: expected 'check', 'delaunay' or 'uniformize', got {command!r}")
     except (penner.InputError, OSError, NotImplementedError) as e:
         row["error"] = f"{type(e).__name__}: {e}"
     row["seconds"] = time.perf_counter() - start
@@ -74,15 +82,15 @@ def check_corpus(
     as_frame: Optional[bool] = None,
     **options: Any,
 ) -> Any:
-    """Map ``command`` (``"check"`` or ``"uniformize"``, with ``options`` passed on) over
+    """Map ``command`` (``"check"``, ``"delaunay"`` or ``"uniformize"``, with ``options`` passed on) over
     the files ``paths``, one ``dask.delayed`` task each, and collect one row per file in
     the order given (:func:`run_one`).
 
     Returns a pandas DataFrame when pandas is installed (``as_frame=None`` or True), else a
     list of dicts.
     """
-    if command not in ("check", "uniformize"):
-        raise ValueError(f"command: expected 'check' or 'uniformize', got {command!r}")
+    if command not in ("check", "delaunay", "uniformize"):
+        raise ValueError(f"command: expected 'check', 'delaunay' or 'uniformize', got {command!r}")
     import dask
 
     tasks = [dask.delayed(run_one, pure=False)(p, command, **options) for p in paths]

@@ -232,3 +232,10 @@ pub fn per_face(mesh: &Mesh, values: &[f64]) -> Vec<f64> {
 pub fn face(f: usize) -> Face {
     Face(f as u32)
 }
+
+/// The mesh of faces alone (`F` (m, 3) row-major; the vertices are `0..=max F`), for the
+/// calls that need only the combinatorics (circle packings).
+pub fn mesh_of_faces(f: &[i64]) -> Result<Mesh, InputError> {
+    let (n, tris) = faces(f, None)?;
+    mesh(n, &tris)
+}

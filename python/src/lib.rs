@@ -1,19 +1,23 @@
 //! `penner._penner`: the Python extension module behind the `penner` package.
 //!
 //! A binding layer only: every computation is a call into the `penner` library (the
-//! registry of checks, the closed-surface uniformization pipeline, the claim oracle). The
+//! checks of `penner check`, the uniformization pipelines, the flips to intrinsic Delaunay,
+//! the maximal circle packing, the claim oracle). The
 //! pure-Python package `penner` (python/penner/) normalizes the arguments (numpy arrays,
 //! exact strings, paths) and wraps the results; this module copies the arrays into Rust
 //! data once, releases the GIL for the work (`Python::detach`) and builds numpy arrays and
 //! dicts from the results. Bad input raises `penner.InputError` naming the element.
 
 mod convert;
+mod delaunay;
 mod input;
+mod pipelines;
 
 use convert::{array1, array2, array3, json_to_py};
 use input::{InputError as BadInput, Numbers, Source};
 use numpy::{PyReadonlyArrayDyn, PyUntypedArrayMethods};
 use penner::io::{ReadError, Surface};
+use penner::oracle::check_surface::{check_surface, CheckOptions};
 use penner::oracle::{precision, registry, report};
 use penner::scalar::{nearest_f64, parse_rational};
 use penner::theorems::Settings;
@@ -22,7 +26,7 @@ use penner::uniformization::pipeline::{
     certify_solution, uniformize_closed, CertifiedMetric, Options, PipelineError, Precision,
 };
 use penner::uniformization::Targets;
-use pyo3::exceptions::{PyNotImplementedError, PyOSError, PyValueError};
+use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rug::Rational;
@@ -133,7 +137,10 @@ impl PySurface {
 }
 
 /// The faces of a mesh as an (m, 3) int64 array.
-fn faces_array<'py>(py: Python<'py>, mesh: &penner::mesh::Mesh) -> PyResult<Bound<'py, PyAny>> {
+pub(crate) fn faces_array<'py>(
+    py: Python<'py>,
+    mesh: &penner::mesh::Mesh,
+) -> PyResult<Bound<'py, PyAny>> {
     let flat: Vec<i64> = mesh
         .face_list()
         .iter()
@@ -237,39 +244,52 @@ fn catalogue() -> Vec<(&'static str, &'static str)> {
 }
 
 /// Run the checks (`only`: their IDs; empty: all) at the precisions (`f64`, `dd`, MPFR
-/// bits, `exact`) on the surface: one row per (check, precision) as `penner check --json`.
+/// bits, `exact`) on the surface, as `penner check` does ([`check_surface`]): the rows
+/// (one per check and precision, as `penner check --json`) and, per failing check, its
+/// failure file's document with a minimal reproducer (when `reproducers`).
 #[pyfunction]
+#[pyo3(signature = (surface, precision, only, reproducers=true, negative_controls=false))]
 fn check<'py>(
     py: Python<'py>,
     surface: &PySurface,
     precision: Vec<String>,
     only: Vec<String>,
+    reproducers: bool,
+    negative_controls: bool,
 ) -> PyResult<Bound<'py, PyAny>> {
     let precs = precision::parse_list(&precision.join(","))
         .map_err(|e| InputError::new_err(format!("precision: {e}")))?;
     if precs.is_empty() {
         return Err(InputError::new_err("precision: no precision given"));
     }
-    let checks = registry::select(&only).map_err(|id| {
-        let known: Vec<&str> = registry::catalogue().iter().map(|c| c.id).collect();
-        InputError::new_err(format!(
-            "only: no check `{id}` in this build (available: {})",
-            known.join(", ")
-        ))
-    })?;
+    let options = CheckOptions {
+        precisions: precs,
+        only,
+        negative_controls,
+        reproducers,
+        settings: Settings::default(),
+    };
     let s = Arc::clone(&surface.inner);
-    let rows = py.detach(|| registry::run_case(&s, &checks, &precs, &Settings::default()));
-    if !only.is_empty() {
-        if let Some(c) = checks.iter().find(|c| rows.iter().all(|r| r.id != c.id)) {
-            return Err(InputError::new_err(format!(
-                "only: {} has no form at the precisions asked ({})",
-                c.id,
-                precision.join(", ")
-            )));
-        }
-    }
-    let values: Vec<serde_json::Value> = rows.iter().map(report::row_json).collect();
-    json_to_py(py, &serde_json::Value::Array(values))
+    let out = py
+        .detach(|| check_surface(&s, &s.name, &options, &|_| {}))
+        .map_err(|e| {
+            // The library's words are the command line's: say them in Python's.
+            let text = e
+                .to_string()
+                .replace("--only ", "only: ")
+                .replace("--only", "only")
+                .replace("--precision exact", "precision=\"exact\"");
+            InputError::new_err(text)
+        })?;
+    let rows: Vec<serde_json::Value> = out.rows.iter().map(report::row_json).collect();
+    let failures: Vec<serde_json::Value> = out
+        .failures
+        .iter()
+        .map(penner::oracle::failure::Failure::to_json)
+        .collect();
+    let rows = json_to_py(py, &serde_json::Value::Array(rows))?;
+    let failures = json_to_py(py, &serde_json::Value::Array(failures))?;
+    Ok((rows, failures).into_pyobject(py)?.into_any())
 }
 
 /// What [`uniformize`] computed, before it becomes Python objects.
@@ -279,45 +299,13 @@ struct Uniformized {
     reason: Option<String>,
 }
 
-/// Uniformize a closed surface to the cone angles `targets` (Θ_i/π, exact literals) or
-/// flat (`flat`), at `precision` (`f64`, `dd` or MPFR bits 128..=4096), certified when
-/// `certify`: a dict (the package wraps it in `penner.UniformizeResult`).
-#[pyfunction]
-#[pyo3(signature = (surface, targets=None, flat=false, precision="256".to_string(), certify=true))]
-fn uniformize<'py>(
-    py: Python<'py>,
-    surface: &PySurface,
-    targets: Option<Vec<String>>,
-    flat: bool,
-    precision: String,
-    certify: bool,
-) -> PyResult<Bound<'py, PyAny>> {
-    let precision: Precision = precision
-        .parse()
-        .map_err(|e| InputError::new_err(format!("precision: {e}")))?;
-    let s = Arc::clone(&surface.inner);
-    if !s.mesh.is_closed() {
-        return Err(PyNotImplementedError::new_err(format!(
-            "{}: the surface has {} boundary edge(s); the library's uniformization pipeline \
-             covers closed surfaces (flat and cone targets) only so far (the command line's \
-             `penner uniformize` handles surfaces with boundary)",
-            s.name,
-            s.mesh.n_boundary_edges()
-        )));
-    }
-    let n = s.mesh.n_vertices();
-    let targets = match (targets, flat) {
-        (Some(_), true) => {
-            return Err(InputError::new_err(
-                "give either targets or flat=True, not both",
-            ))
-        }
-        (None, false) => {
-            return Err(InputError::new_err(
-                "the target angles are required: targets (Θ_i/π, one per vertex) or flat=True",
-            ))
-        }
-        (None, true) => Targets::flat(n),
+/// The targets given (`Θ_i/π`, exact literals, one per vertex), or `None` for `flat`.
+fn parse_targets(t: Option<Vec<String>>, flat: bool, n: usize) -> PyResult<Option<Targets>> {
+    match (t, flat) {
+        (Some(_), true) => Err(InputError::new_err(
+            "give either targets or flat=True, not both",
+        )),
+        (None, _) => Ok(None),
         (Some(t), false) => {
             if t.len() != n {
                 return Err(InputError::new_err(format!(
@@ -332,7 +320,84 @@ fn uniformize<'py>(
                     parse_rational(x).map_err(|e| InputError::new_err(format!("targets[{i}]: {e}")))
                 })
                 .collect::<PyResult<Vec<Rational>>>()?;
-            Targets::from_multiples_of_pi(q)
+            Ok(Some(Targets::from_multiples_of_pi(q)))
+        }
+    }
+}
+
+/// Uniformize the surface, at `precision` (`f64`, `dd` or MPFR bits 128..=4096),
+/// certified when `certify`: a closed surface to the cone angles `targets` (Θ_i/π, exact
+/// literals) or flat (`flat`); a surface with boundary to `targets` (Θ_v/π inside, φ_v/π
+/// on the boundary) or flat with the boundary curvature spread evenly; to the sphere
+/// (`sphere`, optional `pole`); or hyperbolic (`hyperbolic`, default targets 2π). A dict
+/// (the package wraps it in `penner.UniformizeResult`).
+#[pyfunction]
+#[pyo3(signature = (surface, targets=None, flat=false, precision="256".to_string(), certify=true, sphere=false, hyperbolic=false, pole=None))]
+#[allow(clippy::too_many_arguments, clippy::fn_params_excessive_bools)]
+fn uniformize<'py>(
+    py: Python<'py>,
+    surface: &PySurface,
+    targets: Option<Vec<String>>,
+    flat: bool,
+    precision: String,
+    certify: bool,
+    sphere: bool,
+    hyperbolic: bool,
+    pole: Option<u32>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let precision: Precision = precision
+        .parse()
+        .map_err(|e| InputError::new_err(format!("precision: {e}")))?;
+    let s = Arc::clone(&surface.inner);
+    let n = s.mesh.n_vertices();
+    if sphere && hyperbolic {
+        return Err(InputError::new_err(
+            "give at most one of sphere=True and hyperbolic=True",
+        ));
+    }
+    if sphere && (targets.is_some() || flat) {
+        return Err(InputError::new_err(
+            "sphere=True takes no targets and no flat=True (the sphere's cone angles are 2π)",
+        ));
+    }
+    if pole.is_some() && !sphere {
+        return Err(InputError::new_err("pole: only with sphere=True"));
+    }
+    if pole.is_some_and(|p| p as usize >= n) {
+        return Err(InputError::new_err(format!(
+            "pole: vertex {} is out of range ({n} vertices)",
+            pole.unwrap_or_default()
+        )));
+    }
+    let parsed = parse_targets(targets, flat, n)?;
+    let target = if sphere {
+        Some(pipelines::Target::Sphere(pole))
+    } else if hyperbolic {
+        Some(pipelines::Target::Hyperbolic)
+    } else if !s.mesh.is_closed() {
+        Some(pipelines::Target::Boundary)
+    } else {
+        None
+    };
+    if let Some(target) = target {
+        if target == pipelines::Target::Boundary && parsed.is_none() && !flat {
+            return Err(InputError::new_err(
+                "the target angles are required: targets (Θ_v/π at interior vertices, φ_v/π at boundary vertices) or flat=True",
+            ));
+        }
+        let options = Options { precision, certify };
+        let surface = Arc::clone(&s);
+        let run = py.detach(move || pipelines::run(&surface, target, parsed.as_ref(), &options));
+        let run = run.map_err(InputError::new_err)?;
+        return pipelines::to_py(py, &s, &run, target, certify);
+    }
+    let targets = match (parsed, flat) {
+        (Some(t), _) => t,
+        (None, true) => Targets::flat(n),
+        (None, false) => {
+            return Err(InputError::new_err(
+                "the target angles are required: targets (Θ_i/π, one per vertex) or flat=True",
+            ))
         }
     };
     let done = py.detach(move || -> Result<Uniformized, String> {
@@ -419,6 +484,7 @@ fn uniformized_to_py<'py>(py: Python<'py>, done: &Uniformized) -> PyResult<Bound
             None => uv.extend([f64::NAN; 6]),
         }
     }
+    d.set_item("target", "closed")?;
     d.set_item("certified", certified)?;
     d.set_item("u", array1(py, u))?;
     d.set_item("u_exact", u_exact)?;
@@ -473,7 +539,7 @@ fn uniformized_to_py<'py>(py: Python<'py>, done: &Uniformized) -> PyResult<Bound
 }
 
 /// An exact decimal string of a dyadic rational, `p/q` otherwise.
-fn decimal(q: &Rational) -> String {
+pub(crate) fn decimal(q: &Rational) -> String {
     penner::uniformization::claim_form::exact_decimal(q).unwrap_or_else(|| q.to_string())
 }
 
@@ -582,6 +648,8 @@ fn _penner(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(check, m)?)?;
     m.add_function(wrap_pyfunction!(uniformize, m)?)?;
     m.add_function(wrap_pyfunction!(certify, m)?)?;
+    m.add_function(wrap_pyfunction!(delaunay::intrinsic_delaunay, m)?)?;
+    m.add_function(wrap_pyfunction!(delaunay::pack, m)?)?;
     m.add_function(wrap_pyfunction!(lobachevsky, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

@@ -48,3 +48,10 @@ def test_uniformize_corpus_and_frame(tmp_path):
     assert np.all(table["seconds"] >= 0)
     with pytest.raises(ValueError, match="command"):
         check_corpus(paths, "flip")
+
+
+def test_delaunay_corpus(corpus):
+    rows = check_corpus(corpus, "delaunay", as_frame=False)
+    assert [r["verdict"] for r in (rows[0], rows[2])] == ["input_metric"] * 2
+    assert rows[0]["certified"] and rows[0]["flips"] == penner.intrinsic_delaunay(corpus[0])[2]["flips"]
+    assert rows[1]["verdict"] is None and "InputError" in rows[1]["error"]

@@ -72,7 +72,7 @@ def test_exact_decimal_strings_are_exact():
     assert [r["result"]["verdict"] for r in rows] == ["holds"]
     assert rows[0]["result"]["certified"] is True
     # T01 has no exact form: asking for it alone is refused, not silently empty.
-    with pytest.raises(penner.InputError, match="T01 has no form"):
+    with pytest.raises(penner.InputError, match="T01: the check has no form"):
         penner.check(s, precision=("exact",), only=["T01"])
 
 
@@ -257,9 +257,9 @@ def test_uniformize_refusals_and_uncertified_results(tet, octa):
     r = penner.uniformize(V, F, targets=[1] * 4, certify=False)
     assert not r.certified and r.claim is None and "certify=False" in r.reason
     assert r.u.shape == (4,)
-    # A surface with boundary: the library has no pipeline for it yet.
-    with pytest.raises(NotImplementedError, match="boundary"):
-        penner.uniformize(V, F[:3], flat=True)
+    # A surface with boundary (test_pipelines.py): its targets are refused by their count.
+    with pytest.raises(penner.InputError, match="3 values for 4 vertices"):
+        penner.uniformize(V, F[:3], targets=[1, 1, 1])
 
 
 def test_precisions_f64_and_dd_certify(octa):
