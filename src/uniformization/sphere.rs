@@ -653,10 +653,15 @@ pub fn uniformize_sphere(
     for p in &mut planar {
         *p = [(p[0] - cx) / spread, (p[1] - cy) / spread];
     }
-    // 4. Inverse stereographic projection, v∞ at the north pole.
+    // 4. Inverse stereographic projection, v∞ at the north pole, composed with the
+    // reflection y ↦ −y: the projection alone reverses orientation (a counterclockwise
+    // planar face is seen clockwise from outside the sphere), the reflection restores it so
+    // that the faces of the inscribed polyhedron are oriented outward, as the input's are.
+    // Both are isometries of the chords' cross ratios (B74).
     let mut positions = vec![[0.0, 0.0, 1.0]; t0.n_vertices()];
     for (k, &v) in disk.vertex.iter().enumerate() {
-        positions[v as usize] = inverse_stereographic(planar[k]);
+        let [x, y, z] = inverse_stereographic(planar[k]);
+        positions[v as usize] = [x, -y, z];
     }
     // 5. Möbius normalisation.
     let centroid_norm = if opts.normalize {

@@ -322,3 +322,47 @@ fn t24_sphere_bad_input_is_typed() {
     let open = Mesh::from_faces(3, &[[0, 1, 2]]).unwrap();
     assert!(uniformize_sphere(&open, &[1.0; 3], &SphereOptions::default()).is_err());
 }
+
+/// The inscribed polyhedron keeps the input's orientation: on the octahedron and the
+/// icosahedron (outward faces: positive signed volume `Σ det(p_a, p_b, p_c)/6`), the
+/// output's faces are outward too (they were inward: the inverse stereographic projection
+/// reverses orientation). Control: the same
+/// positions mirrored (`y ↦ −y`) have negative volume.
+#[test]
+fn b74_inscribed_polyhedron_keeps_the_orientation() {
+    use penner::uniformization::sphere::{uniformize_sphere, SphereOptions};
+    let volume = |faces: &[[u32; 3]], p: &dyn Fn(usize) -> [f64; 3]| {
+        faces
+            .iter()
+            .map(|f| {
+                let [a, b, c] = f.map(|v| p(v as usize));
+                a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+                    + a[2] * (b[0] * c[1] - b[1] * c[0])
+            })
+            .sum::<f64>()
+            / 6.0
+    };
+    let cases = [
+        ("octahedron", penner::mesh::builders::octahedron()),
+        ("icosahedron", penner::mesh::builders::icosahedron()),
+    ];
+    for (name, e) in cases {
+        let input = |v: usize| e.positions[v].clone().map(|q| q.to_f64());
+        assert!(
+            volume(&e.mesh.face_list(), &input) > 0.0,
+            "{name}: input outward"
+        );
+        let lengths: Vec<f64> = penner::io::Surface::from_embedded(name, e.clone())
+            .unwrap()
+            .lengths(());
+        let sol = uniformize_sphere(&e.mesh, &lengths, &SphereOptions::default()).unwrap();
+        let out = |v: usize| sol.positions[v];
+        let faces = sol.mesh.face_list();
+        assert!(volume(&faces, &out) > 0.0, "{name}: output outward");
+        let mirrored = |v: usize| {
+            let [x, y, z] = sol.positions[v];
+            [x, -y, z]
+        };
+        assert!(volume(&faces, &mirrored) < 0.0, "{name}: control");
+    }
+}
