@@ -514,4 +514,119 @@ mod terms {
             }
         }
     }
+
+    /// B35's hull and angle-sum correction, against an independent binary64 computation:
+    /// on the configuration of [`term_b35_other_edges_delaunay_in_each_configuration`] at
+    /// `s = 1.2` (`l` inside the circle of `ijk`, so `ij ∈ U` with `P_ij < 0` at `u = 0`),
+    /// the cotan Laplacian of `T` and of `T` with `ij` Ptolemy-flipped (`ℓ_kl =
+    /// (ℓ_ki ℓ_lj + ℓ_jk ℓ_il)/ℓ_ij`) are computed in `f64` from the side lengths (law of
+    /// cosines). Every entry of both lies in the enclosed Laplacian over the box of radius
+    /// `10⁻⁶` (within `10⁻¹²` for the `f64` rounding), and the entries of the two differ
+    /// by more than `10⁻³`, so a hull that kept one configuration only would miss the other.
+    /// The angle sums of `T` at `u = 0`, corrected, enclose the flipped configuration's
+    /// (`P < 0` is certified there), which differ from `T`'s by more than `10⁻³`.
+    #[test]
+    fn term_b35_hull_and_corrected_angle_sums_hold_both_configurations() {
+        let prec = Precision::new(128).expect("precision");
+        let mesh = Mesh::from_faces(5, &[[0, 2, 1], [2, 0, 3], [1, 2, 4]]).expect("three faces");
+        let s = 1.2f64;
+        let pi = std::f64::consts::PI;
+        let m = [s * (pi / 4.0).cos(), -s * (pi / 4.0).sin()];
+        let points = [[-1.0, 0.0], [0.0, -1.0], [1.0, 0.0], [0.0, 0.75], m];
+        let base = planar_lengths(&mesh, &points, prec);
+        let cell = cell_on(&mesh, &base, 1e-6, prec).expect("certified");
+        let boundary = cell.boundary.as_ref().expect("ij in U");
+        let d = |a: usize, b: usize| {
+            let (p, q) = (points[a], points[b]);
+            (p[0] - q[0]).hypot(p[1] - q[1])
+        };
+        // i = 0, k = 1, j = 2, l = 3, m = 4.
+        let kl = (d(1, 0) * d(3, 2) + d(2, 1) * d(0, 3)) / d(0, 2);
+        let len = |a: usize, b: usize| {
+            if (a, b) == (1, 3) || (a, b) == (3, 1) {
+                kl
+            } else {
+                d(a, b)
+            }
+        };
+        // Faces of T and of T with ij flipped (to kl), counterclockwise as the mesh's.
+        let t_faces = [[0, 2, 1], [2, 0, 3], [1, 2, 4]];
+        let f_faces = [[1, 3, 2], [3, 1, 0], [1, 2, 4]];
+        let laplacian = |faces: &[[usize; 3]]| {
+            let mut l = [[0.0f64; 5]; 5];
+            for f in faces {
+                for c in 0..3 {
+                    // The corner at f[c], opposite the side f[c+1] f[c+2].
+                    let (o, a, b) = (f[c], f[(c + 1) % 3], f[(c + 2) % 3]);
+                    let (x, y, z) = (len(a, b), len(o, a), len(o, b));
+                    let area4 = ((x + y + z) * (-x + y + z) * (x - y + z) * (x + y - z)).sqrt();
+                    let w = 0.5 * (y * y + z * z - x * x) / area4;
+                    l[a][b] += w;
+                    l[b][a] += w;
+                    l[a][a] -= w;
+                    l[b][b] -= w;
+                }
+            }
+            l
+        };
+        let (lt, lf) = (laplacian(&t_faces), laplacian(&f_faces));
+        let mut spread = 0.0f64;
+        for i in 0..5 {
+            for j in 0..5 {
+                let enclosed = cell.laplacian.get(i, j);
+                for (which, want) in [("T", lt[i][j]), ("flipped", lf[i][j])] {
+                    let ok = match enclosed {
+                        Some(e) => {
+                            let (lo, hi) = ends(e);
+                            lo - 1e-12 <= want && want <= hi + 1e-12
+                        }
+                        None => want.abs() < 1e-12,
+                    };
+                    assert!(
+                        ok,
+                        "L[{i}][{j}] of {which} = {want} not in {:?}",
+                        enclosed.map(ends)
+                    );
+                }
+                spread = spread.max((lt[i][j] - lf[i][j]).abs());
+            }
+        }
+        assert!(
+            spread > 1e-3,
+            "the configurations' Laplacians agree ({spread:e})"
+        );
+        // Angle sums at u = 0: T's, corrected to the flipped configuration's.
+        let zero = vec![I::new(Mpfr::from_f64(0.0, prec), Mpfr::from_f64(0.0, prec)); 5];
+        let lengths = scaled(&mesh, &base, &zero);
+        let mut theta = crate::geometry::cone_angles::cone_angles(&mesh, &lengths);
+        let before: Vec<f64> = theta
+            .iter()
+            .map(|t| 0.5 * (ends(t).0 + ends(t).1))
+            .collect();
+        boundary
+            .correct_angle_sums(&mesh, &zero, &lengths, &mut theta)
+            .expect("enclosed");
+        let sums = |faces: &[[usize; 3]]| {
+            let mut out = [0.0f64; 5];
+            for f in faces {
+                for c in 0..3 {
+                    let (o, a, b) = (f[c], f[(c + 1) % 3], f[(c + 2) % 3]);
+                    let (x, y, z) = (len(a, b), len(o, a), len(o, b));
+                    out[o] += ((y * y + z * z - x * x) / (2.0 * y * z)).acos();
+                }
+            }
+            out
+        };
+        let want = sums(&f_faces);
+        let mut moved = 0.0f64;
+        for v in 0..5 {
+            let (lo, hi) = ends(&theta[v]);
+            assert!(
+                lo - 1e-12 <= want[v] && want[v] <= hi + 1e-12,
+                "θ[{v}] = {want:?}"
+            );
+            moved = moved.max((want[v] - before[v]).abs());
+        }
+        assert!(moved > 1e-3, "the correction moved nothing ({moved:e})");
+    }
 }
