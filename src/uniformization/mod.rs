@@ -8,27 +8,49 @@
 //! - [`certificate`]: an a-posteriori existence proof near a computed `u` (B70, B71);
 //! - [`targets`]: prescribed angles as exact multiples of π and Gauss–Bonnet.
 //! - [`boundary`]: surfaces with boundary (cone and boundary angles) by the double (B79).
-//! - [`pipeline`]: the closed-surface pipeline as one call (solve, refine, certify for the
-//!   input's exact metric, the claim).
+//! - [`pipeline`]: one call per target (solve, refine, certify for the input's exact
+//!   metric, the claim).
+//!
+//! The files: the core (Newton, refinement, Hessian, scaling, targets, layout) at the top;
+//! `certificate/` the a-posteriori proof shared by the targets (box, cell boundaries, ball
+//! argument, verified Cholesky, exclusion, Krawczyk, the input metric and the claim form);
+//! `sphere/` the sphere target (the disk's Dirichlet problem, its certificate, checks and
+//! claim); `hyperbolic/` the hyperbolic target (kernel, flips, certificate, claim);
+//! `pipeline/` the pipelines. Module paths stay flat (`uniformization::sphere_claim`).
 
+#[path = "certificate/ball_argument.rs"]
 pub(crate) mod ball_argument;
 pub mod boundary;
+#[path = "certificate/box_f64.rs"]
 pub(crate) mod box_f64;
+#[path = "certificate/cell_boundary.rs"]
 pub(crate) mod cell_boundary;
+#[path = "certificate/certificate.rs"]
 pub mod certificate;
+#[path = "certificate/claim_form.rs"]
 pub mod claim_form;
 pub mod components;
+#[path = "sphere/dirichlet.rs"]
 pub mod dirichlet;
+#[path = "sphere/dirichlet_certificate.rs"]
 pub mod dirichlet_certificate;
 pub mod error;
+#[path = "certificate/exclusion.rs"]
 pub mod exclusion;
 pub mod hessian;
+#[path = "hyperbolic/hyperbolic.rs"]
 pub mod hyperbolic;
+#[path = "hyperbolic/hyperbolic_certificate.rs"]
 pub mod hyperbolic_certificate;
+#[path = "hyperbolic/hyperbolic_claim.rs"]
 pub mod hyperbolic_claim;
+#[path = "hyperbolic/hyperbolic_flips.rs"]
 pub mod hyperbolic_flips;
+#[path = "hyperbolic/hyperbolic_kernel.rs"]
 pub mod hyperbolic_kernel;
+#[path = "certificate/input_metric.rs"]
 pub mod input_metric;
+#[path = "certificate/krawczyk.rs"]
 pub mod krawczyk;
 pub mod layout;
 pub mod newton;
@@ -36,12 +58,17 @@ pub(crate) mod newton_driver;
 pub mod pipeline;
 pub mod refine;
 pub mod scaling;
+#[path = "sphere/sphere.rs"]
 pub mod sphere;
+#[path = "sphere/sphere_checks.rs"]
 pub mod sphere_checks;
+#[path = "sphere/sphere_claim.rs"]
 pub mod sphere_claim;
+#[path = "sphere/sphere_refine.rs"]
 pub mod sphere_refine;
 pub mod svg;
 pub mod targets;
+#[path = "certificate/verified_cholesky.rs"]
 pub mod verified_cholesky;
 
 pub use error::UniformizeError;
