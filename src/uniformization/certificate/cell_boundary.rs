@@ -486,7 +486,17 @@ mod terms {
     #[test]
     fn term_b35_other_edges_delaunay_in_each_configuration() {
         let prec = Precision::new(128).expect("precision");
-        let mesh = Mesh::from_faces(5, &[[0, 2, 1], [2, 0, 3], [1, 2, 4]]).expect("three faces");
+        // Both orientations, so that the U-quadrilateral is on either side of `kj`.
+        for faces in [
+            [[0, 2, 1], [2, 0, 3], [1, 2, 4]],
+            [[0, 1, 2], [3, 0, 2], [4, 2, 1]],
+        ] {
+            let mesh = Mesh::from_faces(5, &faces).expect("three faces");
+            other_edges_case(&mesh, prec);
+        }
+    }
+
+    fn other_edges_case(mesh: &Mesh, prec: Precision) {
         let angle = |p: [f64; 2], a: [f64; 2], b: [f64; 2]| {
             let (v, w) = ([a[0] - p[0], a[1] - p[1]], [b[0] - p[0], b[1] - p[1]]);
             (v[0] * w[1] - v[1] * w[0])
@@ -503,8 +513,8 @@ mod terms {
                 in_t < -0.04 && (flipped > 0.09) == refused,
                 "{in_t} {flipped}"
             );
-            let base = planar_lengths(&mesh, &[i, k, j, l, m], prec);
-            match cell_on(&mesh, &base, 1e-6, prec) {
+            let base = planar_lengths(mesh, &[i, k, j, l, m], prec);
+            match cell_on(mesh, &base, 1e-6, prec) {
                 Err(why) if refused => assert!(why.contains("once"), "{why}"),
                 Ok(cell) if !refused => {
                     assert_eq!(cell.boundary.expect("ij in U").edges.len(), 1);
