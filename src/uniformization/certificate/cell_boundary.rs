@@ -532,10 +532,12 @@ mod terms {
     /// (ℓ_ki ℓ_lj + ℓ_jk ℓ_il)/ℓ_ij`) are computed in `f64` from the side lengths (law of
     /// cosines). Every entry of both lies in the enclosed Laplacian over the box of radius
     /// `10⁻⁶` (within `10⁻¹²` for the `f64` rounding), and the entries of the two differ
-    /// by more than `10⁻³`, so a hull that kept one configuration only would miss the other.
+    /// by more than `10⁻³`, so a hull that kept one configuration only would miss the other;
+    /// no entry is wider than `1.01` times the two configurations' difference plus `10⁻⁴`.
     /// The angle sums of `T` at `u = 0`, corrected, enclose the flipped configuration's
     /// (`P < 0` is certified there), which differ from `T`'s by more than `10⁻³`.
     #[test]
+    #[allow(clippy::too_many_lines)] // two configurations computed independently, then compared
     fn term_b35_hull_and_corrected_angle_sums_hold_both_configurations() {
         let prec = Precision::new(128).expect("precision");
         let mesh = Mesh::from_faces(5, &[[0, 2, 1], [2, 0, 3], [1, 2, 4]]).expect("three faces");
@@ -596,6 +598,18 @@ mod terms {
                         ok,
                         "L[{i}][{j}] of {which} = {want} not in {:?}",
                         enclosed.map(ends)
+                    );
+                }
+                // And not much wider than the two configurations need (the box of radius 10⁻⁶ adds
+                // about 10⁻⁴ here): a block assembled with the wrong weight scale would be.
+                if let Some(e) = enclosed {
+                    let (lo, hi) = ends(e);
+                    let need = 1.01 * (lt[i][j] - lf[i][j]).abs() + 1e-4;
+                    assert!(
+                        hi - lo <= need,
+                        "L[{i}][{j}] enclosed in [{lo}, {hi}], T {} flipped {}",
+                        lt[i][j],
+                        lf[i][j]
                     );
                 }
                 spread = spread.max((lt[i][j] - lf[i][j]).abs());
