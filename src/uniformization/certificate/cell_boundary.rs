@@ -473,6 +473,24 @@ mod terms {
         };
         let boundary = fine.boundary.expect("ij is a tie on every box");
         assert_eq!(boundary.edges.len(), 1);
+        // On the box `u ∈ [−10⁻⁹, 10⁻⁹]⁴`, `P_ij` straddles 0: the correction takes the hull
+        // of both configurations, which for cocircular points carry the same angle sums
+        // (the Ptolemy flip is the Euclidean one), so the corrected sums stay `T`'s.
+        let tiny = I::new(Mpfr::from_f64(-1e-9, prec), Mpfr::from_f64(1e-9, prec));
+        let zero = vec![tiny; 4];
+        let lengths = scaled(&mesh, &base, &zero);
+        let theta = crate::geometry::cone_angles::cone_angles(&mesh, &lengths);
+        let mut corrected = theta.clone();
+        boundary
+            .correct_angle_sums(&mesh, &zero, &lengths, &mut corrected)
+            .expect("enclosed");
+        for (t, c) in theta.iter().zip(&corrected) {
+            let ((a, b), (x, y)) = (ends(t), ends(c));
+            assert!(
+                x <= a + 1e-12 && b - 1e-12 <= y && y - x < 1e-4,
+                "{a} {b} → {x} {y}"
+            );
+        }
     }
 
     /// B35 condition 3, every edge outside `U` Delaunay in each configuration: `i = (−1, 0)`,
@@ -649,6 +667,8 @@ mod terms {
                 lo - 1e-12 <= want[v] && want[v] <= hi + 1e-12,
                 "θ[{v}] = {want:?}"
             );
+            // `P < 0` is certified at this point: the flipped sums alone, not a hull.
+            assert!(hi - lo < 1e-9, "θ[{v}] enclosed in [{lo}, {hi}]");
             moved = moved.max((want[v] - before[v]).abs());
         }
         assert!(moved > 1e-3, "the correction moved nothing ({moved:e})");
