@@ -20,7 +20,7 @@ use super::certificate::{
     check_certificate, CertificateData, CertificateError, CertificateOutcome,
 };
 use super::certificate::{check_certificate_on, I};
-use super::input_metric::{exact_squared_on_t0, replay_enclosed, t0_delaunay};
+use super::input_metric::{replay_enclosed, t0_delaunay_on_input};
 use super::refine::{carry_lengths, carry_lengths_from};
 use super::targets::Targets;
 use crate::io::json::{edge_order, to_value};
@@ -353,8 +353,7 @@ fn recheck_on_input(
         Ok(x) => x,
         Err(reason) => return undecided(reason),
     };
-    let exact = exact_squared_on_t0(surface, &sequence);
-    if let Err(e) = t0_delaunay(&t0, &l0, &exact) {
+    if let Err(e) = t0_delaunay_on_input(surface, &t0, &l0, &sequence) {
         let k = order.iter().position(|&x| x == e.idx()).unwrap_or(e.idx());
         return undecided(format!(
             "edge {k} of T₀ is not certified intrinsic Delaunay for the surface's metric"

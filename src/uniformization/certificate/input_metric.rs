@@ -186,3 +186,68 @@ pub(crate) fn t0_delaunay(
     }
     Ok(())
 }
+
+/// `T₀` (`t0`, reached from `surface` by the Euclidean flips `sequence`, with enclosures
+/// `lengths` of its exact lengths) certified intrinsic Delaunay for `surface`'s exact
+/// metric: first by [`t0_delaunay`]; an edge it leaves open (a tie or a near-tie of
+/// irrational lengths) is then decided by replaying `sequence` on the exact metric (B80:
+/// every flip certified a legal step, escalating from 128 to 1024 bits, exact signs where
+/// the squared lengths are rational, B83), which must reach `t0` and certify it Delaunay.
+/// `Err` names the edge [`t0_delaunay`] left open. proof: B73, B80
+pub(crate) fn t0_delaunay_on_input(
+    surface: &Surface,
+    t0: &Mesh,
+    lengths: &[I],
+    sequence: &[Edge],
+) -> Result<(), Edge> {
+    use crate::algorithms::replay::replay_escalating_lazy;
+    let exact = exact_squared_on_t0(surface, sequence);
+    let Err(e) = t0_delaunay(t0, lengths, &exact) else {
+        return Ok(());
+    };
+    let (r, _) = replay_escalating_lazy(
+        &surface.mesh,
+        &surface.metric,
+        sequence,
+        FlipKind::Euclidean,
+        128,
+        1024,
+    );
+    if r.certified_delaunay() && r.mesh.face_list() == t0.face_list() {
+        Ok(())
+    } else {
+        Err(e)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::builders::Embedded;
+    use crate::scalar::Precision;
+
+    /// [`t0_delaunay_on_input`] refuses a `T₀` that is not Delaunay for the exact metric:
+    /// a flat kite `(0, 0), (4, 0), (2, 1), (2, −1)` split by its long diagonal (both
+    /// opposite angles obtuse) with no flip is refused, naming that edge; after the flip of
+    /// that edge it is certified.
+    #[test]
+    fn t0_delaunay_on_input_refuses_a_non_delaunay_t0() {
+        let q = |x: i32, y: i32| [Rational::from(x), Rational::from(y), Rational::from(0)];
+        let e = Embedded {
+            mesh: Mesh::from_faces(4, &[[0, 1, 2], [1, 0, 3]]).expect("a kite"),
+            positions: vec![q(0, 0), q(4, 0), q(2, 1), q(2, -1)],
+            exact: true,
+        };
+        let s = Surface::from_embedded("kite", e).expect("valid");
+        let prec = Precision::new(128).expect("bits");
+        let long = s
+            .mesh
+            .edges()
+            .find(|&e| QuadEdges::of(&s.mesh, e).is_some())
+            .expect("the diagonal");
+        let l = s.lengths::<I>(prec);
+        assert_eq!(t0_delaunay_on_input(&s, &s.mesh, &l, &[]), Err(long));
+        let (t0, l0) = replay_enclosed(&s.mesh, l, &[long]).expect("a convex kite flips");
+        assert_eq!(t0_delaunay_on_input(&s, &t0, &l0, &[long]), Ok(()));
+    }
+}

@@ -35,7 +35,7 @@ use crate::scalar::{Dd, Interval, Mpfr, Precision as Bits, Real};
 use crate::uniformization::certificate::{certify_near, prove, prove_on, CertificateError};
 use crate::uniformization::certificate::{CertificateOutcome, Proof, T0Metric};
 use crate::uniformization::claim_form::{to_claim, to_claim_on_input};
-use crate::uniformization::input_metric::{exact_squared_on_t0, input_on_t0, t0_delaunay};
+use crate::uniformization::input_metric::{input_on_t0, t0_delaunay_on_input};
 use crate::uniformization::newton::{uniformize_with_progress, StepReport, Uniformization};
 use crate::uniformization::refine::{refine, refine_on};
 use crate::uniformization::{Targets, UniformizeOptions};
@@ -234,8 +234,7 @@ fn t0_delaunay_for_input(
     sol: &Uniformization,
     m: T0Metric,
 ) -> Result<T0Metric, String> {
-    let exact = exact_squared_on_t0(surface, &m.euclidean);
-    match t0_delaunay(&sol.initial_mesh, &m.enclosures, &exact) {
+    match t0_delaunay_on_input(surface, &sol.initial_mesh, &m.enclosures, &m.euclidean) {
         Ok(()) => Ok(m),
         Err(e) => {
             let k = edge_order(&surface.mesh)

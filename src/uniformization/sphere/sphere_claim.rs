@@ -24,7 +24,7 @@
 use super::certificate::{CertificateOutcome, I};
 use super::claim_form::exact_decimal;
 use super::dirichlet_certificate::{check_disk_certificate_on, DiskCertificateData, DiskMetric};
-use super::input_metric::{exact_squared_on_t0, replay_enclosed, t0_delaunay};
+use super::input_metric::{replay_enclosed, t0_delaunay_on_input};
 use super::refine::{carry_lengths_from, RefineError};
 use super::sphere::{check_pole, disk_of, SphereUniformization};
 use crate::io::json::{edge_order, to_value};
@@ -193,8 +193,7 @@ pub fn recheck(
         Ok(x) => x,
         Err(reason) => return undecided(reason),
     };
-    let exact = exact_squared_on_t0(surface, &euclidean);
-    if let Err(e) = t0_delaunay(&t0, &l0, &exact) {
+    if let Err(e) = t0_delaunay_on_input(surface, &t0, &l0, &euclidean) {
         let k = order.iter().position(|&x| x == e.idx()).unwrap_or(e.idx());
         return undecided(format!(
             "edge {k} of T₀ is not certified intrinsic Delaunay for the surface's metric"
