@@ -673,4 +673,63 @@ mod terms {
         }
         assert!(moved > 1e-3, "the correction moved nothing ({moved:e})");
     }
+
+    /// B35 condition 3 with both faces of an edge in `U`-quadrilaterals: faces `ijk`, `jil`,
+    /// `kjm`, `kmn` (`U = {ij, km}`, both certified non-Delaunay), the edge `kj` between
+    /// them. Its opposite angles sum (in `f64` from the side lengths, the flipped diagonals
+    /// by Ptolemy) to less than `π` in `T`, with `ij` flipped and with `km` flipped, and to
+    /// more than `π` with both flipped: refused, naming both `U`-edges; a configuration
+    /// where all four are Delaunay is certified.
+    #[test]
+    fn term_b35_edge_between_two_u_quadrilaterals_in_every_configuration() {
+        let prec = Precision::new(128).expect("precision");
+        // i = 0, k = 1, j = 2, l = 3, m = 4, n = 5.
+        let mesh =
+            Mesh::from_faces(6, &[[0, 2, 1], [2, 0, 3], [1, 2, 4], [1, 4, 5]]).expect("four faces");
+        let margins = |p: &[[f64; 2]; 6]| {
+            let d = |a: usize, b: usize| (p[a][0] - p[b][0]).hypot(p[a][1] - p[b][1]);
+            let ang = |a: f64, b: f64, c: f64| ((b * b + c * c - a * a) / (2.0 * b * c)).acos();
+            let kl = (d(1, 0) * d(3, 2) + d(2, 1) * d(0, 3)) / d(0, 2);
+            let jn = (d(1, 2) * d(4, 5) + d(2, 4) * d(5, 1)) / d(1, 4);
+            let kj = d(1, 2);
+            let a_i = ang(kj, d(1, 0), d(0, 2));
+            let a_m = ang(kj, d(1, 4), d(2, 4));
+            let a_l = ang(kj, kl, d(3, 2));
+            let a_n = ang(kj, jn, d(5, 1));
+            let pi = std::f64::consts::PI;
+            [
+                pi - a_i - a_m,
+                pi - a_l - a_m,
+                pi - a_i - a_n,
+                pi - a_l - a_n,
+            ]
+        };
+        let refused = [
+            [-0.531_456_216_594_192_1, 0.980_545_145_760_812_5],
+            [-1.0, 0.0],
+            [1.0, 0.0],
+            [0.301_113_849_539_826, 0.490_856_420_835_652_4],
+            [0.796_570_003_362_112_4, -1.179_466_778_087_866],
+            [0.091_477_002_218_052_66, -1.137_808_384_824_202],
+        ];
+        let certified = [
+            [0.009_440_934_857_726_68, 1.366_835_246_901_015_2],
+            [-1.0, 0.0],
+            [1.0, 0.0],
+            [0.427_159_858_179_822_8, 0.930_587_005_643_571_7],
+            [0.076_957_591_475_688_59, -1.671_676_796_154_511_4],
+            [-0.550_190_140_869_097_5, -1.199_552_320_239_338_6],
+        ];
+        let c = margins(&refused);
+        assert!(c[..3].iter().all(|&x| x > 0.05) && c[3] < -0.05, "{c:?}");
+        assert!(margins(&certified).iter().all(|&x| x > 0.05));
+        let base = planar_lengths(&mesh, &refused, prec);
+        match cell_on(&mesh, &base, 1e-6, prec) {
+            Err(why) => assert!(why.contains("once") && why.contains(" and "), "{why}"),
+            Ok(_) => panic!("kj is not Delaunay once both ij and km flip"),
+        }
+        let base = planar_lengths(&mesh, &certified, prec);
+        let cell = cell_on(&mesh, &base, 1e-6, prec).expect("every configuration Delaunay");
+        assert_eq!(cell.boundary.expect("U = {ij, km}").edges.len(), 2);
+    }
 }
