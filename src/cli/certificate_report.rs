@@ -2,10 +2,9 @@
 //! `-o` (never over an existing file).
 
 use super::error::{code, CliError};
-use super::files::create_new;
+use super::files::write_new;
 use penner::uniformization::certificate::CertificateOutcome;
 use std::fmt::Write as _;
-use std::io::Write;
 use std::path::Path;
 
 /// The words of [`report_certificate`]'s lines: what a certified result is called and what
@@ -65,11 +64,7 @@ pub(super) fn write_claim(
         return Ok(());
     };
     let text = serde_json::to_string_pretty(&claim).unwrap_or_default() + "\n";
-    let mut f = create_new(path)?;
-    f.write_all(text.as_bytes()).map_err(|e| CliError::Write {
-        path: path.to_path_buf(),
-        reason: e.to_string(),
-    })?;
+    write_new(path, text.as_bytes())?;
     let _ = writeln!(
         out,
         "{what} written to {} (re-check: penner certify {})",

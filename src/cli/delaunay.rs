@@ -2,7 +2,7 @@
 
 use super::args::FlipKind as ArgFlipKind;
 use super::error::{code, CliError};
-use super::files::{create_new, read_text};
+use super::files::{read_text, write_new};
 use super::output;
 use penner::algorithms::delaunay_pipeline::{intrinsic_delaunay, DelaunayOptions};
 use penner::algorithms::flip_to_delaunay::{FlipCounter, FlipKind};
@@ -209,11 +209,5 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
 /// Write the `--summary` document to the new file `p` (never overwriting; exit 4 on a
 /// write error).
 fn write_summary(p: &Path, doc: &serde_json::Value) -> Result<(), CliError> {
-    let mut f = create_new(p)?;
-    std::io::Write::write_all(&mut f, format!("{doc:#}\n").as_bytes()).map_err(|e| {
-        CliError::Write {
-            path: p.to_path_buf(),
-            reason: e.to_string(),
-        }
-    })
+    write_new(p, format!("{doc:#}\n").as_bytes())
 }

@@ -94,6 +94,19 @@ pub fn create_new(path: &Path) -> Result<std::fs::File, CliError> {
         })
 }
 
+/// Write `bytes` to the new file `path` (never over an existing one) and flush it; every
+/// error is an output error naming the path (exit 4).
+pub fn write_new(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
+    use std::io::Write as _;
+    let mut f = create_new(path)?;
+    f.write_all(bytes)
+        .and_then(|()| f.flush())
+        .map_err(|e| CliError::Write {
+            path: path.to_path_buf(),
+            reason: e.to_string(),
+        })
+}
+
 /// Write `contents` to a fresh file `<dir>/<stem>.penner-failure-N.json`, the smallest
 /// N ≥ 1 whose file does not exist (checked atomically by `create_new`).
 pub fn write_fresh_failure(input: &Path, contents: &str) -> Result<PathBuf, CliError> {

@@ -2,12 +2,11 @@
 //! combinatorics (`penner::circles::pack`), certified (B94), optionally drawn as SVG.
 
 use super::error::{code, CliError};
-use super::files::{create_new, emit};
+use super::files::{emit, write_new};
 use super::input::load_case;
 use penner::circles::pack::pack;
 use penner::circles::svg::render_svg;
 use std::fmt::Write as _;
-use std::io::Write;
 use std::path::Path;
 
 /// Run `penner pack`: exit 0 when the packing is certified, 2 when it is computed but not
@@ -38,13 +37,7 @@ pub fn run(path: &Path, svg: Option<&Path>) -> Result<u8, CliError> {
     }
     if let Some(out) = svg {
         let doc = render_svg(&p.pattern.mesh, &p.lengths(), &p.radii());
-        let mut f = create_new(out)?;
-        f.write_all(doc.as_bytes())
-            .and_then(|()| f.flush())
-            .map_err(|e| CliError::Write {
-                path: out.to_path_buf(),
-                reason: e.to_string(),
-            })?;
+        write_new(out, doc.as_bytes())?;
         let _ = writeln!(text, "wrote {}", out.display());
     }
     emit(&text)?;

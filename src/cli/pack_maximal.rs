@@ -4,13 +4,12 @@
 //! or for `--sphere` the caps on the sphere in an orthographic view).
 
 use super::error::{code, CliError};
-use super::files::{create_new, emit};
+use super::files::{emit, write_new};
 use super::input::load_case;
 use penner::circles::maximal::pipeline::{pack_maximal, PackError, PackOptions};
 use penner::circles::maximal::tangency::PackingVerdict;
 use penner::scalar::parse_rational;
 use std::fmt::Write as _;
-use std::io::Write;
 use std::path::Path;
 
 /// What `penner pack --disk/--sphere` was asked.
@@ -29,16 +28,6 @@ pub struct Options<'a> {
     pub svg: Option<&'a Path>,
     /// JSON output.
     pub output: Option<&'a Path>,
-}
-
-fn write_new(path: &Path, text: &str) -> Result<(), CliError> {
-    let mut f = create_new(path)?;
-    f.write_all(text.as_bytes())
-        .and_then(|()| f.flush())
-        .map_err(|e| CliError::Write {
-            path: path.to_path_buf(),
-            reason: e.to_string(),
-        })
 }
 
 /// Run the maximal packing: exit 0 when tangency is certified within ε, 2 when undecided
@@ -99,12 +88,12 @@ pub fn run(o: &Options) -> Result<u8, CliError> {
     if let Some(out) = o.output {
         write_new(
             out,
-            &(outcome.document(&options, o.epsilon).to_string() + "\n"),
+            (outcome.document(&options, o.epsilon).to_string() + "\n").as_bytes(),
         )?;
         let _ = writeln!(text, "wrote {}", out.display());
     }
     if let Some(out) = o.svg {
-        write_new(out, &outcome.svg())?;
+        write_new(out, outcome.svg().as_bytes())?;
         let _ = writeln!(text, "wrote {}", out.display());
     }
     emit(&text)?;

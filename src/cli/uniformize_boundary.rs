@@ -4,11 +4,10 @@
 //! double's `uniformization` claim.
 
 use super::error::{code, CliError};
-use super::files::create_new;
+use super::files::write_new;
 use penner::uniformization::pipeline::{BoundaryOutcome, CertifiedMetric};
 use penner::uniformization::svg::render_layout_svg;
 use std::fmt::Write as _;
-use std::io::Write;
 use std::path::Path;
 
 /// Print the outcome of `penner uniformize` on a surface with boundary; draw and write
@@ -131,12 +130,7 @@ fn write_svg(path: &Path, outcome: &BoundaryOutcome) -> Result<String, CliError>
     let sol = &outcome.boundary.solution;
     let drawn = outcome.layout();
     let picture = render_layout_svg(&sol.mesh, &drawn.layout);
-    let mut f = create_new(path)?;
-    f.write_all(picture.as_bytes())
-        .map_err(|e| CliError::Write {
-            path: path.to_path_buf(),
-            reason: e.to_string(),
-        })?;
+    write_new(path, picture.as_bytes())?;
     Ok(format!(
         "layout of {} drawn to {} ({} faces not certified counterclockwise)\n",
         drawn.what,

@@ -6,22 +6,13 @@
 
 use super::certificate_report::write_claim;
 use super::error::{code, CliError};
-use super::files::{create_new, emit};
+use super::files::{emit, write_new};
 use penner::uniformization::certificate::CertificateOutcome;
 use penner::uniformization::layout::unproved_faces;
 use penner::uniformization::pipeline::SphereOutcome;
 use penner::uniformization::svg::render_layout_svg;
 use std::fmt::Write as _;
-use std::io::Write;
 use std::path::Path;
-
-fn write_new(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
-    let mut f = create_new(path)?;
-    f.write_all(bytes).map_err(|e| CliError::Write {
-        path: path.to_path_buf(),
-        reason: e.to_string(),
-    })
-}
 
 /// Print the outcome of `penner uniformize --sphere`; write the claim, the inscribed
 /// polyhedron and the planar disk where asked.

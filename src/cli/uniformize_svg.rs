@@ -3,12 +3,11 @@
 //! every triangle's orientation certified (exact `orient2d` on the drawn coordinates).
 
 use super::error::CliError;
-use super::files::create_new;
+use super::files::write_new;
 use penner::mesh::Face;
 use penner::uniformization::layout::{unfold, unproved_faces};
 use penner::uniformization::svg::{render_layout_svg, scaled_lengths_f64};
 use penner::uniformization::Uniformization;
-use std::io::Write;
 use std::path::Path;
 
 /// Draw the layout of `sol` (final triangulation, lengths `e^{(u_i+u_j)/2}ℓ_ij`) to the new
@@ -18,12 +17,7 @@ pub fn write(path: &Path, sol: &Uniformization) -> Result<String, CliError> {
     let layout = unfold(&sol.mesh, &lengths, Face(0));
     let folds = unproved_faces(&sol.mesh, &layout).len();
     let picture = render_layout_svg(&sol.mesh, &layout);
-    let mut f = create_new(path)?;
-    f.write_all(picture.as_bytes())
-        .map_err(|e| CliError::Write {
-            path: path.to_path_buf(),
-            reason: e.to_string(),
-        })?;
+    write_new(path, picture.as_bytes())?;
     Ok(format!(
         "layout drawn to {} ({folds} faces not certified counterclockwise)\n",
         path.display()
