@@ -7,7 +7,7 @@
 //! rigorous enclosures, and answer `Undecided` rather than guess.
 //!
 //! Layers (each imports only layers above it): [`scalar`] → [`special`] → [`mesh`] → [`geometry`] →
-//! [`predicates`] → `algorithms` → `theorems` → `oracle` → the `penner` binary.
+//! [`predicates`] → `algorithms` → [`overlay`] → `theorems` → `oracle` → the `penner` binary.
 
 pub mod algorithms;
 pub mod circles;
@@ -15,6 +15,7 @@ pub mod geometry;
 pub mod io;
 pub mod mesh;
 pub mod oracle;
+pub mod overlay;
 pub mod predicates;
 pub mod scalar;
 pub mod special;

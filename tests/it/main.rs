@@ -53,6 +53,7 @@ mod mesh_gluing;
 mod meshgen;
 mod never_fails;
 mod oracle;
+mod overlay;
 mod planar_gen;
 mod predicates_planar;
 mod progress;
