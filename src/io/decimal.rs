@@ -232,18 +232,84 @@ pub fn non_degenerate(
         }
         Some(false)
     };
-    // Past i128 (mantissas aligned across distant exponents): the same cross product in
-    // big integers, still exact and without a rational's gcd.
-    narrow().or_else(|| {
-        let z = |k: usize| Integer::from(m[k]);
-        let u = [z(3) - z(0), z(4) - z(1), z(5) - z(2)];
-        let v = [z(6) - z(0), z(7) - z(1), z(8) - z(2)];
-        Some(
-            [(1, 2), (2, 0), (0, 1)]
-                .iter()
-                .any(|&(i, j)| Integer::from(&u[i] * &v[j]) != Integer::from(&u[j] * &v[i])),
-        )
-    })
+    // Past i128 (mantissas aligned across distant exponents): the products in 256-bit
+    // integers, `u_i·v_j = u_j·v_i` iff their signs and magnitudes agree; big integers
+    // only when a difference itself overflows.
+    narrow()
+        .or_else(|| {
+            let d = |i: usize, j: usize| m[i].checked_sub(m[j]);
+            let u = [d(3, 0)?, d(4, 1)?, d(5, 2)?];
+            let v = [d(6, 0)?, d(7, 1)?, d(8, 2)?];
+            let product = |x: i128, y: i128| {
+                (
+                    x.signum() * y.signum(),
+                    mul_wide(x.unsigned_abs(), y.unsigned_abs()),
+                )
+            };
+            Some(
+                [(1, 2), (2, 0), (0, 1)]
+                    .iter()
+                    .any(|&(i, j)| product(u[i], v[j]) != product(u[j], v[i])),
+            )
+        })
+        .or_else(|| {
+            let z = |k: usize| Integer::from(m[k]);
+            let u = [z(3) - z(0), z(4) - z(1), z(5) - z(2)];
+            let v = [z(6) - z(0), z(7) - z(1), z(8) - z(2)];
+            Some(
+                [(1, 2), (2, 0), (0, 1)]
+                    .iter()
+                    .any(|&(i, j)| Integer::from(&u[i] * &v[j]) != Integer::from(&u[j] * &v[i])),
+            )
+        })
+}
+
+/// `a·b` exactly, as four little-endian 64-bit limbs: with `a = a₁2⁶⁴ + a₀`,
+/// `b = b₁2⁶⁴ + b₀`, `ab = a₁b₁2¹²⁸ + (a₁b₀ + a₀b₁)2⁶⁴ + a₀b₀`.
+fn mul_wide(a: u128, b: u128) -> [u64; 4] {
+    let (a0, a1) = (a as u64 as u128, a >> 64);
+    let (b0, b1) = (b as u64 as u128, b >> 64);
+    let mut r = [0u64; 4];
+    add_at(&mut r, 0, a0 * b0);
+    add_at(&mut r, 1, a1 * b0);
+    add_at(&mut r, 1, a0 * b1);
+    add_at(&mut r, 2, a1 * b1);
+    r
+}
+
+/// `r ← r + t·2^(64·at)`; returns `false` when the sum overflows 256 bits.
+fn add_at(r: &mut [u64; 4], at: usize, t: u128) -> bool {
+    let mut carry = t;
+    for limb in r.iter_mut().skip(at) {
+        let s = u128::from(*limb) + (carry as u64 as u128);
+        *limb = s as u64;
+        carry = (carry >> 64) + (s >> 64);
+        if carry == 0 {
+            return true;
+        }
+    }
+    carry == 0
+}
+
+/// The squared distance `|b − a|² = N · 10^(2E)` of two points as `(N, E)` with `N` as
+/// four little-endian 64-bit limbs (`N < 2²⁵⁶`): the sum of the squared differences of the
+/// mantissas aligned to their smallest exponent `E` ([`common_scale`]), exact where
+/// [`squared_distance`]'s `u128` overflows (e.g. 17-digit mantissas across exponents
+/// `10⁻⁵` and `10⁰`); `None` when a coordinate is not a decimal or the alignment or a
+/// difference overflows `i128`.
+pub fn squared_distance_wide(a: &[Coordinate; 3], b: &[Coordinate; 3]) -> Option<([u64; 4], i32)> {
+    let (m, e) = common_scale([&a[0], &a[1], &a[2], &b[0], &b[1], &b[2]])?;
+    let mut n = [0u64; 4];
+    for k in 0..3 {
+        let d = m[3 + k].checked_sub(m[k])?.unsigned_abs();
+        let [d0, d1, d2, d3] = mul_wide(d, d);
+        let ok = add_at(&mut n, 0, u128::from(d0) | (u128::from(d1) << 64))
+            && add_at(&mut n, 2, u128::from(d2) | (u128::from(d3) << 64));
+        if !ok {
+            return None;
+        }
+    }
+    Some((n, e))
 }
 
 /// Whether two points differ, decided on their mantissas aligned to a common exponent
@@ -269,8 +335,7 @@ pub fn decimal_to_rational(n: u128, e: i32) -> Rational {
 /// rounding precedes the subnormal one) and callers take the exact path.
 ///
 /// Exact operands (`n < 2⁵³`, `|e| ≤ 22`) take one IEEE multiplication or division;
-/// otherwise the digits are handed to the standard library's decimal reader, which rounds
-/// correctly for any number of digits.
+/// otherwise [`wide_to_f64`] rounds the exact integer quotient or product.
 pub fn decimal_to_f64(n: u128, e: i32) -> Option<f64> {
     const EXACT: [f64; 23] = [
         1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
@@ -287,52 +352,146 @@ pub fn decimal_to_f64(n: u128, e: i32) -> Option<f64> {
             n as f64 / p
         }
     } else {
-        let mut buf = [0u8; 64];
-        let mut i = buf.len();
-        let (e_digits, e_len) = itoa_i32(e);
-        i -= e_len;
-        buf[i..i + e_len].copy_from_slice(&e_digits[..e_len]);
-        i -= 1;
-        buf[i] = b'e';
-        // Digits from the right in chunks of 19 (u64 arithmetic; u128 division is slow).
-        let mut r = n;
-        loop {
-            let chunk = (r % 10_000_000_000_000_000_000) as u64;
-            r /= 10_000_000_000_000_000_000;
-            let mut c = chunk;
-            let mut written = 0;
-            while c > 0 || (r > 0 && written < 19) {
-                i -= 1;
-                buf[i] = b'0' + (c % 10) as u8;
-                c /= 10;
-                written += 1;
-            }
-            if r == 0 {
-                break;
-            }
-        }
-        std::str::from_utf8(&buf[i..]).ok()?.parse::<f64>().ok()?
+        return wide_to_f64(&[n as u64, (n >> 64) as u64], e);
     };
     (x.is_finite() && x >= f64::MIN_POSITIVE).then_some(x)
 }
 
-/// The decimal digits of `e` (with a sign) and their count.
-fn itoa_i32(e: i32) -> ([u8; 12], usize) {
-    let mut digits = [0u8; 12];
-    let mut k = 0;
-    let mut r = e.unsigned_abs();
-    loop {
-        digits[k] = b'0' + (r % 10) as u8;
-        k += 1;
-        r /= 10;
-        if r == 0 {
-            break;
+/// Limbs of the fixed-width integers of [`wide_to_f64`] (64 bits each, little-endian):
+/// room for `2²⁵⁶ · 10^WIDE_EXPONENT` and for `2²⁵⁶ · 2^s` with `2^s ≈ 2⁶⁴ · 10^WIDE_EXPONENT`.
+const WIDE_LIMBS: usize = 26;
+/// Largest `|e|` [`wide_to_f64`] computes; past it `n·10^e` with `n < 2²⁵⁶` is never a
+/// normal `f64` (`10⁴⁰⁰ > 2¹⁰²⁴ · 2²⁵⁶` and `2²⁵⁶ · 10⁻⁴⁰⁰ < 2⁻¹⁰²²`).
+const WIDE_EXPONENT: u32 = 400;
+/// `10¹⁹`, the largest power of ten in a `u64`.
+const TEN19: u64 = 10_000_000_000_000_000_000;
+
+/// `x ← x · m` on the first `len` limbs; returns the new length.
+fn limbs_mul(x: &mut [u64; WIDE_LIMBS], len: usize, m: u64) -> usize {
+    let mut carry = 0u128;
+    for limb in x.iter_mut().take(len) {
+        let t = u128::from(*limb) * u128::from(m) + carry;
+        *limb = t as u64;
+        carry = t >> 64;
+    }
+    if carry != 0 {
+        x[len] = carry as u64;
+        len + 1
+    } else {
+        len
+    }
+}
+
+/// `x ← ⌊x / d⌋` on the first `len` limbs; returns the new length and whether the
+/// remainder is non-zero.
+fn limbs_div(x: &mut [u64; WIDE_LIMBS], len: usize, d: u64) -> (usize, bool) {
+    let mut rem = 0u128;
+    for limb in x[..len].iter_mut().rev() {
+        let cur = (rem << 64) | u128::from(*limb);
+        *limb = (cur / u128::from(d)) as u64;
+        rem = cur % u128::from(d);
+    }
+    let mut len = len;
+    while len > 0 && x[len - 1] == 0 {
+        len -= 1;
+    }
+    (len, rem != 0)
+}
+
+/// `n · 10^e` for an integer `n < 2²⁵⁶` given as little-endian 64-bit limbs, rounded to
+/// the nearest `f64` (ties to even) — exactly, in fixed-width integers, without big
+/// numbers; `None` when the result is not a normal `f64` (as [`decimal_to_f64`]).
+///
+/// For `e ≥ 0` the product `X = n·10^e` is formed exactly. For `e < 0` the quotient
+/// `q = ⌊n·2^s / 10^|e|⌋` is formed with `s` such that `q ≥ 2⁶³`, by successive divisions
+/// by `10¹⁹` (`⌊⌊x/a⌋/b⌋ = ⌊x/(ab)⌋`), with a sticky bit `σ` that is set iff a remainder
+/// was non-zero (`n·2^s / 10^|e|` is not an integer). Then with `L` the bit length of
+/// `q`, `m = ⌊q / 2^(L−53)⌋` is rounded up iff the next bit is 1 and (any later bit, `σ`,
+/// or the last bit of `m` is 1), and the value is `m · 2^(L−53−s)`: the binary64 nearest
+/// to `n·10^e` with an unbounded exponent, which is the correctly rounded `f64` whenever it
+/// is normal.
+///
+/// ```
+/// use penner::io::decimal::wide_to_f64;
+/// assert_eq!(wide_to_f64(&[3, 0, 0, 0], -1), Some(0.3));
+/// assert_eq!(wide_to_f64(&[0, 1], 0), Some(18446744073709551616.0)); // 2⁶⁴
+/// assert_eq!(wide_to_f64(&[1], -400), None); // below the normal range
+/// ```
+pub fn wide_to_f64(n: &[u64], e: i32) -> Option<f64> {
+    let mut len = n.len();
+    while len > 0 && n[len - 1] == 0 {
+        len -= 1;
+    }
+    if len == 0 {
+        return Some(0.0);
+    }
+    if len > 4 || e.unsigned_abs() > WIDE_EXPONENT {
+        return None;
+    }
+    let mut x = [0u64; WIDE_LIMBS];
+    let mut sticky = false;
+    let mut s: i64 = 0;
+    let k = e.unsigned_abs();
+    if e >= 0 {
+        x[..len].copy_from_slice(&n[..len]);
+        for _ in 0..k / 19 {
+            len = limbs_mul(&mut x, len, TEN19);
         }
+        len = limbs_mul(&mut x, len, 10u64.pow(k % 19));
+    } else {
+        let bits_n = 64 * len as i64 - i64::from(n[len - 1].leading_zeros());
+        // 10^k < 2^(⌊3.3220·k⌋ + 1), since log₂ 10 = 3.32193… < 3.3220.
+        let bits_d = i64::from(k) * 33_220 / 10_000 + 1;
+        s = (64 + bits_d - bits_n).max(0);
+        let (words, bits) = ((s / 64) as usize, (s % 64) as u32);
+        for i in 0..len {
+            x[i + words] |= n[i] << bits;
+            if bits > 0 {
+                x[i + words + 1] |= n[i] >> (64 - bits);
+            }
+        }
+        len += words + 1;
+        while x[len - 1] == 0 {
+            len -= 1;
+        }
+        for _ in 0..k / 19 {
+            let (l, r) = limbs_div(&mut x, len, TEN19);
+            len = l;
+            sticky |= r;
+        }
+        let (l, r) = limbs_div(&mut x, len, 10u64.pow(k % 19));
+        len = l;
+        sticky |= r;
     }
-    if e < 0 {
-        digits[k] = b'-';
-        k += 1;
+    let bit = |i: i64| -> bool { (x[(i / 64) as usize] >> (i % 64)) & 1 == 1 };
+    let l = 64 * len as i64 - i64::from(x[len - 1].leading_zeros());
+    let (mut m, mut shift) = if l <= 53 {
+        (x[0], 0i64)
+    } else {
+        let shift = l - 53;
+        let (w, b) = ((shift / 64) as usize, (shift % 64) as u32);
+        let lo = x[w] >> b;
+        let hi = if b > 0 && w + 1 < len {
+            x[w + 1] << (64 - b)
+        } else {
+            0
+        };
+        let m = (lo | hi) & ((1u64 << 53) - 1);
+        let half = bit(shift - 1);
+        let rest = sticky
+            || x[..((shift - 1) / 64) as usize].iter().any(|&t| t != 0)
+            || x[((shift - 1) / 64) as usize] & ((1u64 << ((shift - 1) % 64)) - 1) != 0;
+        (m + u64::from(half && (rest || m & 1 == 1)), shift)
+    };
+    if m == 1 << 53 {
+        m >>= 1;
+        shift += 1;
     }
-    digits[..k].reverse();
-    (digits, k)
+    // Normalise to 53 bits (only a short exact product is shorter) and build the bits.
+    let z = i64::from(m.leading_zeros()) - 11;
+    m <<= z;
+    let biased = shift - s - z + 52 + 1023;
+    (1..=2046)
+        .contains(&biased)
+        .then(|| f64::from_bits(((biased as u64) << 52) | (m & ((1u64 << 52) - 1))))
 }
