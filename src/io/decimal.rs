@@ -98,12 +98,16 @@ fn fast_decimal(b: &[u8]) -> Option<(i64, i32)> {
     };
     let mut m: i64 = 0;
     let mut digits = 0usize;
+    // Leading zeros add nothing to the mantissa and do not count towards its digits
+    // (`0.012…` from `%.17g` has 17 significant digits in 19 characters).
+    let mut seen = false;
     while let Some(&c) = b.get(i).filter(|c| c.is_ascii_digit()) {
         if digits == FAST_DIGITS {
             return None;
         }
         m = m * 10 + i64::from(c - b'0');
-        digits += 1;
+        seen = true;
+        digits += usize::from(m != 0);
         i += 1;
     }
     let mut frac = 0i32;
@@ -114,12 +118,16 @@ fn fast_decimal(b: &[u8]) -> Option<(i64, i32)> {
                 return None;
             }
             m = m * 10 + i64::from(c - b'0');
-            digits += 1;
+            seen = true;
+            digits += usize::from(m != 0);
             frac += 1;
             i += 1;
+            if frac > FAST_EXPONENT {
+                return None;
+            }
         }
     }
-    if digits == 0 {
+    if !seen {
         return None;
     }
     let mut exp: i32 = 0;
@@ -267,8 +275,9 @@ pub fn non_degenerate(
 /// `a·b` exactly, as four little-endian 64-bit limbs: with `a = a₁2⁶⁴ + a₀`,
 /// `b = b₁2⁶⁴ + b₀`, `ab = a₁b₁2¹²⁸ + (a₁b₀ + a₀b₁)2⁶⁴ + a₀b₀`.
 fn mul_wide(a: u128, b: u128) -> [u64; 4] {
-    let (a0, a1) = (a as u64 as u128, a >> 64);
-    let (b0, b1) = (b as u64 as u128, b >> 64);
+    let low = u128::from(u64::MAX);
+    let (a0, a1) = (a & low, a >> 64);
+    let (b0, b1) = (b & low, b >> 64);
     let mut r = [0u64; 4];
     add_at(&mut r, 0, a0 * b0);
     add_at(&mut r, 1, a1 * b0);
@@ -281,7 +290,7 @@ fn mul_wide(a: u128, b: u128) -> [u64; 4] {
 fn add_at(r: &mut [u64; 4], at: usize, t: u128) -> bool {
     let mut carry = t;
     for limb in r.iter_mut().skip(at) {
-        let s = u128::from(*limb) + (carry as u64 as u128);
+        let s = u128::from(*limb) + (carry & u128::from(u64::MAX));
         *limb = s as u64;
         carry = (carry >> 64) + (s >> 64);
         if carry == 0 {

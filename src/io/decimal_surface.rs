@@ -7,8 +7,8 @@
 //! [`Surface::lengths`] of that surface bit for bit.
 
 use super::decimal::{
-    common_scale, decimal_to_f64, decimal_to_rational, distinct_points, non_degenerate,
-    squared_distance, Coordinate,
+    decimal_to_f64, decimal_to_rational, distinct_points, non_degenerate, squared_distance,
+    squared_distance_wide, wide_to_f64, Coordinate,
 };
 use super::surface::{heron16, Metric, MetricError, Surface};
 use crate::mesh::{Edge, Face, Mesh, Vertex};
@@ -110,19 +110,15 @@ impl DecimalSurface {
 
     /// `ℓ_e²` rounded to the nearest `f64` when `N` of `N·10^(2E)` outgrows `u128` (e.g.
     /// coordinates near 0 written with an exponent, whose mantissas are aligned to the
-    /// smallest exponent): `N` exact as a big integer, its decimal digits then read by the
-    /// standard library's correctly rounded parser — the value `f64::from_rational` gives
-    /// for a normal result, without a rational's gcd. `None` when a coordinate is not a
-    /// decimal or the result is not a normal `f64` (the exact path decides).
+    /// smallest exponent): `N < 2²⁵⁶` exact in four 64-bit limbs
+    /// ([`squared_distance_wide`]), then `N·10^(2E)` rounded by [`wide_to_f64`] in
+    /// fixed-width integers — the value `f64::from_rational` gives for a normal result
+    /// (proof: B19), without a big number or a rational's gcd. `None` when a coordinate is
+    /// not a decimal, `N` outgrows 256 bits, or the result is not a normal `f64` (the exact
+    /// path decides).
     fn squared_f64_wide(a: &[Coordinate; 3], b: &[Coordinate; 3]) -> Option<f64> {
-        let (m, k) = common_scale([&a[0], &a[1], &a[2], &b[0], &b[1], &b[2]])?;
-        let mut n = rug::Integer::new();
-        for i in 0..3 {
-            let d = rug::Integer::from(m[3 + i]) - m[i];
-            n += rug::Integer::from(&d * &d);
-        }
-        let x: f64 = format!("{n}e{}", 2 * i64::from(k)).parse().ok()?;
-        x.is_normal().then_some(x)
+        let (n, k) = squared_distance_wide(a, b)?;
+        wide_to_f64(&n, 2 * k)
     }
 
     /// The exact squared length `ℓ_e² = |p_tip − p_tail|²`.
@@ -211,12 +207,26 @@ fn squared_distance_exact(a: &[Coordinate; 3], b: &[Coordinate; 3]) -> Rational 
     if let Some((n, k)) = squared_distance(a, b) {
         return decimal_to_rational(n, 2 * k);
     }
+    if let Some((n, k)) = squared_distance_wide(a, b) {
+        return wide_to_rational(&n, 2 * k);
+    }
     let mut s = Rational::new();
     for k in 0..3 {
         let d = b[k].to_rational() - a[k].to_rational();
         s += Rational::from(&d * &d);
     }
     s
+}
+
+/// The exact rational `n · 10^e` for `n` given as little-endian 64-bit limbs.
+fn wide_to_rational(n: &[u64], e: i32) -> Rational {
+    let n = rug::Integer::from_digits(n, rug::integer::Order::Lsf);
+    let p = rug::Integer::from(rug::Integer::u_pow_u(10, e.unsigned_abs()));
+    if e >= 0 {
+        Rational::from(n * p)
+    } else {
+        Rational::from((n, p))
+    }
 }
 
 /// `|b − a|²` rounded to the nearest `f64`, as `f64::from_rational` of the exact value.

@@ -431,3 +431,109 @@ fn f64_lengths_past_u128_equal_the_exact_conversion() {
         "no tiny coordinate"
     );
 }
+
+/// `n·10^e` in ℚ for `n` given as little-endian 64-bit limbs.
+fn limbs_rational(n: &[u64; 4], e: i32) -> Rational {
+    let n = Integer::from_digits(n, rug::integer::Order::Lsf);
+    let p = Integer::from(Integer::u_pow_u(10, e.unsigned_abs()));
+    if e >= 0 {
+        Rational::from(n * p)
+    } else {
+        Rational::from((n, p))
+    }
+}
+
+/// B19: `wide_to_f64` (fixed-width limbs, no big numbers) rounds `n·10^e` with `n < 2²⁵⁶`
+/// to the binary64 that 53-bit MPFR rounding of the exact rational gives, and answers
+/// `None` exactly where that value is neither zero nor a normal `f64`. Halfway cases (a midpoint of two
+/// binary64 values written as `m·5^k·10^(−k)`) decide the ties-to-even rule; the control
+/// counts cases where nearest differs from truncation, so a truncating conversion fails.
+#[test]
+fn b19_wide_to_f64_rounds_256_bit_integers_like_mpfr() {
+    use penner::io::decimal::wide_to_f64;
+    let mut rng = ChaCha8Rng::seed_from_u64(19);
+    let (mut normal, mut rounded_up, mut ties) = (0, 0, 0);
+    for i in 0..cases(20_000, 500_000) {
+        let (n, e): ([u64; 4], i32) = if i % 8 == 0 {
+            // A midpoint m/2^k = m·5^k/10^k of two neighbouring binary64 values, with x
+            // where m·5^k fits 256 bits (k ≤ 87: x ≥ 2^-34; x < 2^200).
+            let x: f64 = rng.gen_range(1.0..10.0) * 10f64.powi(rng.gen_range(-10..60));
+            let next = f64::from_bits(x.to_bits() + 1);
+            let mid = (Rational::from_f64(x).unwrap() + Rational::from_f64(next).unwrap()) / 2u32;
+            let (num, den) = mid.into_numer_denom();
+            let k = den.significant_bits() - 1;
+            let scaled = num * Integer::from(Integer::u_pow_u(5, k));
+            if scaled.significant_bits() > 256 {
+                continue;
+            }
+            let mut limbs = [0u64; 4];
+            scaled.write_digits(&mut limbs, rug::integer::Order::Lsf);
+            ties += 1;
+            (limbs, -(k as i32))
+        } else {
+            let bits = rng.gen_range(1..=256u32);
+            let mut limbs: [u64; 4] = rng.gen();
+            for (j, limb) in limbs.iter_mut().enumerate() {
+                let lo = 64 * j as u32;
+                if bits <= lo {
+                    *limb = 0;
+                } else if bits < lo + 64 {
+                    *limb >>= lo + 64 - bits;
+                }
+            }
+            (limbs, rng.gen_range(-420..=420))
+        };
+        let q = limbs_rational(&n, e);
+        let oracle = mpfr_f64(&q);
+        let ours = wide_to_f64(&n, e);
+        // Zero is exact; otherwise `None` exactly where the value is not a normal binary64.
+        let expected = oracle.is_normal() || q == 0;
+        assert_eq!(
+            ours.is_some(),
+            expected,
+            "{n:?}e{e}: {ours:?} vs {oracle:e}"
+        );
+        if let Some(x) = ours {
+            assert_eq!(x.to_bits(), oracle.to_bits(), "{n:?}e{e}");
+            normal += 1;
+            let truncated = rug::Float::with_val_round(53, &q, rug::float::Round::Zero).0;
+            rounded_up += usize::from(truncated.to_f64() != x);
+        }
+    }
+    assert!(normal > 5_000, "{normal} normal results");
+    assert!(ties > 1_000, "{ties} halfway cases");
+    // Control: about half the inexact cases round up, so truncation is not accepted.
+    assert!(
+        rounded_up > normal / 5,
+        "{rounded_up} of {normal} rounded up"
+    );
+}
+
+/// `squared_distance_wide` is `|b − a|²` exactly (against ℚ) on coordinates whose
+/// mantissas, aligned to their smallest exponent, outgrow `u128`.
+#[test]
+fn squared_distance_wide_is_exact_past_u128() {
+    use penner::io::decimal::squared_distance_wide;
+    let mut rng = ChaCha8Rng::seed_from_u64(5);
+    let mut past_u128 = 0;
+    for _ in 0..cases(2_000, 100_000) {
+        let mut p = || -> [Coordinate; 3] {
+            std::array::from_fn(|_| {
+                let m: i64 = rng.gen_range(-99_999_999_999_999_999..=99_999_999_999_999_999);
+                parse_coordinate(&format!("{m}e{}", rng.gen_range(-22..=0))).unwrap()
+            })
+        };
+        let (a, b) = (p(), p());
+        let mut exact = Rational::new();
+        for k in 0..3 {
+            let d = b[k].to_rational() - a[k].to_rational();
+            exact += Rational::from(&d * &d);
+        }
+        if let Some((n, e)) = squared_distance_wide(&a, &b) {
+            assert_eq!(limbs_rational(&n, 2 * e), exact);
+            past_u128 += usize::from(squared_distance(&a, &b).is_none());
+        }
+    }
+    // The family reaches the wide path (else this compared the u128 path only).
+    assert!(past_u128 > 100, "{past_u128} cases past u128");
+}
