@@ -366,3 +366,72 @@ fn b74_inscribed_polyhedron_keeps_the_orientation() {
         assert!(volume(&faces, &mirrored) < 0.0, "{name}: control");
     }
 }
+
+/// The pole test of B74 against its definition computed over the whole mesh (the
+/// neighbours of `v` by a scan of every half-edge, the star by a scan of every face): the
+/// same verdict on every vertex of spheres, randomly flipped spheres (loops and parallel
+/// edges appear), the two-triangle sphere (every face holds every vertex) and a torus.
+#[test]
+fn b74_check_pole_matches_the_whole_mesh_definition() {
+    use penner::mesh::{builders, Mesh, Vertex};
+    use penner::uniformization::sphere::check_pole;
+    let oracle = |m: &Mesh, v: Vertex| -> bool {
+        let mut ends: Vec<Vertex> = m
+            .halfedges()
+            .filter(|&h| m.tail(h) == v)
+            .map(|h| m.tip(h))
+            .collect();
+        let n = ends.len();
+        if ends.contains(&v) {
+            return false;
+        }
+        ends.sort_unstable();
+        ends.dedup();
+        let star = m
+            .faces()
+            .filter(|&f| m.face_vertices(f).contains(&v))
+            .count();
+        ends.len() == n && star < m.n_faces()
+    };
+    let mut meshes = vec![
+        builders::tetrahedron().mesh,
+        builders::octahedron().mesh,
+        builders::icosahedron().mesh,
+        builders::two_triangle_sphere(),
+        builders::one_vertex_torus(),
+    ];
+    for seed in 0..20 {
+        meshes.push(builders::random_flips(
+            &builders::icosahedron().mesh,
+            40,
+            seed,
+        ));
+        meshes.push(builders::random_flips(
+            &builders::tetrahedron().mesh,
+            6,
+            seed,
+        ));
+    }
+    let (mut accepted, mut refused) = (0, 0);
+    for m in &meshes {
+        for v in m.vertices() {
+            let ours = check_pole(m, v).is_ok();
+            assert_eq!(
+                ours,
+                oracle(m, v),
+                "vertex {v:?} of a mesh with {} faces",
+                m.n_faces()
+            );
+            if ours {
+                accepted += 1;
+            } else {
+                refused += 1;
+            }
+        }
+    }
+    // Both verdicts occur (the control: a test that always accepts or refuses fails).
+    assert!(
+        accepted > 100 && refused > 10,
+        "{accepted} accepted, {refused} refused"
+    );
+}

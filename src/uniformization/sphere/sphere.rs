@@ -181,20 +181,23 @@ pub fn check_pole(mesh: &Mesh, v: Vertex) -> Result<(), String> {
             mesh.n_vertices()
         ));
     }
-    let mut seen = vec![false; mesh.n_vertices()];
+    // O(deg v): the faces at `v` are those of its outgoing half-edges (every corner at `v`
+    // starts one), so no pass over the whole mesh per candidate pole.
+    let mut seen = std::collections::HashSet::new();
+    let mut star: Vec<usize> = Vec::new();
     for h in mesh.outgoing(v) {
         let w = mesh.tip(h);
         if w == v {
             return Err(format!("edge e{} is a loop at the pole", h.edge().0));
         }
-        if std::mem::replace(&mut seen[w.idx()], true) {
+        if !seen.insert(w) {
             return Err(format!("two edges join the pole to v{}", w.0));
         }
+        star.extend(mesh.face(h).map(|f| f.idx()));
     }
-    let star = mesh
-        .faces()
-        .filter(|&f| mesh.face_vertices(f).contains(&v))
-        .count();
+    star.sort_unstable();
+    star.dedup();
+    let star = star.len();
     if star == mesh.n_faces() {
         return Err("every face contains the pole: nothing is left to lay out".into());
     }
