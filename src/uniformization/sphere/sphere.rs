@@ -193,7 +193,7 @@ pub fn check_pole(mesh: &Mesh, v: Vertex) -> Result<(), String> {
         if !seen.insert(w) {
             return Err(format!("two edges join the pole to v{}", w.0));
         }
-        star.extend(mesh.face(h).map(|f| f.idx()));
+        star.extend(mesh.face(h).map(crate::mesh::Face::idx));
     }
     star.sort_unstable();
     star.dedup();
