@@ -71,23 +71,24 @@ fn c_e17(x: f64) -> String {
 /// The sphere as OFF (or OBJ, with `w = 1` when `homogeneous`) with every coordinate
 /// written by `fmt`.
 fn formatted(e: &meshgen::Embedded, fmt: &dyn Fn(f64) -> String, as_obj: bool, w: bool) -> String {
+    use std::fmt::Write as _;
     let mut out = String::new();
     if !as_obj {
-        out += &format!("OFF\n{} {} 0\n", e.pos.len(), e.faces.len());
+        let _ = writeln!(out, "OFF\n{} {} 0", e.pos.len(), e.faces.len());
     }
     for p in &e.pos {
         let [x, y, z] = p.map(fmt);
-        out += &if as_obj {
-            format!("v {x} {y} {z}{}\n", if w { " 1" } else { "" })
+        let _ = if as_obj {
+            writeln!(out, "v {x} {y} {z}{}", if w { " 1" } else { "" })
         } else {
-            format!("{x} {y} {z}\n")
+            writeln!(out, "{x} {y} {z}")
         };
     }
     for f in &e.faces {
-        out += &if as_obj {
-            format!("f {} {} {}\n", f[0] + 1, f[1] + 1, f[2] + 1)
+        let _ = if as_obj {
+            writeln!(out, "f {} {} {}", f[0] + 1, f[1] + 1, f[2] + 1)
         } else {
-            format!("3 {} {} {}\n", f[0], f[1], f[2])
+            writeln!(out, "3 {} {} {}", f[0], f[1], f[2])
         };
     }
     out
