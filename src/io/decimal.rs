@@ -267,8 +267,8 @@ pub fn non_degenerate(
 /// `a·b` exactly, as four little-endian 64-bit limbs: with `a = a₁2⁶⁴ + a₀`,
 /// `b = b₁2⁶⁴ + b₀`, `ab = a₁b₁2¹²⁸ + (a₁b₀ + a₀b₁)2⁶⁴ + a₀b₀`.
 fn mul_wide(a: u128, b: u128) -> [u64; 4] {
-    let (a0, a1) = (a as u64 as u128, a >> 64);
-    let (b0, b1) = (b as u64 as u128, b >> 64);
+    let (a0, a1) = (u128::from(a as u64), a >> 64);
+    let (b0, b1) = (u128::from(b as u64), b >> 64);
     let mut r = [0u64; 4];
     add_at(&mut r, 0, a0 * b0);
     add_at(&mut r, 1, a1 * b0);
@@ -281,7 +281,7 @@ fn mul_wide(a: u128, b: u128) -> [u64; 4] {
 fn add_at(r: &mut [u64; 4], at: usize, t: u128) -> bool {
     let mut carry = t;
     for limb in r.iter_mut().skip(at) {
-        let s = u128::from(*limb) + (carry as u64 as u128);
+        let s = u128::from(*limb) + u128::from(carry as u64);
         *limb = s as u64;
         carry = (carry >> 64) + (s >> 64);
         if carry == 0 {
