@@ -4,6 +4,8 @@
 //! This layer sits on top of `theorems`: it decides nothing itself, it runs checks and
 //! predicates and packages their answers.
 
+pub mod answer;
+pub mod assertion;
 pub mod case;
 pub mod certify;
 pub mod certify_circles;
@@ -13,14 +15,17 @@ pub mod check_surface;
 pub mod claim;
 pub mod claim_circles;
 pub mod claim_hyperbolic;
+pub mod claim_parse;
 pub mod corpus;
 pub mod failure;
 pub mod flip_claim;
+pub mod flip_replay;
 /// The working precisions (moved to [`crate::scalar::prec`]; kept here for the paths users know).
 pub use crate::scalar::prec as precision;
 #[macro_use]
+pub mod check_entry;
 pub mod registry;
-// After `registry`, whose `at_precision!` macro it uses.
+// After `check_entry`, whose `at_precision!` macro they use.
 pub mod checks;
 pub mod checks_circles;
 pub mod checks_energy;
