@@ -1,8 +1,10 @@
 //! Claims in, verdicts out: the check registry, reports, failure files and the versioned
 //! claim protocol (`schema/claim-v1.schema.json`, `docs/oracle.md`).
 //!
-//! This layer sits on top of `theorems`: it decides nothing itself, it runs checks and
-//! predicates and packages their answers.
+//! This layer sits on top of `theorems`: it runs checks and predicates and packages their
+//! answers. Two parts still decide here, the certified replay of a `delaunay_flip` claim
+//! ([`flip_replay`]) and the tie-flip search ([`tie_search`]); ARCHITECTURE.md lists them
+//! under its debts.
 
 pub mod answer;
 pub mod assertion;
