@@ -5,7 +5,7 @@
 //! `cargo bench --bench check` (set `PENNER_BENCH_LARGE=1` for the 10⁵-face mesh at the
 //! default precisions). The whole command on large files (reading, checking, printing, peak
 //! memory) is measured with `/usr/bin/time -v penner check sphere.off --precision f64`; see
-//! README, "Large meshes".
+//! docs/benchmarks.md, "Large meshes".
 
 #![allow(missing_docs)] // criterion_group! generates an undocumented function
 

@@ -1,4 +1,4 @@
-//! The benchmark meshes of discrete uniformization (T24) and the figures of the README:
+//! The benchmark meshes of discrete uniformization (T24) and the figures of docs/benchmarks.md:
 //! wall time of the `f64` Newton solve, of the refinement to max |Θ − θ| ≤ 10⁻³⁰ (MPFR-128
 //! residuals, the `f64` factor), of the refinement to 10⁻⁶⁰ at MPFR-256 and of its
 //! certificate (B70, B71, B36), each also in CPU seconds, their ratios to the `f64` solve,

@@ -7,7 +7,8 @@
 //!   the exponent kept apart (no overflow for `|u|` up to 2²⁰).
 //! - [`replay`]: replay a recorded flip sequence on the exact input metric with certified
 //!   arithmetic (B80), to certify a rounded run's triangulation for the input;
-//!   [`replay_dag`] holds its lazily built flip lengths (B85).
+//!   [`replay_dag`] holds its lazily built flip lengths (B85), [`replay_len`] the length
+//!   types and their certified arithmetic, [`replay_input`] the input metrics it reads.
 //! - [`naive`]: an uncertified `f64` baseline, for benchmarks and for showing where raw
 //!   floating-point decisions go wrong.
 
@@ -19,3 +20,4 @@ pub mod naive;
 pub mod replay;
 pub mod replay_dag;
 pub mod replay_input;
+pub mod replay_len;

@@ -12,8 +12,8 @@
 //! replay (B85).
 
 use super::flips::{euclidean_length_enclosure, ptolemy_length_enclosure};
-use super::replay::{f64_enclosure, new_length, sign_of_lens, tie_length, Len};
 use super::replay_input::InputMetric;
+use super::replay_len::{f64_enclosure, new_length, sign_of_lens, tie_length, Len};
 use crate::mesh::Edge;
 use crate::predicates::delaunay::Quad;
 use crate::predicates::delaunay_widened::{in_range, sign_p, Bounds};

@@ -4,7 +4,7 @@
 //! The first rung of every sign takes a cheap `f64` enclosure of each length (proof: B83);
 //! the exact value of an edge is built only when a sign or a new length needs it.
 
-use super::replay::{f64_enclosure, Len};
+use super::replay_len::{f64_enclosure, Len};
 use crate::io::{DecimalSurface, Metric};
 use crate::mesh::{Edge, Mesh};
 use crate::predicates::delaunay_widened::{in_range, length_from_square, Bounds};

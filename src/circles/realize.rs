@@ -17,21 +17,13 @@
 
 use super::maximal::sphere::ExactCap;
 use super::maximal::tangency::{orientation_violations, ExactCircle};
+pub use super::maximal::violation::Violation;
 use super::metric::{cone_angles, cos_pi, lengths_from_radii};
 use crate::mesh::Mesh;
 use crate::scalar::{Interval, Mpfr, Precision};
 use rug::Rational;
 
 type I = Interval<Mpfr>;
-
-/// A proved violation of an exact condition (an orientation or a winding number).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Violation {
-    /// The element: `face fK (vA, vB, vC)` or `vK`.
-    pub element: String,
-    /// What is wrong with it.
-    pub detail: String,
-}
 
 /// Enclosures of `‖c_i − c_j‖ − (ρ_i + ρ_j)` per edge of `mesh` (mesh edge order) at
 /// precision `p`; `circles` has one entry per vertex.

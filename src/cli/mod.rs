@@ -17,6 +17,7 @@ mod report;
 mod uniformize;
 mod uniformize_boundary;
 mod uniformize_hyperbolic;
+mod uniformize_options;
 mod uniformize_sphere;
 mod uniformize_svg;
 

@@ -5,6 +5,8 @@
 use super::error::{code, CliError};
 use super::files::read_text;
 use super::input::{load_flip_case, FlipCase};
+use super::uniformize_options::numerical_line;
+pub use super::uniformize_options::Options;
 use penner::io::json::exact_number;
 use penner::uniformization::boundary::flat_with_even_boundary;
 use penner::uniformization::pipeline::{
@@ -15,22 +17,6 @@ use penner::uniformization::Targets;
 use std::fmt::Write as _;
 use std::io::IsTerminal;
 use std::path::Path;
-
-/// Options of `penner uniformize`.
-pub struct Options<'a> {
-    /// The surface file.
-    pub path: &'a Path,
-    /// Targets file (JSON array of Θ_i/π).
-    pub targets: Option<&'a Path>,
-    /// Flat targets.
-    pub flat: bool,
-    /// `f64`, `dd` or MPFR bits.
-    pub precision: &'a str,
-    /// Certificate output.
-    pub output: Option<&'a Path>,
-    /// `--sphere`, `--pole`, `--obj`, `--svg`.
-    pub extra: &'a super::args::UniformizeExtra,
-}
 
 pub(super) fn read_targets(path: &Path, n: usize) -> Result<Targets, CliError> {
     let shown = path.display().to_string();
@@ -232,11 +218,4 @@ fn into_surface(case: FlipCase) -> penner::io::Surface {
         FlipCase::Exact(s) => s,
         FlipCase::Decimal(d) => d.into_surface(),
     }
-}
-
-/// The line of a converged solve without a certificate (`--no-certify`): numerical.
-pub(super) fn numerical_line(residual_max: f64) -> String {
-    format!(
-        "converged: max |Θ − θ| = {residual_max:e} (f64); numerical, not certified (--no-certify)\n"
-    )
 }

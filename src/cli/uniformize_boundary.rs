@@ -15,7 +15,7 @@ use std::path::Path;
 pub fn report(
     shown: &str,
     outcome: &BoundaryOutcome,
-    o: &super::uniformize::Options<'_>,
+    o: &super::uniformize_options::Options<'_>,
 ) -> Result<u8, CliError> {
     let b = &outcome.boundary;
     let mesh = &outcome.surface.mesh;
@@ -64,7 +64,7 @@ pub fn report(
         out.push_str(&write_svg(path, outcome)?);
     }
     let Some(c) = &outcome.certification else {
-        out.push_str(&super::uniformize::numerical_line(sol.residual_max));
+        out.push_str(&super::uniformize_options::numerical_line(sol.residual_max));
         super::files::emit(&out)?;
         return Ok(code::UNDECIDED);
     };

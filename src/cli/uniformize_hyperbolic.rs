@@ -72,7 +72,7 @@ pub fn report(
             code::UNDECIDED
         }
         None => {
-            out.push_str(&super::uniformize::numerical_line(sol.residual_max));
+            out.push_str(&super::uniformize_options::numerical_line(sol.residual_max));
             code::UNDECIDED
         }
     };

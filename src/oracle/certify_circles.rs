@@ -5,7 +5,7 @@
 //! than ε, and stays undecided otherwise); orientations and winding numbers are exact, and
 //! a proved violation of one refutes the packing whatever the enclosures say.
 
-use super::certify::{summarize, Answer, ClaimVerdict, START_BITS};
+use super::answer::{summarize, Answer, ClaimVerdict, START_BITS};
 use super::claim::{Assertion, Claim};
 use super::claim_circles::Packing;
 use crate::circles::realize::{

@@ -10,7 +10,7 @@
 //! enclosure (proofs/B52); every other operation is directed (B20). A face whose triangle
 //! inequality the enclosures cannot decide makes its entries invalid, hence undecided.
 
-use super::certify::{interval_lengths, summarize, Answer, START_BITS};
+use super::answer::{interval_lengths, summarize, Answer, START_BITS};
 use super::claim::Claim;
 use crate::predicates::within::within_all;
 use crate::scalar::{Interval, Mpfr, Precision, Real};

@@ -1,7 +1,7 @@
 //! Answering `hyperbolic_uniformization` claims (protocol v1) by the from-scratch re-check
 //! of [`crate::uniformization::hyperbolic_claim::recheck`] (B39) at the claim's `max_bits`.
 
-use super::certify::{decided_answer, Answer, ClaimVerdict};
+use super::answer::{decided_answer, Answer, ClaimVerdict};
 use super::claim::Claim;
 use crate::theorems::Witness;
 use crate::uniformization::hyperbolic_claim::{recheck, HyperbolicClaim, HyperbolicVerdict};

@@ -12,9 +12,10 @@
 #![allow(clippy::clone_on_copy, clippy::op_ref, clippy::let_unit_value)]
 
 use super::case::MetricOps;
+pub use super::check_entry::scale_factors;
+use super::check_entry::Check;
 use super::checks_extra as extra;
 use super::precision::Prec;
-use super::registry::Check;
 use crate::algorithms::flip_to_delaunay::FlipKind;
 use crate::io::{Metric, Surface};
 use crate::scalar::Real;
@@ -26,18 +27,6 @@ use crate::theorems::{
     t29_euclidean_ptolemy_cocircular, Settings, Verdict,
 };
 use rug::Rational;
-
-/// Scale factors s_v = e^{u_v/2} = 1 + ((7v + 3) mod 5 − 2)/20 ∈ {9/10, …, 11/10}: a fixed,
-/// irregular, exactly rational pattern. The ratio max/min < 1.23 keeps the triangles of
-/// well-shaped surfaces triangles after scaling.
-pub fn scale_factors(n: usize) -> Vec<Rational> {
-    (0..n)
-        .map(|v| {
-            let k = ((7 * v + 3) % 5) as i64 - 2;
-            Rational::from((20 + k, 20))
-        })
-        .collect()
-}
 
 fn exact_lengths(case: &Surface) -> Option<&Vec<Rational>> {
     match &case.metric {

@@ -2,8 +2,8 @@
 //! combinatorics: the radii, angles and targets come from fixed rules stated here, so every
 //! run is reproducible.
 
+use super::check_entry::Check;
 use super::precision::Prec;
-use super::registry::Check;
 use crate::circles::CirclePattern;
 use crate::io::Surface;
 use crate::mesh::Mesh;

@@ -8,9 +8,9 @@
 // The `at_precision!` bodies are generic code that is also instantiated at `f64`.
 #![allow(clippy::clone_on_copy, clippy::op_ref, clippy::let_unit_value)]
 
-use super::checks::scale_factors;
+use super::check_entry::scale_factors;
+use super::check_entry::Check;
 use super::precision::Prec;
-use super::registry::Check;
 use crate::io::Surface;
 use crate::scalar::Real;
 use crate::theorems::t32_energy::{check_energy, EnergyInput};

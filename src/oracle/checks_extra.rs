@@ -6,7 +6,7 @@
 #![allow(clippy::clone_on_copy, clippy::op_ref, clippy::let_unit_value)]
 
 use super::case::MetricOps;
-use super::checks::scale_factors;
+use super::check_entry::scale_factors;
 use super::precision::Prec;
 use crate::algorithms::flip_to_delaunay::{flip_to_delaunay_exact, ExactLengths, FlipOptions};
 use crate::io::{Metric, Surface};

@@ -2,8 +2,8 @@
 //! a surface: each case supplies arguments — its first eight edge lengths — next to two
 //! fixed ones (`1/3`, `1000003/7`), so every case runs the identities on fresh numbers.
 
+use super::check_entry::Check;
 use super::precision::Prec;
-use super::registry::Check;
 use crate::io::Surface;
 use crate::scalar::{Dd, Mpfr, Precision, Real};
 use crate::theorems::t30_lobachevsky::{check_lobachevsky, check_lobachevsky_certified};

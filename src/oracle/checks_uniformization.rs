@@ -11,8 +11,8 @@
 //! for rational input lengths on `T₀`, on 256-bit enclosures otherwise (numerical `holds`,
 //! certified `fails` only for disjoint enclosures).
 
+use super::check_entry::Check;
 use super::precision::Prec;
-use super::registry::Check;
 use crate::io::{Metric, Surface};
 use crate::scalar::{Interval, Mpfr, Precision};
 use crate::theorems::t24_uniformization_exists::{check_existence_on, Existence};

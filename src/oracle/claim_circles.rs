@@ -2,7 +2,9 @@
 //! `schema/claim-v1.schema.json`, docs/oracle.md). Both concern the combinatorics of the
 //! surface only: its metric is not read and may be left out.
 
-use super::claim::{epsilon, err, numbers, Assertion, ClaimError};
+use super::assertion::Assertion;
+pub use super::assertion::Packing;
+use super::claim_parse::{epsilon, err, numbers, ClaimError};
 use crate::circles::maximal::check_simplicial;
 use crate::circles::maximal::sphere::ExactCap;
 use crate::circles::maximal::tangency::ExactCircle;
@@ -10,15 +12,6 @@ use crate::io::json::{exact_number, from_value};
 use crate::io::Surface;
 use rug::Rational;
 use serde_json::Value;
-
-/// The circles of a `circle_packing` claim, one per vertex.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Packing {
-    /// Circles in the plane (`centres`, `radii`).
-    Plane(Vec<ExactCircle>),
-    /// Caps `{P ∈ S²: N·P > H}` on the unit sphere (`caps`).
-    Sphere(Vec<ExactCap>),
-}
 
 /// The claim's `surface`; without `lengths`, `squared_lengths` and `positions` it gets unit
 /// lengths (any metric would do: these kinds read only the triangulation).

@@ -2,7 +2,7 @@
 //! `schema/claim-v1.schema.json`, docs/oracle.md; the claim and its re-check:
 //! [`crate::uniformization::hyperbolic_claim`]).
 
-use super::claim::{edge_indices, err, numbers, ClaimError};
+use super::claim_parse::{edge_indices, err, numbers, ClaimError};
 use crate::io::json::exact_number;
 use crate::io::Surface;
 use crate::uniformization::hyperbolic_claim::{validate, HyperbolicClaim};

@@ -1,9 +1,13 @@
 //! Claims in, verdicts out: the check registry, reports, failure files and the versioned
 //! claim protocol (`schema/claim-v1.schema.json`, `docs/oracle.md`).
 //!
-//! This layer sits on top of `theorems`: it decides nothing itself, it runs checks and
-//! predicates and packages their answers.
+//! This layer sits on top of `theorems`: it runs checks and predicates and packages their
+//! answers. Two parts still decide here, the certified replay of a `delaunay_flip` claim
+//! ([`flip_replay`]) and the tie-flip search ([`tie_search`]); ARCHITECTURE.md lists them
+//! under its debts.
 
+pub mod answer;
+pub mod assertion;
 pub mod case;
 pub mod certify;
 pub mod certify_circles;
@@ -13,14 +17,17 @@ pub mod check_surface;
 pub mod claim;
 pub mod claim_circles;
 pub mod claim_hyperbolic;
+pub mod claim_parse;
 pub mod corpus;
 pub mod failure;
 pub mod flip_claim;
+pub mod flip_replay;
 /// The working precisions (moved to [`crate::scalar::prec`]; kept here for the paths users know).
 pub use crate::scalar::prec as precision;
 #[macro_use]
+pub mod check_entry;
 pub mod registry;
-// After `registry`, whose `at_precision!` macro it uses.
+// After `check_entry`, whose `at_precision!` macro they use.
 pub mod checks;
 pub mod checks_circles;
 pub mod checks_energy;

@@ -4,51 +4,13 @@
 //! A check that is not implemented is absent from [`catalogue`], never reported with an
 //! invented verdict.
 
+pub use super::check_entry::Check;
 use super::precision::Prec;
 use crate::io::Surface;
 use crate::theorems::{Settings, Verdict};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::Arc;
 use std::time::Instant;
-
-/// One runnable check of the catalogue.
-#[derive(Clone, Copy, Debug)]
-pub struct Check {
-    /// Catalogue ID, `T01` … `T36` (docs/catalogue.md, `proofs/`).
-    pub id: &'static str,
-    /// Short statement, for tables.
-    pub title: &'static str,
-    /// Runs the check on a case at one precision; `None` when the check has no form at
-    /// that precision (e.g. an exact-only check at `f64`) — the row is then left out.
-    pub run: fn(&Surface, Prec, &Settings) -> Option<Verdict>,
-}
-
-/// Run `$body` with `$l` bound to the case's lengths in the backend of `$prec`
-/// (`Vec<f64>`, `Vec<Dd>` or `Vec<Mpfr>`); `$t` names the backend type inside `$body`.
-/// At `Prec::Exact` the macro yields `None` (use the check's exact form instead).
-#[allow(unused_macros)]
-macro_rules! at_precision {
-    ($prec:expr, $case:expr, |$l:ident : $t:ident| $body:expr) => {
-        match $prec {
-            $crate::oracle::precision::Prec::F64 => {
-                type $t = f64;
-                let $l: Vec<$t> = $case.lengths::<$t>(());
-                $body
-            }
-            $crate::oracle::precision::Prec::Dd => {
-                type $t = $crate::scalar::Dd;
-                let $l: Vec<$t> = $case.lengths::<$t>(());
-                $body
-            }
-            $crate::oracle::precision::Prec::Mpfr(p) => {
-                type $t = $crate::scalar::Mpfr;
-                let $l: Vec<$t> = $case.lengths::<$t>(p);
-                $body
-            }
-            $crate::oracle::precision::Prec::Exact => None,
-        }
-    };
-}
 
 /// Every check this build can run, in catalogue order.
 pub fn catalogue() -> Vec<Check> {

@@ -22,11 +22,10 @@
 //! complete (every reachable triangulation visited and certified, every relabeling
 //! compared); otherwise the answer is `undecided` with the reason.
 
-use super::certify::ClaimVerdict;
-use super::flip_claim::{
-    compare, edge_name, finish, tie_length, Compared, Len, Ours, MAX_RELABELINGS,
-};
+use super::answer::ClaimVerdict;
+use super::flip_replay::{compare, edge_name, finish, Compared, Ours, MAX_RELABELINGS};
 use super::relabel::isomorphisms;
+use crate::algorithms::replay::{tie_length, Len};
 use crate::io::json::edge_order;
 use crate::io::Surface;
 use crate::mesh::{Edge, HalfEdge, Mesh};

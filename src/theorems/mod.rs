@@ -33,6 +33,7 @@ pub mod t21_delaunay_flipping;
 pub mod t22_delaunay_uniqueness;
 pub mod t23_euclidean_flip_cone_metric;
 pub mod t23_first_rung;
+pub mod t23_hypotheses;
 pub mod t24_uniformization_exists;
 pub mod t25_uniformization_unique;
 pub mod t26_flips_keep_metric;

@@ -16,9 +16,7 @@
 //! `false` and the full MPFR comparison decides as before.
 
 use super::progress::Progress;
-use super::t23_euclidean_flip_cone_metric::{
-    face_certified, flip_hypotheses_certified, half_angle_tangent,
-};
+use super::t23_hypotheses::{face_certified, flip_hypotheses_certified, half_angle_tangent};
 use crate::algorithms::flips::euclidean_length_enclosure;
 use crate::mesh::{Edge, HalfEdge, Mesh};
 use crate::predicates::delaunay::{Quad, QuadEdges};

@@ -27,6 +27,8 @@ pub(crate) mod box_f64;
 pub(crate) mod cell_boundary;
 #[path = "certificate/certificate.rs"]
 pub mod certificate;
+#[path = "certificate/outcome.rs"]
+pub(crate) mod certificate_outcome;
 #[path = "certificate/claim_form.rs"]
 pub mod claim_form;
 pub mod components;

@@ -18,6 +18,7 @@
 use super::components::Components;
 use super::error::UniformizeError;
 use super::hessian::{CholeskyCache, GroundedPattern};
+pub use super::newton_driver::StepReport;
 use super::newton_driver::{drive, DriverStop, Limits, NewtonSystem, Over};
 use super::scaling::scaled_fast;
 use super::targets::Targets;
@@ -61,21 +62,6 @@ impl UniformizeOptions {
             max_halvings: self.max_halvings,
         }
     }
-}
-
-/// One accepted Newton step.
-#[derive(Clone, Debug, PartialEq, serde::Serialize)]
-pub struct StepReport {
-    /// Step number, from 1.
-    pub iteration: usize,
-    /// `max_i |Θ_i − θ_i|` after the step.
-    pub residual_max: f64,
-    /// The accepted step length `t`.
-    pub step: f64,
-    /// Halvings before acceptance.
-    pub halvings: usize,
-    /// Ptolemy flips performed by this step (T26: finitely many along the solve).
-    pub flips: usize,
 }
 
 /// Why the solver stopped.

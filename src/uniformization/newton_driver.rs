@@ -19,9 +19,42 @@
 //! iteration cap, or after two iterations in a row that fail to halve the residual (the
 //! precision's floor).
 
-use super::newton::StepReport;
-use super::refine::Refinement;
 use crate::scalar::Real;
+
+/// One accepted Newton step.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct StepReport {
+    /// Step number, from 1.
+    pub iteration: usize,
+    /// `max_i |Θ_i − θ_i|` after the step.
+    pub residual_max: f64,
+    /// The accepted step length `t`.
+    pub step: f64,
+    /// Halvings before acceptance.
+    pub halvings: usize,
+    /// Ptolemy flips performed by this step (T26: finitely many along the solve).
+    pub flips: usize,
+}
+
+/// The result of [`refine`](super::refine::refine).
+#[derive(Clone, Debug)]
+pub struct Refinement<T> {
+    /// The refined log scale factors.
+    pub u: Vec<T>,
+    /// `Θ_i − θ_i(u)` at the refined `u`, in `T`.
+    pub residual: Vec<T>,
+    /// `max |Θ − θ|` (as `f64`) after each iteration, the first entry at the `f64` solution.
+    pub history: Vec<f64>,
+    /// Whether `max |Θ − θ| ≤ tolerance` was reached.
+    pub reached: bool,
+}
+
+impl<T: Real> Refinement<T> {
+    /// `max |Θ − θ|` at the refined `u` (as `f64`).
+    pub fn residual_max(&self) -> f64 {
+        self.history.last().copied().unwrap_or(f64::INFINITY)
+    }
+}
 
 /// The vertices the equations hold at: all, or a list (the free vertices of a Dirichlet
 /// problem, whose gradient entries elsewhere are not equations).

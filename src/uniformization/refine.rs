@@ -16,32 +16,13 @@
 use super::components::Components;
 use super::hessian::{grounded_hessian, newton_direction, CholeskyCache};
 use super::newton::Uniformization;
+pub use super::newton_driver::Refinement;
 use super::newton_driver::{refine_loop, Over};
 use crate::algorithms::flips::flip_ptolemy;
 use crate::geometry::cone_angles::cone_angles;
 use crate::mesh::{Edge, Mesh};
 use crate::predicates::delaunay::{delaunay_p, QuadEdges};
 use crate::scalar::Real;
-
-/// The result of [`refine`].
-#[derive(Clone, Debug)]
-pub struct Refinement<T> {
-    /// The refined log scale factors.
-    pub u: Vec<T>,
-    /// `Θ_i − θ_i(u)` at the refined `u`, in `T`.
-    pub residual: Vec<T>,
-    /// `max |Θ − θ|` (as `f64`) after each iteration, the first entry at the `f64` solution.
-    pub history: Vec<f64>,
-    /// Whether `max |Θ − θ| ≤ tolerance` was reached.
-    pub reached: bool,
-}
-
-impl<T: Real> Refinement<T> {
-    /// `max |Θ − θ|` at the refined `u` (as `f64`).
-    pub fn residual_max(&self) -> f64 {
-        self.history.last().copied().unwrap_or(f64::INFINITY)
-    }
-}
 
 /// Why a refinement could not run.
 #[derive(Debug, thiserror::Error)]

@@ -1,5 +1,5 @@
-//! Sharding the long property search (`PENNER_SHARD=i/n`, README "Sharding the long
-//! search"): the shards of a run partition its case indices, and a malformed value stops
+//! Sharding the long property search (`PENNER_SHARD=i/n`, docs/testing.md, "Sharding the
+//! long search"): the shards of a run partition its case indices, and a malformed value stops
 //! the test harness with a message naming it.
 
 use crate::support::{parse_shard, shard_cases_of, shard_from, shard_indices};

@@ -20,8 +20,8 @@ pub fn long_mode() -> bool {
 }
 
 /// This run's shard `(i, n)` of the long mode's generated cases: `PENNER_SHARD=i/n` with
-/// `0 ≤ i < n` runs only the cases whose index is `i` modulo `n` (README, "Sharding the
-/// long search"); `(0, 1)`, every case, when unset or outside the long mode.
+/// `0 ≤ i < n` runs only the cases whose index is `i` modulo `n` (docs/testing.md,
+/// "Sharding the long search"); `(0, 1)`, every case, when unset or outside the long mode.
 ///
 /// # Panics
 /// On a malformed `PENNER_SHARD` (not `i/n` with integers `0 ≤ i < n`), naming it.

@@ -20,6 +20,7 @@ pub mod sphere;
 pub mod stopping;
 pub mod svg;
 pub mod tangency;
+pub mod violation;
 
 use crate::mesh::{Mesh, MeshError, Vertex};
 use crate::scalar::Real;

@@ -11,7 +11,7 @@
 //! sin a')` for angular radii `a, a'` and centre angle `δ`, proofs/B96), a Möbius invariant.
 
 use super::tangency::{check_precision, face_and_winding_violations, PackingVerdict, Tally};
-use crate::circles::realize::Violation;
+use super::violation::Violation;
 use crate::mesh::{Mesh, Vertex};
 use crate::scalar::{Interval, Mpfr, Precision, Real};
 use rug::Rational;

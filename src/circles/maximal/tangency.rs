@@ -16,7 +16,7 @@
 //! orientation or a wrong winding number); an enclosure straddling the bound is
 //! `Undecided`.
 
-use crate::circles::realize::Violation;
+use super::violation::Violation;
 use crate::mesh::{Mesh, Vertex};
 use crate::scalar::{Interval, IntervalBound, Mpfr, Precision, Real, Sign};
 use rug::Rational;

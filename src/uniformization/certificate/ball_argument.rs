@@ -8,7 +8,7 @@
 //! factorization, B70; Weyl for the radius) and `γ ≥ ‖Θ − θ(u)‖₂`: if `γ/μ < r` (rounded
 //! up), a zero `u*` of the free gradient exists with `‖u* − u‖₂ ≤ γ/μ`.
 
-use super::certificate::{to_f64_up, CertificateOutcome, I};
+use super::certificate_outcome::{to_f64_up, CertificateOutcome, I};
 use super::hessian::{grounded_hessian, CholeskyCache};
 use super::verified_cholesky::{lambda_min_lower_bound, up, SymmetricLower};
 use crate::geometry::laplacian::SparseMatrix;

@@ -12,7 +12,7 @@
 //! eigenvalues with a binary64 rounding term of relative size `≥ 2⁻⁵³` (B70), so an
 //! enclosure of relative width a few ulps costs the bound nothing it can see.
 
-use super::certificate::I;
+use super::certificate_outcome::I;
 use crate::geometry::cotan::halfedge_cotans;
 use crate::geometry::laplacian::{laplacian_from_halfedge_cotans, SparseMatrix};
 use crate::mesh::{Edge, HalfEdge, Mesh};

@@ -22,7 +22,7 @@
 //! ([`Boundary::correct_angle_sums`]).
 
 use super::ball_argument::certified_nonnegative as nonnegative;
-use super::certificate::I;
+use super::certificate_outcome::I;
 use crate::algorithms::flips::ptolemy_length_enclosure;
 use crate::geometry::enclosure::cotans::enclose_halfedge_cotans;
 use crate::geometry::laplacian::{laplacian_from_halfedge_cotans, SparseMatrix};

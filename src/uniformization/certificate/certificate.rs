@@ -21,6 +21,8 @@
 
 use super::box_f64;
 use super::cell_boundary::{cell_over_box, scale, Boundary, CellOverBox};
+pub use super::certificate_outcome::CertificateOutcome;
+pub(crate) use super::certificate_outcome::I;
 use super::components::Components;
 use super::error::UniformizeError;
 use super::newton::validate_input;
@@ -30,7 +32,6 @@ use crate::geometry::enclosure::angle_sums::enclose_cone_angles;
 use crate::geometry::laplacian::SparseMatrix;
 use crate::mesh::{Edge, Mesh};
 use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
-use rug::float::Round;
 use rug::Rational;
 
 /// Everything a certificate states, all exact: `T₀` with its binary64 lengths, the
@@ -50,25 +51,6 @@ pub struct CertificateData {
     pub u: Vec<Rational>,
     /// The radius of the box (sup norm) around `u`.
     pub radius: Rational,
-}
-
-/// The outcome of [`check_certificate`].
-#[derive(Clone, Debug, PartialEq)]
-pub enum CertificateOutcome {
-    /// An exact solution `u*` exists with `‖u* − u‖₂ ≤ distance` (so also in sup norm).
-    Holds {
-        /// The proved bound on `‖u* − u‖₂`.
-        distance: f64,
-        /// The proved lower bound `μ` on the grounded Hessian over the box.
-        mu: f64,
-        /// The enclosed `‖Θ − θ(u)‖₂` on the free vertices (upper bound).
-        residual: f64,
-    },
-    /// No conclusion, with the reason (never a claim that no solution exists).
-    Undecided {
-        /// Why.
-        reason: String,
-    },
 }
 
 /// A malformed certificate (as opposed to one that does not prove its claim).
@@ -94,12 +76,6 @@ pub enum CertificateError {
     /// The precision is out of range.
     #[error("precision of {0} bits out of range")]
     Bits(u64),
-}
-
-pub(crate) type I = Interval<Mpfr>;
-
-pub(crate) fn to_f64_up(x: &Mpfr) -> f64 {
-    x.as_float().to_f64_round(Round::Up)
 }
 
 /// What both certifiers need: the final triangulation, the components, the interval

@@ -15,7 +15,7 @@
 //! - [`total_area_lhuilier`]: the total hyperbolic area by the hyperbolic L'Huilier
 //!   formula, an oracle independent of the angles (Gauss–Bonnet: `4π(g − 1)` at `Θ ≡ 2π`).
 
-use super::certificate::to_f64_up;
+use super::certificate_outcome::to_f64_up;
 use super::hyperbolic::{HyperbolicError, HyperbolicUniformization};
 use super::hyperbolic_flips::{delaunay_on_box, replay_ptolemy};
 use super::hyperbolic_kernel::face_terms_generic;
