@@ -40,6 +40,10 @@ pub struct UniformizeOptions {
     pub max_halvings: usize,
     /// A starting `u` (default 0).
     pub start: Option<Vec<f64>>,
+    /// Stop as stalled after this many consecutive steps of at most `2⁻¹⁰` that together
+    /// reduce `max |Θ − θ|` by less than 0.1 % (the Newton driver's stall rule); `None`
+    /// (the default): run to the iteration cap.
+    pub stall_window: Option<usize>,
 }
 
 impl Default for UniformizeOptions {
@@ -49,6 +53,7 @@ impl Default for UniformizeOptions {
             max_iterations: 100,
             max_halvings: 40,
             start: None,
+            stall_window: None,
         }
     }
 }
@@ -60,6 +65,7 @@ impl UniformizeOptions {
             tolerance: self.tolerance,
             max_iterations: self.max_iterations,
             max_halvings: self.max_halvings,
+            stall_window: self.stall_window,
         }
     }
 }
@@ -72,7 +78,8 @@ pub enum Stop {
     /// The iteration cap was reached first.
     IterationCap,
     /// No acceptable step: the Hessian could not be factored, or the line search found
-    /// no decrease, or the metric degenerated (a face not a triangle, lengths out of range).
+    /// no decrease or stalled (`UniformizeOptions::stall_window`), or the metric
+    /// degenerated (a face not a triangle, lengths out of range).
     DegenerateStep(String),
 }
 
@@ -92,6 +99,10 @@ impl Stop {
                 "line search: {} after {} halvings at max residual {residual_max:e}",
                 last.unwrap_or_else(|| "no decrease of |∇E|".into()),
                 opts.max_halvings,
+            )),
+            DriverStop::Stalled(window) => Stop::DegenerateStep(format!(
+                "line search stalled: {window} steps of at most 2^-10 reduced the max residual \
+                 by less than 0.1 % (now {residual_max:e})"
             )),
         }
     }

@@ -12,7 +12,13 @@
 //! stalls at the working precision. Norms and the projection run over the vertices the
 //! equations hold at ([`Over`]). The driver stops when `max |g| ≤ tolerance`, at the
 //! iteration cap, when the Hessian cannot be factored, or when no step is accepted (with
-//! the last reason an evaluation gave).
+//! the last reason an evaluation gave). A solver may also ask it to stop when the line
+//! search **stalls** ([`Limits::stall_window`]): `w` accepted steps in a row each needed
+//! at least [`STALL_HALVINGS`] halvings (`t ≤ 2⁻¹⁰`) and together reduced `max |g|` by less
+//! than the fraction [`STALL_DECREASE`] — the minimiser lies where the metric degenerates
+//! (e.g. a Dirichlet problem whose boundary faces cannot be flipped), and the remaining
+//! iterations would each move `u` by less than `2⁻¹⁰` of a Newton step. It is a stop
+//! without a solution, never a weaker test of one.
 //!
 //! **Refinement.** `u` kept in a higher precision `T`, the residual evaluated in `T`, the
 //! correction from a binary64 factor computed once; it stops at the tolerance, at the
@@ -120,6 +126,33 @@ pub(crate) struct Limits {
     pub max_iterations: usize,
     /// At most this many halvings in one line search.
     pub max_halvings: usize,
+    /// Stop as stalled after this many accepted steps in a row that each needed at least
+    /// [`STALL_HALVINGS`] halvings and together reduced `max |∇E|` by less than
+    /// [`STALL_DECREASE`] of its value (module doc); `None`: never.
+    pub stall_window: Option<usize>,
+}
+
+/// The halvings from which an accepted step counts towards a stall (`t ≤ 2⁻¹⁰`).
+pub(crate) const STALL_HALVINGS: usize = 10;
+/// The relative decrease of `max |∇E|` over a stall window below which the run stalls.
+pub(crate) const STALL_DECREASE: f64 = 1e-3;
+
+/// Whether the last `window` accepted steps stalled (see [`Limits::stall_window`]):
+/// each needed at least [`STALL_HALVINGS`] halvings, and `max |∇E|` after them is above
+/// `(1 − STALL_DECREASE)` times its value before them (`before` when the window starts at
+/// the first step).
+pub(crate) fn stalled(steps: &[StepReport], window: usize, before: f64) -> bool {
+    if window == 0 || steps.len() < window {
+        return false;
+    }
+    let recent = &steps[steps.len() - window..];
+    let start = if steps.len() > window {
+        steps[steps.len() - window - 1].residual_max
+    } else {
+        before
+    };
+    let end = recent[window - 1].residual_max;
+    recent.iter().all(|s| s.halvings >= STALL_HALVINGS) && end > (1.0 - STALL_DECREASE) * start
 }
 
 /// Why [`drive`] stopped.
@@ -133,6 +166,8 @@ pub(crate) enum DriverStop<F> {
     Factor(String),
     /// No step was accepted; the last evaluation fault, if any.
     LineSearch(Option<F>),
+    /// The line search stalled ([`Limits::stall_window`]) over this many steps.
+    Stalled(usize),
 }
 
 /// The end state of [`drive`]: the last accepted `u` and its evaluation.
@@ -188,6 +223,7 @@ pub(crate) fn drive<S: NewtonSystem>(
     progress: &mut dyn FnMut(&StepReport),
 ) -> DriverRun<S::Eval, S::Fault> {
     let mut steps = Vec::new();
+    let initial = over.max_abs(S::gradient(&ev));
     let stop = 'newton: {
         for iteration in 1..=limits.max_iterations + 1 {
             if over.max_abs(S::gradient(&ev)) <= limits.tolerance {
@@ -217,6 +253,11 @@ pub(crate) fn drive<S: NewtonSystem>(
             progress(&report);
             steps.push(report);
             ev = new;
+            if let Some(window) = limits.stall_window {
+                if stalled(&steps, window, initial) {
+                    break 'newton DriverStop::Stalled(window);
+                }
+            }
         }
         DriverStop::IterationCap
     };
@@ -284,5 +325,45 @@ pub(crate) fn refine_loop<T: Real, E>(
             *ui += &T::from_f64(*di, ctx);
         }
         iteration += 1;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{stalled, StepReport, STALL_HALVINGS};
+
+    fn step(residual_max: f64, halvings: usize) -> StepReport {
+        StepReport {
+            iteration: 0,
+            residual_max,
+            step: 0.5f64.powi(halvings as i32),
+            halvings,
+            flips: 0,
+        }
+    }
+
+    /// The stall rule on the history of a stalled disk problem (a pole of a scanned statue:
+    /// 23 halvings a step, `max |Θ − θ|` 0.36555 → 0.36554) and its controls: one step of
+    /// fewer halvings, a decrease of 1 %, or a window not yet full is no stall.
+    #[test]
+    fn stall_needs_a_full_window_of_tiny_steps_without_progress() {
+        let slow: Vec<StepReport> = (0..6)
+            .map(|k| step(0.3655495 - 4e-8 * f64::from(k), 23))
+            .collect();
+        assert!(stalled(&slow, 5, 0.37));
+        assert!(stalled(&slow[..5], 5, 0.3655496));
+        // Controls.
+        let mut one_large = slow.clone();
+        one_large[3].halvings = STALL_HALVINGS - 1;
+        assert!(!stalled(&one_large, 5, 0.37));
+        let progressing: Vec<StepReport> =
+            (0..6).map(|k| step(0.36 * 0.99f64.powi(k), 23)).collect();
+        assert!(!stalled(&progressing, 5, 0.37));
+        assert!(!stalled(&slow[..4], 5, 0.37));
+        assert!(
+            !stalled(&slow[..5], 5, 0.5),
+            "the window's start is `before`"
+        );
+        assert!(!stalled(&slow, 0, 0.37));
     }
 }

@@ -451,6 +451,7 @@ pub fn uniformize_hyperbolic(
         tolerance: opts.tolerance,
         max_iterations: opts.max_iterations,
         max_halvings: opts.max_halvings,
+        stall_window: None,
     };
     let run = drive(&mut sys, Over::ALL, u, ev, limits, &mut |_| {});
     let residual_max = Over::ALL.max_abs(&run.eval.grad);
@@ -462,6 +463,9 @@ pub fn uniformize_hyperbolic(
         DriverStop::LineSearch(None) => HyperbolicStop::DegenerateStep(format!(
             "line search: no decrease of |∇E| after {} halvings at max residual {residual_max:e}",
             opts.max_halvings,
+        )),
+        DriverStop::Stalled(window) => HyperbolicStop::DegenerateStep(format!(
+            "line search stalled over {window} steps at max residual {residual_max:e}"
         )),
     };
     Ok(HyperbolicUniformization {

@@ -61,6 +61,9 @@ impl Default for SphereOptions {
             normalize: true,
             newton: UniformizeOptions {
                 tolerance: 1e-12,
+                // A pole whose disk problem stalls is given up after 5 such steps (the
+                // next pole or continuation stage is tried), not after the iteration cap.
+                stall_window: Some(5),
                 ..UniformizeOptions::default()
             },
             star_flips: true,
@@ -432,8 +435,10 @@ pub fn disk_of(mesh: &Mesh, lengths: &[f64], pole: Vertex) -> Result<Disk, Strin
 /// The disk problem by continuation in the Dirichlet values: with `w̄` their mean and
 /// `δ_a = w_a − w̄`, solve with the values `w̄ + t·δ` for `t` from `0` (a constant, i.e. a
 /// global scale of the input: `u ≡ w̄` is a valid start) to `1`, each stage started at the
-/// previous solution, the step in `t` doubled after a success and halved after a failure
-/// (at least `2⁻²⁰`). Intermediate stages stop at `max |Θ − θ| ≤ 10⁻⁶`.
+/// previous solution — first extrapolated along the secant of the last two stages' solutions
+/// (a predictor: the free values follow the boundary's), then as it is if that start does
+/// not converge — the step in `t` doubled after a success and halved after a failure (at
+/// least `2⁻²⁰`). Intermediate stages stop at `max |Θ − θ| ≤ 10⁻⁶`.
 fn solve_by_continuation(
     disk: &Disk,
     fixed: &[Option<f64>],
@@ -462,16 +467,36 @@ fn solve_by_continuation(
     }
     u.clone_from(&first.u);
     let (mut t, mut dt) = (0.0f64, 1.0f64);
+    // The last two stages' solutions: the next stage starts from their secant extrapolation
+    // (the free values follow the boundary's), then, if that start fails, from `u` itself.
+    let mut previous: Option<(f64, Vec<f64>)> = None;
     loop {
         let next = (t + dt).min(1.0);
         let o = if next >= 1.0 { newton } else { &loose };
-        let sol = solve_dirichlet(&disk.mesh, &disk.lengths, &at(next), theta, &u, o)?;
+        let fixed_next = at(next);
+        let predicted = previous.as_ref().map(|(tp, up)| {
+            let s = (next - t) / (t - tp);
+            u.iter()
+                .zip(up)
+                .map(|(a, b)| a + s * (a - b))
+                .collect::<Vec<f64>>()
+        });
+        let mut sol = None;
+        for start in predicted.iter().chain(std::iter::once(&u)) {
+            let trial = solve_dirichlet(&disk.mesh, &disk.lengths, &fixed_next, theta, start, o)?;
+            let converged = trial.stop == Stop::Converged;
+            sol = Some(trial);
+            if converged {
+                break;
+            }
+        }
+        let sol = sol.expect("at least the plain start is tried");
         if sol.stop == Stop::Converged {
             if next >= 1.0 {
                 return Ok(sol);
             }
+            previous = Some((t, std::mem::replace(&mut u, sol.u)));
             t = next;
-            u = sol.u;
             dt *= 2.0;
         } else {
             dt *= 0.5;
