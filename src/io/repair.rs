@@ -10,7 +10,11 @@
 //!   by dynamic programming over the polygon's chains — the constrained Delaunay
 //!   triangulation when that is unique. A non-planar polygon gets the fan, from the corner
 //!   that maximises the smallest angle, whose triangles' normals pairwise make an acute
-//!   angle (decided exactly), so no triangle folds over another. Every triangle is
+//!   angle (decided exactly), so no triangle folds over another. A quadrilateral bent so
+//!   far that neither diagonal has that (a crease of more than 90°, as at the corners of
+//!   modelled eyes and lips) is split along the diagonal whose two normals make the
+//!   smallest angle, provided they are not opposite (decided exactly: two triangles on one
+//!   edge cannot overlap otherwise), and reported apart. Every triangle is
 //!   non-degenerate (exact cross product ≠ 0). Angles only rank valid candidates (binary64);
 //!   validity is decided exactly. Polygons with more than [`DP_CORNERS`] corners get the fan.
 //! - **Orient.** A breadth-first search over the dual graph (faces sharing an edge with
@@ -67,6 +71,9 @@ pub struct RepairLog {
     pub planar: Vec<(usize, usize)>,
     /// Non-planar polygon faces split as a fan: (line, corners).
     pub fans: Vec<(usize, usize)>,
+    /// Quadrilaterals bent by more than 90° along both diagonals, split along the diagonal
+    /// bending least: (line, corners).
+    pub creased: Vec<(usize, usize)>,
     /// Faces whose orientation was reversed, by line.
     pub reversed: Vec<usize>,
     /// Vertices dropped, by line.
@@ -78,6 +85,7 @@ impl RepairLog {
     pub fn is_empty(&self) -> bool {
         self.planar.is_empty()
             && self.fans.is_empty()
+            && self.creased.is_empty()
             && self.reversed.is_empty()
             && self.dropped.is_empty()
     }
@@ -111,6 +119,13 @@ impl fmt::Display for RepairLog {
                 "triangulated {} non-planar polygon face(s) as the fan with the largest smallest angle (lines {})",
                 self.fans.len(),
                 lines_of(self.fans.iter().map(|p| p.0))
+            ));
+        }
+        if !self.creased.is_empty() {
+            parts.push(format!(
+                "triangulated {} quadrilateral(s) bent by more than 90° along both diagonals, along the diagonal bending least (lines {})",
+                self.creased.len(),
+                lines_of(self.creased.iter().map(|p| p.0))
             ));
         }
         if !self.reversed.is_empty() {
@@ -252,17 +267,17 @@ fn triangulate(soup: &mut PolygonSoup, log: &mut RepairLog) -> Result<(), ReadEr
             .iter()
             .map(|&v| exact(&soup.positions[v as usize]))
             .collect();
-        let (triangles, planar) = split_polygon(&pts).ok_or_else(|| ReadError::CannotRepair {
+        let (triangles, kind) = split_polygon(&pts).ok_or_else(|| ReadError::CannotRepair {
             element: format!("line {line}"),
             message: format!(
                 "the face with {} corners has no triangulation without a degenerate or folded triangle",
                 corners.len()
             ),
         })?;
-        if planar {
-            log.planar.push((line, corners.len()));
-        } else {
-            log.fans.push((line, corners.len()));
+        match kind {
+            Split::Planar => log.planar.push((line, corners.len())),
+            Split::Fan => log.fans.push((line, corners.len())),
+            Split::Creased => log.creased.push((line, corners.len())),
         }
         for [a, b, c] in triangles {
             out.push_face(&[corners[a], corners[b], corners[c]], line);
@@ -274,8 +289,20 @@ fn triangulate(soup: &mut PolygonSoup, log: &mut RepairLog) -> Result<(), ReadEr
     Ok(())
 }
 
-/// Triangles (corner indices) splitting the polygon `pts`, and whether it is planar.
-pub(crate) fn split_polygon(pts: &[P3]) -> Option<(Vec<[usize; 3]>, bool)> {
+/// How [`split_polygon`] split a polygon.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Split {
+    /// In its plane (the polygon is planar).
+    Planar,
+    /// A fan whose normals pairwise make an acute angle.
+    Fan,
+    /// A quadrilateral bent by more than 90° along both diagonals, split along the one
+    /// bending least.
+    Creased,
+}
+
+/// Triangles (corner indices) splitting the polygon `pts`, and how.
+pub(crate) fn split_polygon(pts: &[P3]) -> Option<(Vec<[usize; 3]>, Split)> {
     let k = pts.len();
     // Newell's normal: twice the vector area, exact.
     let mut n: P3 = [Rational::new(), Rational::new(), Rational::new()];
@@ -288,10 +315,44 @@ pub(crate) fn split_polygon(pts: &[P3]) -> Option<(Vec<[usize; 3]>, bool)> {
     let planar = !is_zero(&n) && (1..k).all(|i| dot(&sub(&pts[i], &pts[0]), &n) == 0);
     if planar && k <= DP_CORNERS {
         if let Some(t) = planar_max_min_angle(pts, &n) {
-            return Some((t, true));
+            return Some((t, Split::Planar));
         }
     }
-    best_fan(pts).map(|t| (t, planar))
+    let kind = if planar { Split::Planar } else { Split::Fan };
+    best_fan(pts).map(|t| (t, kind)).or_else(|| {
+        (k == 4)
+            .then(|| least_bent_diagonal(pts))
+            .flatten()
+            .map(|t| (t, Split::Creased))
+    })
+}
+
+/// The split of a quadrilateral along the diagonal whose two triangles' normals make the
+/// smallest angle (ranked in binary64), among the splits with non-degenerate triangles whose
+/// normals are not opposite (exact: `n₁ × n₂ ≠ 0` or `n₁·n₂ > 0`), so the two triangles on
+/// the diagonal do not overlap; `None` when neither diagonal qualifies.
+fn least_bent_diagonal(pts: &[P3]) -> Option<Vec<[usize; 3]>> {
+    let mut best: Option<(f64, Vec<[usize; 3]>)> = None;
+    for apex in 0..2 {
+        let tris = vec![
+            [apex, apex + 1, (apex + 2) % 4],
+            [apex, (apex + 2) % 4, (apex + 3) % 4],
+        ];
+        let [n1, n2] = [0, 1].map(|t| normal(&pts[tris[t][0]], &pts[tris[t][1]], &pts[tris[t][2]]));
+        if is_zero(&n1) || is_zero(&n2) {
+            continue;
+        }
+        let d = dot(&n1, &n2);
+        if is_zero(&cross(&n1, &n2)) && d <= 0 {
+            continue;
+        }
+        let norm = |n: &P3| n.iter().map(|x| x.to_f64().powi(2)).sum::<f64>().sqrt();
+        let cosine = d.to_f64() / (norm(&n1) * norm(&n2));
+        if best.as_ref().is_none_or(|b| cosine > b.0) {
+            best = Some((cosine, tris));
+        }
+    }
+    best.map(|b| b.1)
 }
 
 /// Project to the coordinate plane along the largest component of `n`, keeping the

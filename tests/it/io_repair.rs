@@ -278,3 +278,61 @@ fn cli_names_the_repair_and_applies_it_only_when_asked() {
     let d = penner(&["delaunay", path, "--precision", "f64", "--triangulate"]);
     assert_eq!(d.status.code(), Some(0), "{}", text(&d.stderr));
 }
+
+/// A quadrilateral bent by more than 90° along both diagonals (Suzanne's, line 1190 of the
+/// OBJ in github.com/alecjacobson/common-3d-test-models: its triangles' normals make 96°
+/// along 0–2 and 103° along 1–3) is split along the diagonal bending least and reported
+/// as creased; the control, a bow-tie whose two splits both give opposite normals (the
+/// triangles on the diagonal overlap), is still refused.
+#[test]
+fn a_quad_bent_past_ninety_degrees_is_split_along_the_least_bent_diagonal() {
+    let bent = [
+        ["-2.369062", "1.025123", "4.853892"],
+        ["-2.330000", "1.009498", "4.814830"],
+        ["-2.369062", "1.150123", "4.916392"],
+        ["-2.392500", "1.103248", "4.846080"],
+    ];
+    let soup = off::read_polygons(&off_of(&bent, &[vec![0, 1, 2, 3]])).expect("read");
+    let (fixed, log) = repair(soup, &Repairs::ALL).expect("repair");
+    assert_eq!(log.creased, vec![(7, 4)], "{log}");
+    assert!(log.fans.is_empty() && log.planar.is_empty());
+    assert!(log.to_string().contains("bent by more than 90°"), "{log}");
+    // The diagonal 0–2, computed here in binary64 from the coordinates.
+    let p: Vec<[f64; 3]> = bent
+        .iter()
+        .map(|c| c.map(|x| x.parse::<f64>().unwrap()))
+        .collect();
+    let n = |a: usize, b: usize, c: usize| {
+        let (u, v) = (
+            [0, 1, 2].map(|k| p[b][k] - p[a][k]),
+            [0, 1, 2].map(|k| p[c][k] - p[a][k]),
+        );
+        [
+            u[1] * v[2] - u[2] * v[1],
+            u[2] * v[0] - u[0] * v[2],
+            u[0] * v[1] - u[1] * v[0],
+        ]
+    };
+    let cos = |x: [f64; 3], y: [f64; 3]| {
+        let d: f64 = (0..3).map(|k| x[k] * y[k]).sum();
+        let nn = |z: [f64; 3]| (0..3).map(|k| z[k] * z[k]).sum::<f64>().sqrt();
+        d / (nn(x) * nn(y))
+    };
+    let (c02, c13) = (cos(n(0, 1, 2), n(0, 2, 3)), cos(n(1, 2, 3), n(1, 3, 0)));
+    assert!(c02 < 0.0 && c13 < 0.0 && c02 > c13, "{c02} {c13}");
+    let faces = faces_of(&fixed);
+    assert!(
+        faces.iter().all(|f| f.contains(&0) && f.contains(&2)),
+        "{faces:?}"
+    );
+    // Control: a bow-tie, whose splits both put opposite normals on the diagonal.
+    let bowtie = [
+        ["0", "0", "0"],
+        ["2", "0", "0"],
+        ["1", "1", "0"],
+        ["1", "-1", "0"],
+    ];
+    let soup = off::read_polygons(&off_of(&bowtie, &[vec![0, 1, 2, 3]])).expect("read");
+    let err = repair(soup, &Repairs::ALL).expect_err("overlapping triangles");
+    assert!(matches!(err, ReadError::CannotRepair { .. }), "{err}");
+}
