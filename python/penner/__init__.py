@@ -293,7 +293,9 @@ class UniformizeResult:
             ``i`` (hyperbolic lengths for ``hyperbolic``; chords of ``uv`` for the sphere).
         uv: (m, 3, 2) a planar layout per corner (a fundamental domain cut along the
             edges outside a dual spanning tree; NaN for faces not reached); for the sphere
-            the inscribed positions (n, 3) on the unit sphere; None for ``hyperbolic``.
+            the inscribed positions (n, 3) on the unit sphere; None for ``hyperbolic``:
+            the hyperbolic target returns the metric (``u``, ``F_out``, ``l_out``), and
+            no layout of it in the hyperbolic plane is computed.
         layout, F_layout: the sphere's planar disk (the surface punctured at ``pole``):
             (k, 3, 2) per corner of its faces ``F_layout`` (k, 3).
         certified, radius, distance, residual: the certificate (``residual`` bounds
@@ -368,7 +370,9 @@ def uniformize(
       inscribed in the unit sphere; ``uv`` holds its vertices (n, 3), ``layout`` the
       planar disk of the surface punctured at ``pole`` (default: chosen).
     * ``hyperbolic=True`` (B38, B39): the lengths read as hyperbolic lengths, ``targets``
-      default ``2π``; the certificate is about the binary64 lengths.
+      default ``2π``; the certificate is about the binary64 lengths. The result is the
+      hyperbolic metric (``u``, ``F_out``, ``l_out``); ``uv`` is None, as no layout in
+      the hyperbolic plane is computed.
 
     The solve runs in binary64, is refined at ``precision`` (``"f64"``, ``"dd"`` or MPFR
     bits 128..4096) and certified in MPFR interval arithmetic, for the input's exact

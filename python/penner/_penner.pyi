@@ -59,7 +59,9 @@ def uniformize(
     sphere: bool = False,
     hyperbolic: bool = False,
     pole: Optional[int] = None,
-) -> Dict[str, Any]: ...
+) -> Dict[str, Any]:
+    """The fields of ``penner.UniformizeResult``; ``"uv"`` is None for ``hyperbolic``
+    (the hyperbolic metric is returned, no layout in the hyperbolic plane is computed)."""
 def intrinsic_delaunay(
     surface: Surface, flips: str = "euclidean", precision: str = "f64", replay: bool = True
 ) -> Tuple[npt.NDArray[np.int64], npt.NDArray[np.float64], Dict[str, Any]]: ...
