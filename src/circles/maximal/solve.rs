@@ -13,7 +13,7 @@ use crate::mesh::Mesh;
 use crate::scalar::Real;
 use faer::linalg::solvers::Solve;
 use faer::sparse::linalg::solvers::{Llt, SymbolicLlt};
-use faer::sparse::{SparseColMat, Triplet};
+use faer::sparse::{SparseColMat, SparseColMatRef, Triplet};
 use faer::{Mat, Side};
 
 /// Why the radii were not computed.
@@ -63,6 +63,56 @@ fn hessian(mesh: &Mesh, t: &[f64], interior: &[bool], index: &[usize]) -> Sparse
     SparseColMat::try_new_from_triplets(n, n, &t).expect("indices in range by construction")
 }
 
+/// The assembly of `H` after its first: the sparsity pattern (fixed, since the mesh and the
+/// interior are) and, for each entry of [`angle_jacobian_triplets`] in its order, its slot
+/// in the column-major values (`None` above the diagonal), so each later `H` is one pass
+/// over the faces with no sort; and the symbolic factorization of that pattern.
+struct Assembly {
+    pattern: SparseColMat<usize, f64>,
+    slots: Vec<Option<usize>>,
+    symbolic: SymbolicLlt<usize>,
+}
+
+impl Assembly {
+    /// From the first `H` (assembled by [`hessian`]) and the triplets' order.
+    fn new(mesh: &Mesh, t: &[f64], interior: &[bool], index: &[usize]) -> Option<Self> {
+        let pattern = hessian(mesh, t, interior, index);
+        let symbolic = SymbolicLlt::try_new(pattern.symbolic(), Side::Lower).ok()?;
+        let (col_ptr, row_idx) = (pattern.symbolic().col_ptr(), pattern.symbolic().row_idx());
+        let slots = angle_jacobian_triplets(mesh, t, interior)
+            .into_iter()
+            .map(|(i, j, _)| {
+                let (a, b) = (index[i], index[j]);
+                if a < b {
+                    return Some(None);
+                }
+                let rows = &row_idx[col_ptr[b]..col_ptr[b + 1]];
+                rows.binary_search(&a).ok().map(|k| Some(col_ptr[b] + k))
+            })
+            .collect::<Option<Vec<_>>>()?;
+        Some(Assembly {
+            pattern,
+            slots,
+            symbolic,
+        })
+    }
+
+    /// The values of `H` at radii `t` in the pattern's column-major order.
+    fn values(&self, mesh: &Mesh, t: &[f64], interior: &[bool]) -> Option<Vec<f64>> {
+        let triplets = angle_jacobian_triplets(mesh, t, interior);
+        if triplets.len() != self.slots.len() {
+            return None;
+        }
+        let mut values = vec![0.0; self.pattern.symbolic().row_idx().len()];
+        for ((_, _, v), slot) in triplets.into_iter().zip(&self.slots) {
+            if let Some(k) = *slot {
+                values[k] -= v;
+            }
+        }
+        Some(values)
+    }
+}
+
 /// A sparse Cholesky factor of `H` on the interior vertices.
 pub struct HessianFactor {
     llt: Llt<usize, f64>,
@@ -77,21 +127,24 @@ impl HessianFactor {
     }
 }
 
-/// Factor `H` at `u` (numerically; `None` when not positive definite).
+/// Factor `H` at `u` (numerically; `None` when not positive definite). The first call
+/// assembles `H` from sorted triplets and keeps its pattern ([`Assembly`]); later calls fill
+/// the pattern's values in one pass.
 fn factor(
     mesh: &Mesh,
     u: &[f64],
     interior: &[bool],
     index: &[usize],
-    symbolic: &mut Option<SymbolicLlt<usize>>,
+    assembly: &mut Option<Assembly>,
 ) -> Option<HessianFactor> {
     let t = radii_from_u(u, interior);
-    let h = hessian(mesh, &t, interior, index);
-    if symbolic.is_none() {
-        *symbolic = Some(SymbolicLlt::try_new(h.symbolic(), Side::Lower).ok()?);
+    if assembly.is_none() {
+        *assembly = Some(Assembly::new(mesh, &t, interior, index)?);
     }
-    let s = symbolic.clone()?;
-    let llt = Llt::try_new_with_symbolic(s, h.as_ref(), Side::Lower).ok()?;
+    let a = assembly.as_ref()?;
+    let values = a.values(mesh, &t, interior)?;
+    let h = SparseColMatRef::new(a.pattern.symbolic(), &values);
+    let llt = Llt::try_new_with_symbolic(a.symbolic.clone(), h, Side::Lower).ok()?;
     Some(HessianFactor { llt })
 }
 
@@ -161,11 +214,11 @@ pub fn newton_f64(
         .zip(interior)
         .map(|(&x, &i)| if i { x } else { 0.0 })
         .collect();
-    let mut symbolic = None;
+    let mut assembly = None;
     let mut g = residual(mesh, &u, interior);
     for it in 0..=max_iter {
         let res = max_abs(&g);
-        let f = factor(mesh, &u, interior, &index, &mut symbolic)
+        let f = factor(mesh, &u, interior, &index, &mut assembly)
             .ok_or(MaximalSolveError::Singular(it))?;
         if res <= tol {
             return Ok(F64Solution {
@@ -266,4 +319,64 @@ pub fn refine_from<T: Real>(
         iterations: max_iter,
         residual: res,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{hessian, interior_index, Assembly};
+    use crate::circles::maximal::hyperbolic::angle_jacobian_triplets;
+    use crate::mesh::builders::random_planar;
+
+    /// The pattern-filled `H` of [`Assembly`] equals the one assembled from sorted triplets
+    /// entry by entry, up to the reordering of each entry's sum (B41: `k` terms summed in two
+    /// orders differ by at most `2(k − 1)·u·Σ|terms| ≤ 2k·u·Σ|terms|`, `u = 2⁻⁵³`); the control: radii moved
+    /// at one vertex change its entries far beyond that bound.
+    #[test]
+    fn pattern_filled_hessian_equals_the_sorted_assembly() {
+        let mesh = random_planar(300, 3).unwrap().mesh;
+        let interior: Vec<bool> = mesh
+            .vertices()
+            .map(|v| !mesh.is_boundary_vertex(v))
+            .collect();
+        let index = interior_index(&interior);
+        let t: Vec<f64> = (0..mesh.n_vertices())
+            .map(|v| {
+                if interior[v] {
+                    0.2 + 0.6 * ((v * 37 % 101) as f64 / 101.0)
+                } else {
+                    1.0
+                }
+            })
+            .collect();
+        let a = Assembly::new(&mesh, &t, &interior, &index).expect("assembly");
+        // Σ|terms| and the number of terms per slot, for the bound.
+        let mut abs = vec![0.0; a.pattern.symbolic().row_idx().len()];
+        let mut count = vec![0usize; abs.len()];
+        for ((_, _, v), slot) in angle_jacobian_triplets(&mesh, &t, &interior)
+            .iter()
+            .zip(&a.slots)
+        {
+            if let Some(k) = *slot {
+                abs[k] += v.abs();
+                count[k] += 1;
+            }
+        }
+        let bound = |k: usize| 2.0 * count[k] as f64 * f64::EPSILON / 2.0 * abs[k];
+        let values = a.values(&mesh, &t, &interior).expect("values");
+        let sorted = hessian(&mesh, &t, &interior, &index);
+        assert_eq!(sorted.symbolic().row_idx(), a.pattern.symbolic().row_idx());
+        for (k, (x, y)) in values.iter().zip(sorted.val()).enumerate() {
+            assert!((x - y).abs() <= bound(k), "slot {k}: {x} vs {y}");
+        }
+        // Control: other radii give other values, far outside the bound.
+        let mut moved = t.clone();
+        let v = (0..mesh.n_vertices()).find(|&v| interior[v]).unwrap();
+        moved[v] *= 0.5;
+        let other = a.values(&mesh, &moved, &interior).expect("values");
+        assert!(other
+            .iter()
+            .zip(sorted.val())
+            .enumerate()
+            .any(|(k, (x, y))| (x - y).abs() > 1e6 * bound(k).max(f64::MIN_POSITIVE)));
+    }
 }
