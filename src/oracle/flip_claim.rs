@@ -34,7 +34,7 @@
 //! `squared_lengths` is compared on squared lengths, with `epsilon` bounding the squared
 //! difference.
 
-use super::answer::{Answer, ClaimVerdict};
+use super::answer::{decided_answer, Answer, ClaimVerdict};
 use super::claim::Claim;
 use super::flip_replay::{compare, edge_name, replay, Compared, Ours, MAX_RELABELINGS};
 use super::relabel::{first_extra_edge, isomorphisms};
@@ -75,27 +75,6 @@ fn propose(surface: &Surface, ptolemy: bool, bits: u32) -> Vec<Edge> {
     flip_to_delaunay(&mut mesh, &mut l, kind, &opts)
         .map(|r| r.sequence)
         .unwrap_or_default()
-}
-
-fn answer(
-    claim: &Claim,
-    verdict: ClaimVerdict,
-    bits: u32,
-    max_discrepancy: Option<f64>,
-    witnesses: Vec<Witness>,
-) -> Answer {
-    Answer {
-        id: claim.id.clone(),
-        kind: claim.assertion.kind(),
-        verdict,
-        certified: verdict != ClaimVerdict::Undecided,
-        precision_bits: bits,
-        max_discrepancy,
-        counterexample: (verdict == ClaimVerdict::Refuted)
-            .then(|| witnesses.first().cloned())
-            .flatten(),
-        witnesses,
-    }
 }
 
 fn tie_witnesses(ours: &Ours, reason: &str) -> Vec<Witness> {
@@ -174,7 +153,7 @@ fn at_ties(
             (ClaimVerdict::Undecided, max_discrepancy, witnesses)
         }
     };
-    Ok(answer(claim, verdict, bits, d, witnesses))
+    Ok(decided_answer(claim, verdict, bits, d, witnesses))
 }
 
 /// Answer a `delaunay_flip` claim (module documentation).
@@ -202,7 +181,7 @@ pub fn delaunay_flip(claim: &Claim, ptolemy: bool, result: &Surface, eps: &Ratio
         {
             // Flips keep the counts: no Delaunay triangulation has the result's (T02).
             let w = combinatorial_witness(result, &ours);
-            return answer(claim, ClaimVerdict::Refuted, bits, None, vec![w]);
+            return decided_answer(claim, ClaimVerdict::Refuted, bits, None, vec![w]);
         }
         if !ours.ties.is_empty() {
             match at_ties(claim, result, &ours, ptolemy, eps, bits) {
@@ -217,14 +196,14 @@ pub fn delaunay_flip(claim: &Claim, ptolemy: bool, result: &Surface, eps: &Ratio
         let rels = isomorphisms(&result.mesh, &ours.mesh, MAX_RELABELINGS);
         if rels.is_empty() {
             let w = combinatorial_witness(result, &ours);
-            return answer(claim, ClaimVerdict::Refuted, bits, None, vec![w]);
+            return decided_answer(claim, ClaimVerdict::Refuted, bits, None, vec![w]);
         }
         let compared: Vec<Compared> = rels
             .iter()
             .map(|r| compare(result, &ours, r, eps, bits))
             .collect();
         if let Some(c) = compared.iter().find(|c| c.verdict == ClaimVerdict::Holds) {
-            return answer(
+            return decided_answer(
                 claim,
                 ClaimVerdict::Holds,
                 bits,
@@ -238,7 +217,7 @@ pub fn delaunay_flip(claim: &Claim, ptolemy: bool, result: &Surface, eps: &Ratio
         if !any_open {
             let first = compared.into_iter().next();
             let (d, w) = first.map_or((None, Vec::new()), |c| (c.max_discrepancy, c.witnesses));
-            return answer(claim, ClaimVerdict::Refuted, bits, d, w);
+            return decided_answer(claim, ClaimVerdict::Refuted, bits, d, w);
         }
         let open = compared
             .into_iter()
@@ -247,5 +226,5 @@ pub fn delaunay_flip(claim: &Claim, ptolemy: bool, result: &Surface, eps: &Ratio
         bits = bits.saturating_mul(2);
     }
     let (verdict, d, w) = last.unwrap_or((ClaimVerdict::Undecided, None, Vec::new()));
-    answer(claim, verdict, used, d, w)
+    decided_answer(claim, verdict, used, d, w)
 }
