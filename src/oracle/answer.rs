@@ -111,14 +111,20 @@ pub(crate) fn summarize(
         .copied()
         .filter(|x| !x.is_nan())
         .reduce(f64::max);
-    let (verdict, witnesses) = if !refuted.is_empty() {
+    let (verdict, witnesses) = tally(refuted, open);
+    decided_answer(claim, verdict, b.bits, max_discrepancy, witnesses)
+}
+
+/// The verdict of a re-check from its witnesses: `refuted` when one is proven, else
+/// `undecided` when one is left open, else `holds`; with the witnesses that decide it.
+pub(crate) fn tally(refuted: Vec<Witness>, open: Vec<Witness>) -> (ClaimVerdict, Vec<Witness>) {
+    if !refuted.is_empty() {
         (ClaimVerdict::Refuted, refuted)
     } else if !open.is_empty() {
         (ClaimVerdict::Undecided, open)
     } else {
         (ClaimVerdict::Holds, Vec::new())
-    };
-    decided_answer(claim, verdict, b.bits, max_discrepancy, witnesses)
+    }
 }
 
 /// The answer to `claim` with `verdict` at `bits`: certified unless undecided, and the

@@ -290,13 +290,7 @@ pub(super) fn compare(
             }),
         }
     }
-    let (verdict, witnesses) = if !outside.is_empty() {
-        (ClaimVerdict::Refuted, outside)
-    } else if !open.is_empty() {
-        (ClaimVerdict::Undecided, open)
-    } else {
-        (ClaimVerdict::Holds, Vec::new())
-    };
+    let (verdict, witnesses) = super::answer::tally(outside, open);
     Compared {
         verdict,
         witnesses,
