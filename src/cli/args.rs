@@ -177,7 +177,8 @@ pub struct UniformizeExtra {
     /// residual and existence certified on the final triangulation (B39, B87, B89).
     #[arg(long, conflicts_with_all = ["flat", "sphere"])]
     pub hyperbolic: bool,
-    /// The pole v∞ of `--sphere` (default: the vertex of largest degree that works).
+    /// The pole v∞ of `--sphere` (default: a graph centre, then the vertices of largest
+    /// degree, the first that works).
     #[arg(long, value_name = "V", requires = "sphere")]
     pub pole: Option<u32>,
     /// Write the inscribed polyhedron of `--sphere` as OBJ to this new file.

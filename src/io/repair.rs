@@ -15,7 +15,11 @@
 //!   modelled eyes and lips) is split along the diagonal whose two normals make the
 //!   smallest angle, provided they are not opposite (decided exactly: two triangles on one
 //!   edge cannot overlap otherwise), and reported apart. Every triangle is
-//!   non-degenerate (exact cross product ≠ 0). Angles only rank valid candidates (binary64);
+//!   non-degenerate (exact cross product ≠ 0), and no diagonal joins two vertices already
+//!   joined by a side of any face or by a diagonal chosen before (a second edge between
+//!   them would make an edge of more than two faces: two quadrilaterals sharing two
+//!   opposite corners, as in modelled eyelids, must not both be split between those two).
+//!   Angles only rank valid candidates (binary64);
 //!   validity is decided exactly. Polygons with more than [`DP_CORNERS`] corners get the fan.
 //! - **Orient.** A breadth-first search over the dual graph (faces sharing an edge with
 //!   exactly one other face) assigns each face a side so that every shared edge is used in
@@ -256,6 +260,14 @@ fn triangulate(soup: &mut PolygonSoup, log: &mut RepairLog) -> Result<(), ReadEr
     if soup.corners.len() == 3 * soup.n_faces() {
         return Ok(());
     }
+    // Undirected pairs of vertices joined by a face's side, then by the diagonals chosen.
+    let key = |a: u32, b: u32| (a.min(b), a.max(b));
+    let mut joined: std::collections::HashSet<(u32, u32)> = (0..soup.n_faces())
+        .flat_map(|f| {
+            let c = soup.face(f);
+            (0..c.len()).map(move |s| key(c[s], c[(s + 1) % c.len()]))
+        })
+        .collect();
     let mut out = PolygonSoup::default();
     for f in 0..soup.n_faces() {
         let (corners, line) = (soup.face(f), soup.face_lines[f]);
@@ -267,13 +279,23 @@ fn triangulate(soup: &mut PolygonSoup, log: &mut RepairLog) -> Result<(), ReadEr
             .iter()
             .map(|&v| exact(&soup.positions[v as usize]))
             .collect();
-        let (triangles, kind) = split_polygon(&pts).ok_or_else(|| ReadError::CannotRepair {
+        let taken = |i: usize, j: usize| joined.contains(&key(corners[i], corners[j]));
+        let (triangles, kind) = split_polygon(&pts, &taken).ok_or_else(|| ReadError::CannotRepair {
             element: format!("line {line}"),
             message: format!(
-                "the face with {} corners has no triangulation without a degenerate or folded triangle",
+                "the face with {} corners has no triangulation without a degenerate or folded triangle or a diagonal that is already an edge",
                 corners.len()
             ),
         })?;
+        let k = corners.len();
+        for t in &triangles {
+            for s in 0..3 {
+                let (i, j) = (t[s], t[(s + 1) % 3]);
+                if (i + 1) % k != j && (j + 1) % k != i {
+                    joined.insert(key(corners[i], corners[j]));
+                }
+            }
+        }
         match kind {
             Split::Planar => log.planar.push((line, corners.len())),
             Split::Fan => log.fans.push((line, corners.len())),
@@ -301,8 +323,12 @@ pub(crate) enum Split {
     Creased,
 }
 
-/// Triangles (corner indices) splitting the polygon `pts`, and how.
-pub(crate) fn split_polygon(pts: &[P3]) -> Option<(Vec<[usize; 3]>, Split)> {
+/// Triangles (corner indices) splitting the polygon `pts`, and how, with no diagonal `ij`
+/// for which `taken(i, j)` (its ends already joined by an edge of the surface).
+pub(crate) fn split_polygon(
+    pts: &[P3],
+    taken: &dyn Fn(usize, usize) -> bool,
+) -> Option<(Vec<[usize; 3]>, Split)> {
     let k = pts.len();
     // Newell's normal: twice the vector area, exact.
     let mut n: P3 = [Rational::new(), Rational::new(), Rational::new()];
@@ -314,14 +340,14 @@ pub(crate) fn split_polygon(pts: &[P3]) -> Option<(Vec<[usize; 3]>, Split)> {
     }
     let planar = !is_zero(&n) && (1..k).all(|i| dot(&sub(&pts[i], &pts[0]), &n) == 0);
     if planar && k <= DP_CORNERS {
-        if let Some(t) = planar_max_min_angle(pts, &n) {
+        if let Some(t) = planar_max_min_angle(pts, &n, taken) {
             return Some((t, Split::Planar));
         }
     }
     let kind = if planar { Split::Planar } else { Split::Fan };
-    best_fan(pts).map(|t| (t, kind)).or_else(|| {
+    best_fan(pts, taken).map(|t| (t, kind)).or_else(|| {
         (k == 4)
-            .then(|| least_bent_diagonal(pts))
+            .then(|| least_bent_diagonal(pts, taken))
             .flatten()
             .map(|t| (t, Split::Creased))
     })
@@ -331,9 +357,15 @@ pub(crate) fn split_polygon(pts: &[P3]) -> Option<(Vec<[usize; 3]>, Split)> {
 /// smallest angle (ranked in binary64), among the splits with non-degenerate triangles whose
 /// normals are not opposite (exact: `n₁ × n₂ ≠ 0` or `n₁·n₂ > 0`), so the two triangles on
 /// the diagonal do not overlap; `None` when neither diagonal qualifies.
-fn least_bent_diagonal(pts: &[P3]) -> Option<Vec<[usize; 3]>> {
+fn least_bent_diagonal(
+    pts: &[P3],
+    taken: &dyn Fn(usize, usize) -> bool,
+) -> Option<Vec<[usize; 3]>> {
     let mut best: Option<(f64, Vec<[usize; 3]>)> = None;
     for apex in 0..2 {
+        if taken(apex, apex + 2) {
+            continue;
+        }
         let tris = vec![
             [apex, apex + 1, (apex + 2) % 4],
             [apex, (apex + 2) % 4, (apex + 3) % 4],
@@ -430,9 +462,13 @@ fn is_diagonal(q: &[[Rational; 2]], i: usize, j: usize) -> bool {
     })
 }
 
-/// The triangulation of a planar polygon (normal `n`) by diagonals maximising the smallest
-/// angle, or `None` when the polygon is not simple in its plane.
-fn planar_max_min_angle(pts: &[P3], n: &P3) -> Option<Vec<[usize; 3]>> {
+/// The triangulation of a planar polygon (normal `n`) by diagonals (none `taken`)
+/// maximising the smallest angle, or `None` when the polygon is not simple in its plane.
+fn planar_max_min_angle(
+    pts: &[P3],
+    n: &P3,
+    taken: &dyn Fn(usize, usize) -> bool,
+) -> Option<Vec<[usize; 3]>> {
     use std::cmp::Ordering::Greater;
     let k = pts.len();
     let q = project(pts, n);
@@ -441,7 +477,9 @@ fn planar_max_min_angle(pts: &[P3], n: &P3) -> Option<Vec<[usize; 3]>> {
             (0..k)
                 .map(|j| {
                     let side = j == i + 1 || (i == 0 && j == k - 1);
-                    j > i && (side || (is_diagonal(&q, i, j) && is_diagonal(&q, j, i)))
+                    j > i
+                        && (side
+                            || (!taken(i, j) && is_diagonal(&q, i, j) && is_diagonal(&q, j, i)))
                 })
                 .collect()
         })
@@ -493,12 +531,15 @@ fn planar_max_min_angle(pts: &[P3], n: &P3) -> Option<Vec<[usize; 3]>> {
     Some(out)
 }
 
-/// The fan with the largest smallest angle whose triangles are non-degenerate and whose
+/// The fan with the largest smallest angle, with no diagonal `taken`, whose triangles are non-degenerate and whose
 /// normals pairwise have a positive dot product.
-fn best_fan(pts: &[P3]) -> Option<Vec<[usize; 3]>> {
+fn best_fan(pts: &[P3], taken: &dyn Fn(usize, usize) -> bool) -> Option<Vec<[usize; 3]>> {
     let k = pts.len();
     let mut best: Option<(f64, Vec<[usize; 3]>)> = None;
     for apex in 0..k {
+        if (2..k - 1).any(|t| taken(apex, (apex + t) % k)) {
+            continue;
+        }
         let tris: Vec<[usize; 3]> = (1..k - 1)
             .map(|t| [apex, (apex + t) % k, (apex + t + 1) % k])
             .collect();

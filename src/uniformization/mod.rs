@@ -58,6 +58,8 @@ pub mod layout;
 pub mod newton;
 pub(crate) mod newton_driver;
 pub mod pipeline;
+#[path = "sphere/pole.rs"]
+pub mod pole;
 pub mod refine;
 pub mod scaling;
 #[path = "sphere/sphere.rs"]

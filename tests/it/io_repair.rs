@@ -336,3 +336,46 @@ fn a_quad_bent_past_ninety_degrees_is_split_along_the_least_bent_diagonal() {
     let err = repair(soup, &Repairs::ALL).expect_err("overlapping triangles");
     assert!(matches!(err, ReadError::CannotRepair { .. }), "{err}");
 }
+
+/// Two quadrilaterals sharing two sides and so two opposite corners (Suzanne's eyelid,
+/// lines 1170–1171 of the OBJ in github.com/alecjacobson/common-3d-test-models: vertices
+/// 71, 197, 139, 138 and 71, 138, 139, 198) are split so that no edge joins the same two
+/// vertices twice: each alone is split along the shared corners 0–2 (the control: the two
+/// choices made independently give the edge 0→2 twice in one direction, a non-manifold
+/// edge), together the second takes its other diagonal and every directed edge is used once.
+#[test]
+fn two_quads_sharing_opposite_corners_are_not_both_split_between_them() {
+    let v = [
+        ["-2.494062", "1.064186", "4.900767"],
+        ["-2.455000", "1.126686", "4.885142"],
+        ["-2.494062", "1.111061", "4.846080"],
+        ["-2.494062", "1.056373", "4.853892"],
+        ["-2.533125", "1.126686", "4.885142"],
+    ];
+    let (a, b) = (vec![0, 1, 2, 3], vec![0, 3, 2, 4]);
+    let split = |faces: &[Vec<u32>]| {
+        let soup = off::read_polygons(&off_of(&v, faces)).expect("read");
+        // Triangulation only: vertex numbers kept (no unreferenced vertex dropped).
+        let only = Repairs {
+            triangulate: true,
+            ..Repairs::default()
+        };
+        faces_of(&repair(soup, &only).expect("repair").0)
+    };
+    let joins_0_2 = |f: &Vec<u32>| f.contains(&0) && f.contains(&2);
+    for q in [&a, &b] {
+        let alone = split(std::slice::from_ref(q));
+        assert!(alone.iter().all(joins_0_2), "control: {alone:?}");
+    }
+    let both = split(&[a, b]);
+    assert_eq!(both.len(), 4);
+    let mut directed: Vec<(u32, u32)> = both
+        .iter()
+        .flat_map(|f| (0..3).map(move |s| (f[s], f[(s + 1) % 3])))
+        .collect();
+    directed.sort_unstable();
+    let n = directed.len();
+    directed.dedup();
+    assert_eq!(directed.len(), n, "{both:?}");
+    assert_eq!(both.iter().filter(|f| joins_0_2(f)).count(), 2, "{both:?}");
+}

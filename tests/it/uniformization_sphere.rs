@@ -135,11 +135,11 @@ fn t24_sphere_layout_is_certified_planar_delaunay_and_convex() {
     folded[inner[0]] = sol.planar[inner[inner.len() - 1]];
     let bad = planar_delaunay(disk, &folded);
     assert!(!bad.not_ccw.is_empty(), "{bad:?}");
-    // Negative control 2: a boundary vertex pulled to the centroid of the disk makes the
-    // boundary reflex there.
+    // Negative control 2: a boundary vertex moved to the centroid of the disk (the origin,
+    // inside the convex boundary polygon) makes the boundary reflex there.
     let a = (0..disk.n_vertices()).find(|&v| bv[v]).unwrap();
     let mut dented = sol.planar.clone();
-    dented[a] = [0.5 * dented[a][0], 0.5 * dented[a][1]];
+    dented[a] = [0.0, 0.0];
     let bad = planar_delaunay(disk, &dented);
     assert!(bad.not_convex.contains(&Vertex(a as u32)), "{bad:?}");
 }
@@ -434,4 +434,52 @@ fn b74_check_pole_matches_the_whole_mesh_definition() {
         accepted > 100 && refused > 10,
         "{accepted} accepted, {refused} refused"
     );
+}
+
+/// A capsule: a tube of `n` vertices around and `m` rings along, closed by one apex at
+/// each end (a closed genus-0 surface whose graph is long and thin, like a limb).
+fn capsule(n: u32, m: u32) -> penner::mesh::Mesh {
+    let ring = |i: u32, j: u32| 1 + i * n + j % n;
+    let (south, north) = (0, 1 + m * n);
+    let mut faces = Vec::new();
+    for j in 0..n {
+        faces.push([south, ring(0, j + 1), ring(0, j)]);
+        faces.push([north, ring(m - 1, j), ring(m - 1, j + 1)]);
+        for i in 0..m - 1 {
+            faces.push([ring(i, j), ring(i, j + 1), ring(i + 1, j + 1)]);
+            faces.push([ring(i, j), ring(i + 1, j + 1), ring(i + 1, j)]);
+        }
+    }
+    penner::mesh::Mesh::from_faces(north + 1, &faces).unwrap()
+}
+
+/// B74's default pole order starts at a graph centre: on capsules, icospheres and flipped
+/// spheres, the eccentricity of [`graph_centre`] is within one hop of the graph radius
+/// found by brute force (a breadth-first search from every vertex), and it is the first of
+/// [`pole_candidates`]. Control: the capsule's highest-degree vertex (an apex, the default
+/// before) has eccentricity near the diameter, so the bound separates the two choices.
+#[test]
+fn b74_the_first_default_pole_is_a_graph_centre() {
+    use penner::mesh::{builders, Mesh, Vertex};
+    use penner::uniformization::pole::{graph_centre, hop_distances, pole_candidates};
+    let ecc = |m: &Mesh, v: Vertex| *hop_distances(m, v).iter().max().unwrap();
+    let mut meshes = vec![
+        capsule(8, 30),
+        capsule(5, 11),
+        capsule(8, 2),
+        icosphere(2).mesh(),
+    ];
+    for seed in 0..6 {
+        meshes.push(builders::random_flips(&icosphere(1).mesh(), 60, seed));
+    }
+    for m in &meshes {
+        let radius = m.vertices().map(|v| ecc(m, v)).min().unwrap();
+        let c = graph_centre(m).unwrap();
+        assert!(ecc(m, c) <= radius + 1, "{} vs radius {radius}", ecc(m, c));
+        assert_eq!(pole_candidates(m)[0], c);
+    }
+    let m = capsule(8, 30);
+    let apex = m.vertices().max_by_key(|&v| m.degree(v)).unwrap();
+    let radius = m.vertices().map(|v| ecc(&m, v)).min().unwrap();
+    assert!(ecc(&m, apex) > radius + 10, "control: {}", ecc(&m, apex));
 }

@@ -2,8 +2,8 @@
 //! is discretely conformally equivalent (with Ptolemy flips) to a convex polyhedron
 //! inscribed in the unit sphere. proof: B74
 //!
-//! Method (B74): choose a pole `v∞` (given, or [`pole_candidates`]: the vertices of largest
-//! degree with a simple link, tried in turn). The inversion centred at `v∞` is a
+//! Method (B74): choose a pole `v∞` (given, or [`pole_candidates`]: a graph centre, then the
+//! vertices of largest degree with a simple link, tried in turn). The inversion centred at `v∞` is a
 //! Möbius map; it turns the inscribed polyhedron into a planar Delaunay triangulation of
 //! the disk `D = M − star(v∞)` whose lengths are `e^{(w_i+w_j)/2}·ℓ_ij` with
 //! `w_a = −2 log ℓ_{a v∞}` on the link of `v∞`. So:
@@ -34,6 +34,7 @@ use super::dirichlet::{solve_dirichlet, DirichletError, DirichletSolution};
 use super::error::UniformizeError;
 use super::layout::{unfold, Layout};
 use super::newton::{validate_input, Stop, UniformizeOptions};
+pub use super::pole::{check_pole, pole_candidates, POLE_ATTEMPTS};
 use super::targets::Targets;
 use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
 use crate::algorithms::flips::flip_ptolemy;
@@ -173,55 +174,6 @@ pub struct SphereUniformization {
     /// `|centroid|` of `positions` (after the normalisation, when asked for).
     pub centroid_norm: f64,
 }
-
-/// Whether the star of `v` in `mesh` is a disk with a simple link: no loop at `v`, every
-/// face at `v` has `v` once, the neighbours of `v` are distinct, and some face lies
-/// outside the star. `Err(reason)` otherwise.
-pub fn check_pole(mesh: &Mesh, v: Vertex) -> Result<(), String> {
-    if v.idx() >= mesh.n_vertices() {
-        return Err(format!(
-            "out of range (the surface has {} vertices)",
-            mesh.n_vertices()
-        ));
-    }
-    // O(deg v): the faces at `v` are those of its outgoing half-edges (every corner at `v`
-    // starts one), so no pass over the whole mesh per candidate pole.
-    let mut seen = std::collections::HashSet::new();
-    let mut star: Vec<usize> = Vec::new();
-    for h in mesh.outgoing(v) {
-        let w = mesh.tip(h);
-        if w == v {
-            return Err(format!("edge e{} is a loop at the pole", h.edge().0));
-        }
-        if !seen.insert(w) {
-            return Err(format!("two edges join the pole to v{}", w.0));
-        }
-        star.extend(mesh.face(h).map(crate::mesh::Face::idx));
-    }
-    star.sort_unstable();
-    star.dedup();
-    let star = star.len();
-    if star == mesh.n_faces() {
-        return Err("every face contains the pole: nothing is left to lay out".into());
-    }
-    Ok(())
-}
-
-/// Default poles, tried in this order until the disk problem converges: the first
-/// [`POLE_ATTEMPTS`] vertices of `mesh` that pass [`check_pole`], by decreasing degree and
-/// then increasing index.
-pub fn pole_candidates(mesh: &Mesh) -> Vec<Vertex> {
-    let mut v: Vec<Vertex> = mesh
-        .vertices()
-        .filter(|&v| check_pole(mesh, v).is_ok())
-        .collect();
-    v.sort_by_key(|&w| (std::cmp::Reverse(mesh.degree(w)), w.0));
-    v.truncate(POLE_ATTEMPTS);
-    v
-}
-
-/// How many default poles [`uniformize_sphere`] tries.
-pub const POLE_ATTEMPTS: usize = 4;
 
 /// A link vertex counts as reflex when its disk angle exceeds `π` by more than this (in
 /// radians, `f64`): far above the solver's residual `10⁻¹²`, so that a rounding error at a
