@@ -22,21 +22,14 @@ pub struct SymmetricLower {
     pub entries: Vec<(usize, usize, f64)>,
 }
 
-/// The next binary64 above `x` (finite `x`).
+/// The next binary64 above `x` (`f64::next_up`: IEEE 754 nextUp; `∞` and NaN unchanged).
 pub(crate) fn up(x: f64) -> f64 {
-    if x.is_nan() || x == f64::INFINITY {
-        return x;
-    }
-    if x == 0.0 {
-        return f64::from_bits(1);
-    }
-    let b = x.to_bits();
-    f64::from_bits(if x > 0.0 { b + 1 } else { b - 1 })
+    x.next_up()
 }
 
-/// The next binary64 below `x` (finite `x`).
+/// The next binary64 below `x` (`f64::next_down`: IEEE 754 nextDown).
 pub(crate) fn down(x: f64) -> f64 {
-    -up(-x)
+    x.next_down()
 }
 
 /// A fill-reducing ordering (faer's approximate minimum degree): `perm[new] = old`.
@@ -247,4 +240,27 @@ pub fn lambda_min_lower_bound(a: &SymmetricLower, sigma: f64) -> Option<EigenLow
         sigma,
         error,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The empty matrix has no eigenvalue to bound: no conclusion (a bound would be
+    /// vacuous, and `σ` itself would be returned as one). Control: the 1×1 matrix `[2]`
+    /// at `σ = 1` gets a bound in `(0, 2]`.
+    #[test]
+    fn b70_the_empty_matrix_gets_no_bound() {
+        let empty = SymmetricLower {
+            n: 0,
+            entries: Vec::new(),
+        };
+        assert_eq!(lambda_min_lower_bound(&empty, 1.0), None);
+        let one = SymmetricLower {
+            n: 1,
+            entries: vec![(0, 0, 2.0)],
+        };
+        let b = lambda_min_lower_bound(&one, 1.0).expect("a positive pivot");
+        assert!(b.lambda_min > 0.0 && b.lambda_min <= 2.0, "{b:?}");
+    }
 }
