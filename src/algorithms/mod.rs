@@ -9,10 +9,16 @@
 //!   arithmetic (B80), to certify a rounded run's triangulation for the input;
 //!   [`replay_dag`] holds its lazily built flip lengths (B85), [`replay_len`] the length
 //!   types and their certified arithmetic, [`replay_input`] the input metrics it reads.
+//! - [`flip_replay`]: a `delaunay_flip` claim's flip sequence replayed on the lengths of
+//!   [`replay`] and its result compared under vertex-fixing relabelings (B80, B81);
+//!   [`tie_search`] searches the claim's tie flips (B82).
+//! - [`verdict`]: witnesses and the three-valued claim verdict, shared with the layers
+//!   above.
 //! - [`naive`]: an uncertified `f64` baseline, for benchmarks and for showing where raw
 //!   floating-point decisions go wrong.
 
 pub mod delaunay_pipeline;
+pub mod flip_replay;
 pub mod flip_scaled;
 pub mod flip_to_delaunay;
 pub mod flips;
@@ -21,3 +27,5 @@ pub mod replay;
 pub mod replay_dag;
 pub mod replay_input;
 pub mod replay_len;
+pub mod tie_search;
+pub mod verdict;

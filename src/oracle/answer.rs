@@ -12,27 +12,8 @@ use serde_json::{json, Value};
 /// First MPFR precision of the ladder used for claims.
 pub(crate) const START_BITS: u32 = 128;
 
-/// The verdict on a claim.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ClaimVerdict {
-    /// The claim holds.
-    Holds,
-    /// The claim is false; a counterexample is given.
-    Refuted,
-    /// Neither could be established up to the precision cap.
-    Undecided,
-}
-
-impl ClaimVerdict {
-    /// The protocol word: `holds`, `refuted`, `undecided`.
-    pub fn word(self) -> &'static str {
-        match self {
-            ClaimVerdict::Holds => "holds",
-            ClaimVerdict::Refuted => "refuted",
-            ClaimVerdict::Undecided => "undecided",
-        }
-    }
-}
+pub(crate) use crate::algorithms::verdict::tally;
+pub use crate::algorithms::verdict::ClaimVerdict;
 
 /// The answer to a claim.
 #[derive(Clone, Debug, PartialEq)]
@@ -113,18 +94,6 @@ pub(crate) fn summarize(
         .reduce(f64::max);
     let (verdict, witnesses) = tally(refuted, open);
     decided_answer(claim, verdict, b.bits, max_discrepancy, witnesses)
-}
-
-/// The verdict of a re-check from its witnesses: `refuted` when one is proven, else
-/// `undecided` when one is left open, else `holds`; with the witnesses that decide it.
-pub(crate) fn tally(refuted: Vec<Witness>, open: Vec<Witness>) -> (ClaimVerdict, Vec<Witness>) {
-    if !refuted.is_empty() {
-        (ClaimVerdict::Refuted, refuted)
-    } else if !open.is_empty() {
-        (ClaimVerdict::Undecided, open)
-    } else {
-        (ClaimVerdict::Holds, Vec::new())
-    }
 }
 
 /// The answer to `claim` with `verdict` at `bits`: certified unless undecided, and the

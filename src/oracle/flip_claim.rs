@@ -36,13 +36,13 @@
 
 use super::answer::{decided_answer, Answer, ClaimVerdict};
 use super::claim::Claim;
-use super::flip_replay::{compare, edge_name, replay, Compared, Ours, MAX_RELABELINGS};
 use super::relabel::{first_extra_edge, isomorphisms};
-use super::tie_search::{search, Search};
+use crate::algorithms::flip_replay::{compare, edge_name, replay, Compared, Ours, MAX_RELABELINGS};
 use crate::algorithms::flip_to_delaunay::{
     flip_to_delaunay, flip_to_delaunay_exact, FlipKind, FlipOptions,
 };
 use crate::algorithms::replay::EXACT_GUARD_BITS;
+use crate::algorithms::tie_search::{search, Search};
 use crate::io::json::edge_order;
 use crate::io::{Metric, Surface};
 use crate::mesh::Edge;

@@ -2,9 +2,9 @@
 //! claim protocol (`schema/claim-v1.schema.json`, `docs/oracle.md`).
 //!
 //! This layer sits on top of `theorems`: it runs checks and predicates and packages their
-//! answers. Two parts still decide here, the certified replay of a `delaunay_flip` claim
-//! ([`flip_replay`]) and the tie-flip search ([`tie_search`]); ARCHITECTURE.md lists them
-//! under its debts.
+//! answers. It decides nothing itself: a `delaunay_flip` claim is replayed by
+//! [`crate::algorithms::flip_replay`] and its ties searched by
+//! [`crate::algorithms::tie_search`].
 
 pub mod answer;
 pub mod assertion;
@@ -21,7 +21,8 @@ pub mod claim_parse;
 pub mod corpus;
 pub mod failure;
 pub mod flip_claim;
-pub mod flip_replay;
+/// The certified replay of a `delaunay_flip` claim, kept here under its former path.
+pub use crate::algorithms::flip_replay;
 /// The working precisions (moved to [`crate::scalar::prec`]; kept here for the paths users know).
 pub use crate::scalar::prec as precision;
 #[macro_use]
@@ -39,7 +40,8 @@ pub mod controls;
 pub use crate::mesh::relabel;
 pub mod report;
 pub mod shrink;
-pub mod tie_search;
+/// The tie-flip search of a `delaunay_flip` claim, kept here under its former path.
+pub use crate::algorithms::tie_search;
 
 pub use crate::io::{Metric, Surface};
 pub use case::MetricOps;

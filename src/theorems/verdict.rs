@@ -2,17 +2,7 @@
 
 use crate::predicates::ladder::Ladder;
 
-/// One element where a check failed (or could not decide), with the offending value.
-#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Witness {
-    /// The element, as `v3`, `e7`, `f2`, `h5`, or `surface`.
-    pub element: String,
-    /// What is wrong there, in words.
-    pub detail: String,
-    /// The offending quantity (an error, a sign, a residual), for display.
-    pub value: f64,
-}
+pub use crate::algorithms::verdict::Witness;
 
 /// The verdict of a check at one precision.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]

@@ -1,39 +1,39 @@
-//! Our side of a `delaunay_flip` claim ([`super::flip_claim`]): the proposed flip sequence
-//! replayed with certified arithmetic to a certified Delaunay triangulation (B80), and the
-//! comparison of the claimed result's lengths with it under one relabeling. Shared by
-//! [`super::flip_claim`] and the tie-flip search [`super::tie_search`] (B82).
+//! Our side of a `delaunay_flip` claim (`oracle::flip_claim` routes the claim here): the
+//! proposed flip sequence replayed with certified arithmetic to a certified Delaunay
+//! triangulation (B80, on the lengths of [`super::replay`]), and the comparison of the
+//! claimed result's lengths with it under one relabeling. Shared by the claim and the
+//! tie-flip search [`super::tie_search`] (B82).
 
-use super::answer::ClaimVerdict;
-use super::relabel::Relabeling;
-use crate::algorithms::replay::{from_q, new_length, positive, sign, tie_length, Enclosure, Len};
+use super::replay::{from_q, new_length, positive, sign, tie_length, Enclosure, Len};
+use super::verdict::{tally, ClaimVerdict, Witness};
 use crate::io::json::edge_order;
 use crate::io::{Metric, Surface};
+use crate::mesh::relabel::Relabeling;
 use crate::mesh::{Edge, Mesh};
 use crate::predicates::delaunay::QuadEdges;
 use crate::predicates::directed::valid;
 use crate::scalar::{nearest_f64, Real, Sign};
-use crate::theorems::Witness;
 use rug::Rational;
 use std::cmp::Ordering;
 
 /// At most this many relabelings are compared (symmetries fixing every vertex).
-pub(super) const MAX_RELABELINGS: usize = 64;
+pub(crate) const MAX_RELABELINGS: usize = 64;
 
 /// Our certified Delaunay triangulation.
-pub(super) struct Ours {
-    pub(super) mesh: Mesh,
-    pub(super) lens: Vec<Len>,
+pub(crate) struct Ours {
+    pub(crate) mesh: Mesh,
+    pub(crate) lens: Vec<Len>,
     /// Interior edges with `D = 0` certified.
-    pub(super) ties: Vec<Edge>,
+    pub(crate) ties: Vec<Edge>,
 }
 
 /// Why a precision did not suffice.
-pub(super) struct Open {
-    pub(super) reason: String,
-    pub(super) witnesses: Vec<Witness>,
+pub(crate) struct Open {
+    pub(crate) reason: String,
+    pub(crate) witnesses: Vec<Witness>,
 }
 
-pub(super) fn edge_name(mesh: &Mesh, e: Edge) -> String {
+pub(crate) fn edge_name(mesh: &Mesh, e: Edge) -> String {
     let h = e.halfedge();
     format!("v{}–v{}", mesh.tail(h).0, mesh.tip(h).0)
 }
@@ -52,7 +52,7 @@ fn open(reason: String, mesh: &Mesh, e: Edge) -> Open {
 
 /// Replay `sequence` on `surface` with certified arithmetic at `bits` ([`super::flip_claim`],
 /// "How it is decided").
-pub(super) fn replay(
+pub(crate) fn replay(
     surface: &Surface,
     sequence: &[Edge],
     ptolemy: bool,
@@ -115,7 +115,7 @@ pub(super) fn replay(
 }
 
 /// Certify the end of a replay: every interior edge Delaunay, ties collected.
-pub(super) fn finish(mesh: Mesh, lens: Vec<Len>, bits: u32) -> Result<Ours, Open> {
+pub(crate) fn finish(mesh: Mesh, lens: Vec<Len>, bits: u32) -> Result<Ours, Open> {
     let mut ties = Vec::new();
     let mut undecided = Vec::new();
     for e in mesh.edges() {
@@ -210,13 +210,13 @@ fn midpoint_abs(x: &Enclosure, c: &Rational, bits: u32) -> f64 {
 }
 
 /// The verdict of one relabeling: per claimed edge, in the result's edge order.
-pub(super) struct Compared {
-    pub(super) verdict: ClaimVerdict,
-    pub(super) witnesses: Vec<Witness>,
-    pub(super) max_discrepancy: Option<f64>,
+pub(crate) struct Compared {
+    pub(crate) verdict: ClaimVerdict,
+    pub(crate) witnesses: Vec<Witness>,
+    pub(crate) max_discrepancy: Option<f64>,
 }
 
-pub(super) fn compare(
+pub(crate) fn compare(
     result: &Surface,
     ours: &Ours,
     rel: &Relabeling,
@@ -290,7 +290,7 @@ pub(super) fn compare(
             }),
         }
     }
-    let (verdict, witnesses) = super::answer::tally(outside, open);
+    let (verdict, witnesses) = tally(outside, open);
     Compared {
         verdict,
         witnesses,

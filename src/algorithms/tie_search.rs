@@ -22,15 +22,14 @@
 //! complete (every reachable triangulation visited and certified, every relabeling
 //! compared); otherwise the answer is `undecided` with the reason.
 
-use super::answer::ClaimVerdict;
 use super::flip_replay::{compare, edge_name, finish, Compared, Ours, MAX_RELABELINGS};
-use super::relabel::isomorphisms;
-use crate::algorithms::replay::{tie_length, Len};
+use super::replay::{tie_length, Len};
+use super::verdict::{ClaimVerdict, Witness};
 use crate::io::json::edge_order;
 use crate::io::Surface;
+use crate::mesh::relabel::isomorphisms;
 use crate::mesh::{Edge, HalfEdge, Mesh};
 use crate::predicates::delaunay::QuadEdges;
-use crate::theorems::Witness;
 use rug::Rational;
 use std::collections::{HashMap, HashSet, VecDeque};
 
@@ -44,7 +43,7 @@ pub const MAX_TIES: usize = 16;
 pub const MAX_STATES: usize = 1 << 16;
 
 /// The outcome of the search at one precision.
-pub(super) enum Search {
+pub(crate) enum Search {
     /// A reached Delaunay triangulation matches the claim.
     Holds { max_discrepancy: Option<f64> },
     /// The search was complete and nothing matched.
@@ -306,7 +305,7 @@ impl Walk<'_> {
 
 /// Search the Delaunay triangulations reached from `ours` by tie flips for one equal to
 /// `result` with lengths within `eps` (module docs; proof: B82).
-pub(super) fn search(
+pub(crate) fn search(
     result: &Surface,
     ours: &Ours,
     ptolemy: bool,
