@@ -155,12 +155,19 @@ fn pack_on_real_closed_meshes_is_certified_or_undecided_never_refuted() {
     // property of the input; the refinement (B99) reaches ε = 1e-30 at 128 bits and
     // ε = 1e-60 at 256 bits on the cow (2 904 vertices): certified, exit 0.
     let cow_obj = real("cow.obj");
-    for args in [&["--epsilon", "1e-30"][..], &["--epsilon", "1e-60", "--bits", "256"]] {
+    for args in [
+        &["--epsilon", "1e-30"][..],
+        &["--epsilon", "1e-60", "--bits", "256"],
+    ] {
         let mut a = vec!["pack", cow_obj.as_str(), "--sphere"];
         a.extend_from_slice(args);
         let cow = penner(&a);
         assert_eq!(cow.status.code(), Some(0), "{args:?}: {}", shown(&cow));
-        assert!(text(&cow.stdout).contains("certified (B95, B96)"), "{}", shown(&cow));
+        assert!(
+            text(&cow.stdout).contains("certified (B95, B96)"),
+            "{}",
+            shown(&cow)
+        );
     }
     // In binary64 (no refinement) the computed caps miss ε = 1e-30 by far: undecided,
     // naming the computation, never `fails` (exit 1).

@@ -84,6 +84,10 @@ fn term_b70_gamma_counts_the_longest_row_of_the_factor() {
     let u = f64::EPSILON / 2.0;
     let gamma = |k: f64| k * u / (1.0 - k * u);
     let dense = gamma(n as f64) * s;
-    assert!(b.error >= 0.99 * dense, "error {:e} < γ_n·s = {dense:e}", b.error);
+    assert!(
+        b.error >= 0.99 * dense,
+        "error {:e} < γ_n·s = {dense:e}",
+        b.error
+    );
     assert!(gamma(1.0) * s + u * (1.0 - sigma) < 0.5 * dense, "control");
 }

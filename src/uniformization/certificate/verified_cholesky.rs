@@ -65,6 +65,23 @@ fn ordering(a: &SymmetricLower) -> Vec<usize> {
     }
 }
 
+/// B70's error term `γ_{m+1}·S + u·D`, rounded up, from computed inputs: `s` the binary64
+/// value of `S = ‖|L̃||L̃ᵀ|‖_∞` as summed (each row sum `Σ_k |l_ik|·c_k` has at most `m + 1`
+/// products, each column sum `c_k` at most `c` terms, all nonnegative, so the computed `s`
+/// is at least `(1 − (m + c)u)·S`), `D = max_k |C_kk|`, `γ_k = ku/(1 − ku)`, `u = 2⁻⁵³`.
+/// The result is at least `γ_{m+1}·s/(1 − (m + c)u) + u·D` (exactly, in ℝ): `s` is
+/// inflated twice by `1 + 2(m + c + 4)u` (`(m + c + 4)u ≤ ¼` for any `m + c < 2⁵⁰`), and
+/// every product and sum is rounded upward (`up`) and multiplied by `1 + 4u`. proof: B70
+pub(crate) fn rounding_error_bound(m: usize, c: usize, s: f64, diag_max: f64) -> f64 {
+    let u = f64::EPSILON / 2.0;
+    let terms = (m + c + 4) as f64;
+    let inflate = 1.0 + 2.0 * terms * u;
+    let s_up = up(up(s * inflate) * inflate);
+    let k = m as f64 + 1.0;
+    let gamma = up(k * u / (1.0 - k * u) * (1.0 + 4.0 * u));
+    up(up(up(gamma * s_up) * (1.0 + 4.0 * u)) + up(up(u * diag_max) * (1.0 + 4.0 * u)))
+}
+
 /// The outcome of a verified factorization.
 #[derive(Clone, Debug, PartialEq)]
 pub struct EigenLowerBound {
@@ -209,9 +226,10 @@ pub fn lambda_min_lower_bound(a: &SymmetricLower, sigma: f64) -> Option<EigenLow
         next[k] += 1;
     }
     // ‖|L||Lᵀ|‖_∞ = max_i Σ_k |l_ik| Σ_j |l_jk|, sums of nonnegative terms rounded to
-    // nearest and then inflated (B70).
+    // nearest and then inflated (B70): `m` bounds the products of a row sum, the longest
+    // column `c` the terms of a column sum.
     let m = row_count.iter().copied().max().unwrap_or(0);
-    let u = f64::EPSILON / 2.0;
+    let c = (0..n).map(|k| next[k] - col_ptr[k]).max().unwrap_or(0);
     let colsum: Vec<f64> = (0..n)
         .map(|c| {
             val[col_ptr[c]..next[c]]
@@ -227,13 +245,7 @@ pub fn lambda_min_lower_bound(a: &SymmetricLower, sigma: f64) -> Option<EigenLow
         }
     }
     let s = rowsum.iter().copied().fold(0.0, f64::max);
-    let terms = (2 * m + 4) as f64;
-    // Each computed sum of at most 2m + 2 nonnegative products is ≥ (1 − terms·u) times the
-    // exact one; divide that out generously with the factor (1 + 2·terms·u) (terms·u ≤ ¼).
-    let inflate = 1.0 + 2.0 * terms * u;
-    let s_up = up(up(s * inflate) * inflate);
-    let gamma = up((m as f64 + 1.0) * u / (1.0 - (m as f64 + 1.0) * u) * (1.0 + 4.0 * u));
-    let error = up(up(up(gamma * s_up) * (1.0 + 4.0 * u)) + up(up(u * diag_max) * (1.0 + 4.0 * u)));
+    let error = rounding_error_bound(m, c, s, diag_max);
     let lambda_min = down(sigma - error);
     Some(EigenLowerBound {
         lambda_min,
@@ -245,6 +257,66 @@ pub fn lambda_min_lower_bound(a: &SymmetricLower, sigma: f64) -> Option<EigenLow
 #[cfg(test)]
 mod tests {
     use super::*;
+    use rug::Rational;
+
+    /// `γ_{m+1}·s/(1 − (m + c)u) + u·D` exactly (the quantity B70 needs bounded above).
+    fn required(m: usize, c: usize, s: f64, d: f64) -> Rational {
+        let u = Rational::from((1, 1u64 << 53));
+        let k = Rational::from(m + 1);
+        let one = Rational::from(1);
+        let gamma = Rational::from(&k * &u) / (one.clone() - Rational::from(&k * &u));
+        let shrink = one - &u * Rational::from(m + c);
+        gamma * Rational::from_f64(s).unwrap() / shrink + u * Rational::from_f64(d).unwrap()
+    }
+
+    /// B70's error term against its exact requirement on a grid of row and column counts
+    /// (up to 10⁶), norms (10⁻²⁰⁰ … 10²⁰⁰) and diagonals: never below it (soundness), and
+    /// within a relative `8(m + c + 4)u + 64u` above it (no slack beyond the stated
+    /// inflation: the term is what B70 says, not merely an upper bound). Control: the same
+    /// formula rounded to nearest without the inflation falls below the requirement.
+    #[test]
+    fn b70_rounding_error_bound_is_at_least_the_exact_term_and_tight() {
+        let u = f64::EPSILON / 2.0;
+        let mut naive_below = 0;
+        for m in [0usize, 1, 2, 5, 11, 100, 10_000, 1_000_000] {
+            for c in [0usize, 1, 7, 100_000] {
+                for s in [1e-200, 3e-7, 1.0, 12.5, 7.3e9, 1e200] {
+                    for d in [0.0, 1e-3, 1.0, 4.5e6] {
+                        let e = rounding_error_bound(m, c, s, d);
+                        let need = required(m, c, s, d);
+                        let got = Rational::from_f64(e).unwrap();
+                        assert!(got >= need, "m {m} c {c} s {s:e} d {d:e}: {e:e} below");
+                        let slack = 8.0 * (m + c + 4) as f64 * u + 64.0 * u;
+                        let cap = need.clone() * Rational::from_f64(1.0 + slack).unwrap();
+                        assert!(got <= cap, "m {m} c {c} s {s:e} d {d:e}: {e:e} too loose");
+                        let k = m as f64 + 1.0;
+                        let naive = k * u / (1.0 - k * u) * s + u * d;
+                        if Rational::from_f64(naive).unwrap() < need {
+                            naive_below += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert!(
+            naive_below > 100,
+            "control: naive below in {naive_below} cases"
+        );
+    }
+
+    /// A zero pivot gives no conclusion: `[[1, 1], [1, 1]]` at `σ = 0` has the exact pivot
+    /// `1 − 1·1 = 0`. Control: at `σ = −1` (`A + I`, eigenvalues 1 and 3) it factors, and
+    /// the bound `σ − error` lies just below `σ` and below `λ_min(A) = 0`.
+    #[test]
+    fn b70_a_zero_pivot_gives_no_bound() {
+        let a = SymmetricLower {
+            n: 2,
+            entries: vec![(0, 0, 1.0), (1, 0, 1.0), (1, 1, 1.0)],
+        };
+        assert_eq!(lambda_min_lower_bound(&a, 0.0), None);
+        let b = lambda_min_lower_bound(&a, -1.0).expect("A + I is positive definite");
+        assert!(b.lambda_min < -1.0 && b.lambda_min > -1.0 - 1e-12, "{b:?}");
+    }
 
     /// The empty matrix has no eigenvalue to bound: no conclusion (a bound would be
     /// vacuous, and `σ` itself would be returned as one). Control: the 1×1 matrix `[2]`
