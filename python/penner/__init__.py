@@ -307,7 +307,9 @@ class UniformizeResult:
             :func:`certify` (and ``penner certify``) re-checks from scratch, or None.
         reason: why the result is not certified, or None.
         details: what only one target has (``folds``, ``seam_flips``, ``layout_of``,
-            ``mirror_asymmetry`` with boundary; ``planar``, ``deviation`` for the sphere;
+            ``mirror_asymmetry`` with boundary; ``planar``, ``deviation`` and
+            ``layout_failure`` for the sphere — why vertices binary64 cannot place are
+            NaN in ``uv`` and ``layout``, or None;
             ``area``, ``gauss_bonnet`` for ``hyperbolic``).
     """
 

@@ -374,7 +374,8 @@ fn boundary(d: &Bound<'_, PyDict>, o: &BoundaryOutcome, reason: Option<String>) 
     c.set(d, "boundary")
 }
 
-/// The sphere: `uv` the inscribed positions (n, 3), `layout` the planar disk per corner.
+/// The sphere: `uv` the inscribed positions (n, 3), `layout` the planar disk per corner;
+/// `layout_failure` says why vertices binary64 could not place are NaN there (else `None`).
 fn sphere(d: &Bound<'_, PyDict>, o: &SphereOutcome, reason: Option<String>) -> PyResult<()> {
     let py = d.py();
     let s = &o.solution;
@@ -415,6 +416,7 @@ fn sphere(d: &Bound<'_, PyDict>, o: &SphereOutcome, reason: Option<String>) -> P
         })?,
     )?;
     d.set_item("pole", s.pole)?;
+    d.set_item("layout_failure", s.layout_failure.clone())?;
     d.set_item("deviation", o.deviation)?;
     let planar = &o.planar;
     d.set_item(

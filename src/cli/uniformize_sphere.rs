@@ -74,6 +74,9 @@ pub fn report(
         None => out.push_str("disk problem: numerical, not certified (--no-certify)\n"),
     }
     let planar = &outcome.planar;
+    if let Some(reason) = &sol.layout_failure {
+        let _ = writeln!(out, "planar layout incomplete: {reason}");
+    }
     let _ = writeln!(
         out,
         "planar layout (certified, exact predicates on its coordinates): {} folded or flat faces, {} edges not Delaunay, {} reflex boundary corners",
@@ -90,15 +93,7 @@ pub fn report(
             .map_or("undefined".to_string(), |d| format!("{d:e}"))
     );
     if let Some(path) = extra.obj.as_deref() {
-        let mut text = Vec::new();
-        penner::io::write::obj(&mut text, &sol.mesh, &sol.positions).map_err(|e| {
-            CliError::Write {
-                path: path.to_path_buf(),
-                reason: e.to_string(),
-            }
-        })?;
-        write_new(path, &text)?;
-        let _ = writeln!(out, "inscribed polyhedron written to {}", path.display());
+        write_polyhedron(&mut out, path, sol)?;
     }
     if let Some(path) = extra.svg.as_deref() {
         let picture = render_layout_svg(&sol.solution.mesh, &sol.layout);
@@ -119,4 +114,25 @@ pub fn report(
     } else {
         code::UNDECIDED
     })
+}
+
+/// Write the inscribed polyhedron of `sol` to the new file `path` as OBJ, or say why not
+/// (a layout binary64 cannot hold has no positions for some vertices).
+fn write_polyhedron(
+    out: &mut String,
+    path: &Path,
+    sol: &penner::uniformization::sphere::SphereUniformization,
+) -> Result<(), CliError> {
+    if let Some(reason) = &sol.layout_failure {
+        let _ = writeln!(out, "no polyhedron written to {}: {reason}", path.display());
+        return Ok(());
+    }
+    let mut text = Vec::new();
+    penner::io::write::obj(&mut text, &sol.mesh, &sol.positions).map_err(|e| CliError::Write {
+        path: path.to_path_buf(),
+        reason: e.to_string(),
+    })?;
+    write_new(path, &text)?;
+    let _ = writeln!(out, "inscribed polyhedron written to {}", path.display());
+    Ok(())
 }

@@ -483,3 +483,53 @@ fn b74_the_first_default_pole_is_a_graph_centre() {
     let radius = m.vertices().map(|v| ecc(&m, v)).min().unwrap();
     assert!(ecc(&m, apex) > radius + 10, "control: {}", ecc(&m, apex));
 }
+
+/// A capsule of radius 1 and length `len` (8 vertices around, rings one unit apart, an
+/// apex one unit beyond each end ring), positions rounded to binary64 and taken exactly.
+fn long_capsule(rings: u32) -> penner::io::Surface {
+    use penner::mesh::builders::Embedded;
+    let m = capsule(8, rings);
+    let q = |x: f64| Rational::from_f64(x).unwrap();
+    let mut positions = vec![[q(0.0), q(0.0), q(-1.0)]];
+    for i in 0..rings {
+        for j in 0..8 {
+            let a = std::f64::consts::TAU * (f64::from(j) + 0.5 * f64::from(i % 2)) / 8.0;
+            positions.push([q(a.cos()), q(a.sin()), q(f64::from(i))]);
+        }
+    }
+    positions.push([q(0.0), q(0.0), q(f64::from(rings))]);
+    let e = Embedded {
+        mesh: m,
+        positions,
+        exact: false,
+    };
+    penner::io::Surface::from_embedded("capsule", e).unwrap()
+}
+
+/// B74/B76 on a long capsule (length 96, radius 1): the conformal map to the sphere
+/// crowds each half by about `e^{−48}` relative, below binary64's resolution even from the
+/// central pole, so the planar layout cannot place every vertex. That is not a failure of
+/// the solve: the disk problem is still certified for the exact metric, the outcome names
+/// the layout as incomplete (`layout_failure`), and the result is not `certified()` (exit
+/// 2). Control: a capsule of length 12 lays out completely and is certified.
+#[test]
+fn b76_a_layout_binary64_cannot_hold_keeps_the_certified_disk_problem() {
+    use penner::uniformization::pipeline::{uniformize_sphere, Options};
+    let long = uniformize_sphere(&long_capsule(96), None, &Options::default()).unwrap();
+    assert!(
+        matches!(long.certificate, Some(CertificateOutcome::Holds { .. })),
+        "{:?}",
+        long.certificate
+    );
+    let why = long
+        .solution
+        .layout_failure
+        .as_deref()
+        .expect("an incomplete layout");
+    assert!(why.contains("no finite binary64 position"), "{why}");
+    assert!(!long.certified());
+    assert!(long.claim.is_some());
+    let short = uniformize_sphere(&long_capsule(12), None, &Options::default()).unwrap();
+    assert_eq!(short.solution.layout_failure, None);
+    assert!(short.certified());
+}

@@ -173,6 +173,10 @@ pub struct SphereUniformization {
     pub positions: Vec<[f64; 3]>,
     /// `|centroid|` of `positions` (after the normalisation, when asked for).
     pub centroid_norm: f64,
+    /// Why the binary64 layout is incomplete, when it is: the disk vertices it could not
+    /// place have NaN in `planar` and `positions`, and no Möbius normalisation is applied.
+    /// The disk problem's solution (and its certificate) does not depend on the layout.
+    pub layout_failure: Option<String>,
 }
 
 /// A link vertex counts as reflex when its disk angle exceeds `π` by more than this (in
@@ -607,31 +611,58 @@ pub fn uniformize_sphere(
         reflex,
     } = solved;
     let reflex: Vec<u32> = reflex.iter().map(|&v| disk.vertex[v]).collect();
-    // 3. Layout, centroid 0 and mean squared radius 1.
+    // 3. Layout, centroid 0 and mean squared radius 1. A layout binary64 cannot hold (a
+    //    vertex whose scaled lengths underflow, where the conformal map crowds a thin part
+    //    of the surface below binary64's resolution) is not an error of the solve: the disk
+    //    problem is still solved and can be certified; the unplaced vertices get NaN
+    //    coordinates and the reason is kept (`layout_failure`).
     let layout = unfold(&solution.mesh, &solution.lengths, Face(0));
     let placed = layout.vertex_positions(&solution.mesh);
-    let mut planar = Vec::with_capacity(placed.len());
-    for (v, p) in placed.iter().enumerate() {
-        match p {
-            Some(p) if p[0].is_finite() && p[1].is_finite() => planar.push(*p),
-            _ => return Err(SphereError::Layout(format!("disk vertex {v} not placed"))),
-        }
-    }
-    let n = planar.len() as f64;
-    let (cx, cy) = planar
+    let unplaced = placed
+        .iter()
+        .filter(|p| !p.is_some_and(|p| p[0].is_finite() && p[1].is_finite()))
+        .count();
+    let mut planar: Vec<[f64; 2]> = placed
+        .iter()
+        .map(|p| match p {
+            Some(p) if p[0].is_finite() && p[1].is_finite() => *p,
+            _ => [f64::NAN; 2],
+        })
+        .collect();
+    let mut layout_failure = (unplaced > 0).then(|| {
+        let first = planar.iter().position(|p| p[0].is_nan()).unwrap_or(0);
+        let at: Vec<f64> = u32::try_from(first)
+            .map(|w| {
+                solution
+                    .mesh
+                    .outgoing(crate::mesh::Vertex(w))
+                    .map(|h| solution.lengths[h.edge().idx()])
+                    .collect()
+            })
+            .unwrap_or_default();
+        let lo = at.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = at.iter().copied().fold(0.0, f64::max);
+        format!(
+            "{unplaced} disk vertices (first: {first}, its edges' scaled lengths {lo:e} … {hi:e}) got no finite binary64 position in the unfolding (the conformal map crowds that part of the surface)"
+        )
+    });
+    let kept: Vec<&[f64; 2]> = planar.iter().filter(|p| !p[0].is_nan()).collect();
+    let n = kept.len() as f64;
+    let (cx, cy) = kept
         .iter()
         .fold((0.0, 0.0), |(x, y), p| (x + p[0] / n, y + p[1] / n));
-    let spread = (planar
+    let spread = (kept
         .iter()
         .map(|p| (p[0] - cx).powi(2) + (p[1] - cy).powi(2))
         .sum::<f64>()
         / n)
         .sqrt();
     if !(spread.is_normal()) {
-        return Err(SphereError::Layout("the laid-out vertices coincide".into()));
+        layout_failure.get_or_insert_with(|| "the laid-out vertices coincide".into());
     }
+    let scale = if spread.is_normal() { spread } else { 1.0 };
     for p in &mut planar {
-        *p = [(p[0] - cx) / spread, (p[1] - cy) / spread];
+        *p = [(p[0] - cx) / scale, (p[1] - cy) / scale];
     }
     // 4. Inverse stereographic projection, v∞ at the north pole, composed with the
     // reflection y ↦ −y: the projection alone reverses orientation (a counterclockwise
@@ -643,8 +674,8 @@ pub fn uniformize_sphere(
         let [x, y, z] = inverse_stereographic(planar[k]);
         positions[v as usize] = [x, -y, z];
     }
-    // 5. Möbius normalisation.
-    let centroid_norm = if opts.normalize {
+    // 5. Möbius normalisation (of a complete layout only).
+    let centroid_norm = if opts.normalize && layout_failure.is_none() {
         mobius_center(&mut positions)
     } else {
         norm(centroid(&positions))
@@ -677,5 +708,6 @@ pub fn uniformize_sphere(
         flip_sequence,
         positions,
         centroid_norm,
+        layout_failure,
     })
 }
