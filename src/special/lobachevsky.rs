@@ -115,7 +115,7 @@ pub fn lobachevsky<T: Real>(x: &T) -> T {
     if let Some(v) = cast::<T, Interval<f64>>(x) {
         return cast::<Interval<f64>, T>(&interval_f64(&v)).unwrap_or_else(|| nan_like(x));
     }
-    if let Some(y) = super::dual_fast::lobachevsky_dual(x) {
+    if let Some(y) = super::dual_fast::lobachevsky_dual(x, lobachevsky::<f64>, lobachevsky::<Dd>) {
         return y;
     }
     let ctx = x.ctx();
