@@ -45,49 +45,53 @@ fn term_b70_rounding_error_of_the_factorization_is_subtracted() {
 }
 
 /// B70 term `m` in `γ_{m+1}`, the largest number of off-diagonal entries in a row of the
-/// factor: on the dense `A = (1 − c)I + cJ` (`n = 12`, `c = 1 − t`; eigenvalues `t`
-/// (×11) and `1 + 11c`, closed form) the factor is dense, so `m = n − 1` and the error
+/// factor, and the norm `‖|L̃||L̃ᵀ|‖_∞` it multiplies: on the dense `A = k((1 − c)I + cJ)`
+/// (`n = 12`, `c = 1 − t`; eigenvalues `kt` (×11) and `k(1 + 11c)`, closed form; the
+/// scale `k = 1` and `k = 2²⁰`, exact) the factor is dense, so `m = n − 1` and the error
 /// term is at least `γ_n·‖|L||Lᵀ|‖_∞`, with `L` here from an independent dense Cholesky
-/// (textbook column order, no permutation). Control: with `m = 0` (`γ₁`) the term would
-/// be below half of that bound, so the assertion separates the two.
+/// (textbook column order, no permutation). At `k = 2²⁰` the entries of `L` are about
+/// `2¹⁰`, so a norm summing `|l_ik| + Σ_j|l_jk|` instead of their products falls far short.
+/// Control: with `m = 0` (`γ₁`) the term would be below half of that bound.
 #[test]
 fn term_b70_gamma_counts_the_longest_row_of_the_factor() {
     let (n, t) = (12usize, 0.25);
     let c = 1.0 - t;
-    let sigma = t / 2.0;
-    let mut entries = Vec::new();
-    for i in 0..n {
-        for j in 0..=i {
-            entries.push((i, j, if i == j { 1.0 } else { c }));
+    for k in [1.0, 2f64.powi(20)] {
+        let sigma = k * t / 2.0;
+        let mut entries = Vec::new();
+        for i in 0..n {
+            for j in 0..=i {
+                entries.push((i, j, if i == j { k } else { k * c }));
+            }
         }
-    }
-    let a = SymmetricLower { n, entries };
-    let b = lambda_min_lower_bound(&a, sigma).expect("A − (t/2)I is positive definite");
-    assert!(b.lambda_min > 0.0 && b.lambda_min <= t, "{b:?}");
-    // Dense Cholesky of A − σI (permutation-invariant: AMD may reorder a dense matrix,
-    // and every symmetric permutation of this A is A itself).
-    let mut l = vec![vec![0.0f64; n]; n];
-    for j in 0..n {
-        let d = 1.0 - sigma - (0..j).map(|k| l[j][k] * l[j][k]).sum::<f64>();
-        l[j][j] = d.sqrt();
-        for i in j + 1..n {
-            l[i][j] = (c - (0..j).map(|k| l[i][k] * l[j][k]).sum::<f64>()) / l[j][j];
+        let a = SymmetricLower { n, entries };
+        let b = lambda_min_lower_bound(&a, sigma).expect("A − (kt/2)I is positive definite");
+        assert!(b.lambda_min > 0.0 && b.lambda_min <= k * t, "{b:?}");
+        // Dense Cholesky of A − σI (permutation-invariant: AMD may reorder a dense matrix,
+        // and every symmetric permutation of this A is A itself).
+        let mut l = vec![vec![0.0f64; n]; n];
+        for j in 0..n {
+            let d = k - sigma - (0..j).map(|q| l[j][q] * l[j][q]).sum::<f64>();
+            l[j][j] = d.sqrt();
+            for i in j + 1..n {
+                l[i][j] = (k * c - (0..j).map(|q| l[i][q] * l[j][q]).sum::<f64>()) / l[j][j];
+            }
         }
+        let s = (0..n)
+            .map(|i| {
+                (0..n)
+                    .map(|j| (0..n).map(|q| l[i][q].abs() * l[j][q].abs()).sum::<f64>())
+                    .sum::<f64>()
+            })
+            .fold(0.0, f64::max);
+        let u = f64::EPSILON / 2.0;
+        let gamma = |q: f64| q * u / (1.0 - q * u);
+        let dense = gamma(n as f64) * s;
+        assert!(
+            b.error >= 0.99 * dense,
+            "k {k}: error {:e} < γ_n·s = {dense:e}",
+            b.error
+        );
+        assert!(gamma(1.0) * s + u * (k - sigma) < 0.5 * dense, "control");
     }
-    let s = (0..n)
-        .map(|i| {
-            (0..n)
-                .map(|j| (0..n).map(|k| l[i][k].abs() * l[j][k].abs()).sum::<f64>())
-                .sum::<f64>()
-        })
-        .fold(0.0, f64::max);
-    let u = f64::EPSILON / 2.0;
-    let gamma = |k: f64| k * u / (1.0 - k * u);
-    let dense = gamma(n as f64) * s;
-    assert!(
-        b.error >= 0.99 * dense,
-        "error {:e} < γ_n·s = {dense:e}",
-        b.error
-    );
-    assert!(gamma(1.0) * s + u * (1.0 - sigma) < 0.5 * dense, "control");
 }
