@@ -392,4 +392,74 @@ mod terms {
         }
         assert!(decided >= 6, "the tail decided only {decided} cases");
     }
+
+    /// B52's tail bound `τ = h·(16/7)·θ^{N+1}/((N+1)(2N+3))`, `θ = (ch/π)²` (`c = 1` at
+    /// 0, `2` at π/2), against the formula evaluated exactly in ℚ with `π` replaced by its
+    /// lower bound from the table (so `θ` is the largest the rounding allows): never below
+    /// it, and above it by at most `2⁻²⁴⁰` relative at 256 bits (the upward roundings of a
+    /// dozen operations; the cap checked is `2⁻¹²⁰`). Every factor is pinned: `(2N + 3)`
+    /// read as `6N`, or `16·θ^{N+1}` as `16 + θ^{N+1}`, leaves the interval. Control: `16/7`
+    /// read as `16/8` falls below.
+    #[test]
+    fn term_b52_tail_bound_is_the_formula_rounded_up() {
+        use rug::Rational;
+        let tab = table(256);
+        let pi_lo = tab.pi.0.to_rational().expect("finite π");
+        let (mut cases, mut rejected) = (0, 0);
+        for (e, c) in [(Expansion::AtZero, 1u32), (Expansion::AtHalfPi, 2)] {
+            for h in [1.0 / 64.0, 0.1, 0.25, 0.5] {
+                let hf = Float::with_val(tab.prec, h);
+                let hq = Rational::from_f64(h).unwrap();
+                let ratio = Rational::from(&hq * c) / &pi_lo;
+                let theta = Rational::from(&ratio * &ratio);
+                for n in 1..=12usize {
+                    let Some(tau) = tail_bound(&hf, e, &tab, n) else {
+                        continue;
+                    };
+                    let got = tau.to_rational().expect("finite τ");
+                    let pow = rug::ops::Pow::pow(theta.clone(), (n + 1) as u32);
+                    let d = Rational::from(((n + 1) * (2 * n + 3)) as u64);
+                    let exact = Rational::from(&pow * 16u32) * &hq / (d.clone() * 7u32);
+                    assert!(got >= exact, "{e:?} h {h} N {n}: τ below the formula");
+                    let cap = exact.clone()
+                        * (Rational::from(1) + Rational::from((1, 1u64 << 60)).square());
+                    assert!(got <= cap, "{e:?} h {h} N {n}: τ above the formula");
+                    // Control: `16/8` for `16/7` (τ·7/8) is rejected by the first check.
+                    if Rational::from(&got * 7u32) / 8u32 < exact {
+                        rejected += 1;
+                    }
+                    cases += 1;
+                }
+            }
+        }
+        assert!(
+            cases > 20 && rejected == cases,
+            "{rejected} of {cases} controls rejected"
+        );
+    }
+
+    /// Horner's sum rounded down and up brackets the exact sum of its `Float` coefficients
+    /// at `s`, and the two differ when the sum is not representable (directed rounding is
+    /// what makes `P_N^±` bounds, B52 (5)). Control: rounding to nearest would give one
+    /// value for both.
+    #[test]
+    fn horner_is_rounded_in_the_asked_direction() {
+        use rug::Rational;
+        let p = 64;
+        let coeffs: Vec<Float> = [1.0 / 3.0, 0.2, 1.0 / 7.0, 0.1]
+            .iter()
+            .map(|&c| Float::with_val(p, c))
+            .collect();
+        let s = Float::with_val(p, 0.3);
+        let down = horner(&coeffs, &s, Dir::Down, p);
+        let up = horner(&coeffs, &s, Dir::Up, p);
+        let sq = s.to_rational().unwrap();
+        let mut exact = Rational::new();
+        for c in coeffs.iter().rev() {
+            exact = (exact + c.to_rational().unwrap()) * &sq;
+        }
+        let (d, u) = (down.to_rational().unwrap(), up.to_rational().unwrap());
+        assert!(d <= exact && exact <= u, "{down} {up}");
+        assert!(d < u, "directed roundings coincide");
+    }
 }
