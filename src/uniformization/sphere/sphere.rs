@@ -161,15 +161,16 @@ pub struct SphereUniformization {
     pub reflex: Vec<u32>,
     /// The layout of the final disk triangulation.
     pub layout: Layout,
-    /// Per disk vertex, its planar position (centroid 0, mean squared radius 1), the
-    /// stereographic preimage of its output position before the Möbius normalisation.
+    /// Per disk vertex, its planar position (centroid 0, mean squared radius 1, over the
+    /// placed vertices), the stereographic preimage of its output position before the
+    /// Möbius normalisation; NaN for a vertex not placed (`layout_failure`).
     pub planar: Vec<[f64; 2]>,
     /// The final triangulation of the sphere: `T₀` with `flip_sequence`.
     pub mesh: Mesh,
     /// All Ptolemy flips from `T₀` to `mesh` as edges of `T₀`, in order: the disk flips of
     /// each disk problem, and between them the flips at the pole (B93).
     pub flip_sequence: Vec<Edge>,
-    /// Per vertex of `T₀`, its position on the unit sphere.
+    /// Per vertex of `T₀`, its position on the unit sphere (NaN where not placed).
     pub positions: Vec<[f64; 3]>,
     /// `|centroid|` of `positions` (after the normalisation, when asked for).
     pub centroid_norm: f64,
@@ -612,10 +613,10 @@ pub fn uniformize_sphere(
     } = solved;
     let reflex: Vec<u32> = reflex.iter().map(|&v| disk.vertex[v]).collect();
     // 3. Layout, centroid 0 and mean squared radius 1. A layout binary64 cannot hold (a
-    //    vertex whose scaled lengths underflow, where the conformal map crowds a thin part
-    //    of the surface below binary64's resolution) is not an error of the solve: the disk
-    //    problem is still solved and can be certified; the unplaced vertices get NaN
-    //    coordinates and the reason is kept (`layout_failure`).
+    //    vertex the unfolding gives no finite position, where the conformal map crowds a
+    //    thin part of the surface below binary64's resolution) is not an error of the
+    //    solve: the disk problem is still solved and can be certified; the unplaced
+    //    vertices get NaN coordinates and the reason is kept (`layout_failure`).
     let layout = unfold(&solution.mesh, &solution.lengths, Face(0));
     let placed = layout.vertex_positions(&solution.mesh);
     let unplaced = placed
