@@ -438,6 +438,33 @@ mod terms {
         );
     }
 
+    /// B52 (5) on a wide interval: for `[l, h] = [0.2, 0.3]` the lower end takes the factor
+    /// `t` and the polynomial at `l` and the logarithm at `h`, the upper end the reverse;
+    /// with `τ(h)` the two enclose `Л(t)` (the independent tangent-number series at 400
+    /// bits) at 33 points of `[l, h]`. Control: the ends swapped (`l` for `h`) exclude it.
+    #[test]
+    fn term_b52_wide_interval_takes_each_factor_at_its_own_end() {
+        let tab = table(256);
+        let (l, h) = (Float::with_val(256, 0.2), Float::with_val(256, 0.3));
+        let n = terms_for_bound(&h, Expansion::AtZero, &tab);
+        let tau = tail_bound(&h, Expansion::AtZero, &tab, n).expect("θ ≤ 1/8");
+        let lo = bound(&l, &h, Expansion::AtZero, Dir::Down, &tab, n, None);
+        let hi = bound(&l, &h, Expansion::AtZero, Dir::Up, &tab, n, None);
+        let lo = Float::with_val_round(256, &lo - &tau, Round::Down).0;
+        let hi = Float::with_val_round(256, &hi + &tau, Round::Up).0;
+        let swapped = bound(&h, &l, Expansion::AtZero, Dir::Down, &tab, n, None);
+        let mut excluded = 0;
+        for k in 0..=32 {
+            let t = Float::with_val(256, 0.2 + 0.1 * f64::from(k) / 32.0);
+            let truth = lobachevsky_tangent_series(&t, 400).expect("reference");
+            assert!(lo <= truth && truth <= hi, "t = {t}");
+            if swapped > truth {
+                excluded += 1;
+            }
+        }
+        assert!(excluded > 0, "control: the swapped ends still enclose");
+    }
+
     /// Horner's sum rounded down and up brackets the exact sum of its `Float` coefficients
     /// at `s`, and the two differ when the sum is not representable (directed rounding is
     /// what makes `P_N^±` bounds, B52 (5)). Control: rounding to nearest would give one
