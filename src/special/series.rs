@@ -465,6 +465,17 @@ mod terms {
         assert!(excluded > 0, "control: the swapped ends still enclose");
     }
 
+    /// B52 (4)'s tail bound needs `θ ≤ 1/8` (the geometric factor `1/(1 − θ) ≤ 8/7`):
+    /// past it (`h = 1.2` at 0, `θ = (1.2/π)² ≈ 0.146`) there is no bound. Control: at
+    /// `h = 1` (`θ ≈ 0.101`) there is one.
+    #[test]
+    fn term_b52_no_tail_bound_past_theta_one_eighth() {
+        let tab = table(128);
+        let at = |h: f64| tail_bound(&Float::with_val(128, h), Expansion::AtZero, &tab, 4);
+        assert!(at(1.2).is_none());
+        assert!(at(1.0).is_some());
+    }
+
     /// Horner's sum rounded down and up brackets the exact sum of its `Float` coefficients
     /// at `s`, and the two differ when the sum is not representable (directed rounding is
     /// what makes `P_N^±` bounds, B52 (5)). Control: rounding to nearest would give one
