@@ -4,13 +4,13 @@
 #
 #   benches/peers/conformal_ideal_delaunay/build.sh [BUILD_ROOT]   (default /work/peer-cid)
 #
-# Sources. The machine has no GitHub access; the repositories were brought here with the
-# agent tool `fetch` (bare git directories under /work/.mirror/OWNER+NAME/repo):
-#   fetch github:geometryprocessing/ConformalIdealDelaunay
-#   fetch github:libigl/libigl       (submodule ext/libigl   at 3aefd187bd1a219ea4830aeb08122473b5c8ade9)
-#   fetch github:gabime/spdlog       (submodule ext/spdlog   at a530b87fd0fcca818c4504f834340c5c263b3049)
-#   fetch github:pybind/pybind11     (submodule ext/pybind11 at 7516811315c76321e847cf28955937195c577d2f)
-# Elsewhere `git clone --recursive https://github.com/geometryprocessing/ConformalIdealDelaunay`
+# Sources: bare git mirrors under $MIRROR/OWNER+NAME/repo (default /work/.mirror), one per
+# repository, at these commits:
+#   geometryprocessing/ConformalIdealDelaunay  901441cfc35d5ecdefc7b4c34218075f198d9669
+#   libigl/libigl      (submodule ext/libigl)   3aefd187bd1a219ea4830aeb08122473b5c8ade9
+#   gabime/spdlog      (submodule ext/spdlog)   a530b87fd0fcca818c4504f834340c5c263b3049
+#   pybind/pybind11    (submodule ext/pybind11) 7516811315c76321e847cf28955937195c577d2f
+# With network access, `git clone --recursive https://github.com/geometryprocessing/ConformalIdealDelaunay`
 # gives the same tree (set MIRROR accordingly or adapt the extraction below).
 # System packages (apt): cmake libeigen3-dev libboost-dev (g++ 12, Debian bookworm).
 #

@@ -84,6 +84,16 @@ fn farthest(d: &[u32]) -> Vertex {
 /// the smaller index). On a path-like surface (a tube, a limb) this is the middle of its
 /// length. `None` when no vertex qualifies.
 pub fn graph_centre(mesh: &Mesh) -> Option<Vertex> {
+    let admissible: Vec<bool> = mesh
+        .vertices()
+        .map(|v| check_pole(mesh, v).is_ok())
+        .collect();
+    centre_among(mesh, &admissible)
+}
+
+/// [`graph_centre`] among the vertices with `admissible[v]` (those passing [`check_pole`],
+/// computed once by the caller).
+fn centre_among(mesh: &Mesh, admissible: &[bool]) -> Option<Vertex> {
     if mesh.n_vertices() == 0 {
         return None;
     }
@@ -92,7 +102,7 @@ pub fn graph_centre(mesh: &Mesh) -> Option<Vertex> {
     let b = farthest(&da);
     let db = hop_distances(mesh, b);
     mesh.vertices()
-        .filter(|&v| da[v.idx()] != u32::MAX && check_pole(mesh, v).is_ok())
+        .filter(|&v| da[v.idx()] != u32::MAX && admissible[v.idx()])
         .min_by_key(|&v| {
             let (x, y) = (u64::from(da[v.idx()]), u64::from(db[v.idx()]));
             (x.max(y), x + y, std::cmp::Reverse(mesh.degree(v)), v.0)
@@ -103,10 +113,14 @@ pub fn graph_centre(mesh: &Mesh) -> Option<Vertex> {
 /// [`graph_centre`], then the vertices that pass [`check_pole`] by decreasing degree and
 /// increasing index; the first [`POLE_ATTEMPTS`] of these.
 pub fn pole_candidates(mesh: &Mesh) -> Vec<Vertex> {
-    let centre = graph_centre(mesh);
+    let admissible: Vec<bool> = mesh
+        .vertices()
+        .map(|v| check_pole(mesh, v).is_ok())
+        .collect();
+    let centre = centre_among(mesh, &admissible);
     let mut v: Vec<Vertex> = mesh
         .vertices()
-        .filter(|&v| Some(v) != centre && check_pole(mesh, v).is_ok())
+        .filter(|&v| Some(v) != centre && admissible[v.idx()])
         .collect();
     v.sort_by_key(|&w| (std::cmp::Reverse(mesh.degree(w)), w.0));
     v.truncate(POLE_ATTEMPTS.saturating_sub(usize::from(centre.is_some())));
