@@ -8,7 +8,9 @@
 //! - [`replay`]: replay a recorded flip sequence on the exact input metric with certified
 //!   arithmetic (B80), to certify a rounded run's triangulation for the input;
 //!   [`replay_dag`] holds its lazily built flip lengths (B85), [`replay_len`] the length
-//!   types and their certified arithmetic, [`replay_input`] the input metrics it reads.
+//!   types and their certified arithmetic, [`replay_input`] the input metrics it reads,
+//!   [`replay_chord`] the exact new lengths of flips on planar hinges of positions (B106),
+//!   [`replay_algebraic`] the exact signs of ties on algebraic lengths (B107).
 //! - [`flip_replay`]: a `delaunay_flip` claim's flip sequence replayed on the lengths of
 //!   [`replay`] and its result compared under vertex-fixing relabelings (B80, B81);
 //!   [`tie_search`] searches the claim's tie flips (B82).
@@ -24,6 +26,8 @@ pub mod flip_to_delaunay;
 pub mod flips;
 pub mod naive;
 pub mod replay;
+pub mod replay_algebraic;
+pub mod replay_chord;
 pub mod replay_dag;
 pub mod replay_input;
 pub mod replay_len;

@@ -185,7 +185,8 @@ pub fn replay_lazy<S: InputMetric + ?Sized>(
             None => return out(mesh, lens.dag, Some((n, e, BrokenStep::Undecided))),
         };
         // The new length, lazy where the f64 flip formula encloses it (proof: B85).
-        let Some(first) = lens.dag.flip(input, e, q.edges, tie, &lens.first) else {
+        let corners = Some(mesh.quad_vertices(e));
+        let Some(first) = lens.dag.flip(input, e, q.edges, corners, tie, &lens.first) else {
             return out(mesh, lens.dag, Some((n, e, BrokenStep::NoLength)));
         };
         if mesh.flip(e).is_err() {

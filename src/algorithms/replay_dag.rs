@@ -12,17 +12,20 @@
 //! replay (B85).
 
 use super::flips::{euclidean_length_enclosure, ptolemy_length_enclosure};
+use super::replay_algebraic::{delaunay_sign, Item};
+use super::replay_chord::planar_chord;
 use super::replay_input::InputMetric;
 use super::replay_len::{f64_enclosure, new_length, sign_of_lens, tie_length, Len};
-use crate::mesh::Edge;
+use crate::mesh::{Edge, Vertex};
 use crate::predicates::delaunay::Quad;
 use crate::predicates::delaunay_widened::{in_range, sign_p, Bounds};
 use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
 use std::borrow::Cow;
+use std::collections::HashMap;
 
 /// Where a length of a replay comes from: an edge of the input triangulation, or the new
 /// diagonal of a node of the DAG.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Source {
     /// The input length of this edge.
     Input(Edge),
@@ -35,7 +38,11 @@ pub enum Source {
 #[derive(Clone, Debug)]
 struct Node {
     quad: Quad<Source>,
+    /// The corners `[i, j, k, l]` of the quadrilateral (for the chordal rule, B106).
+    corners: Option<[Vertex; 4]>,
     tie: bool,
+    /// Whether the built length is the chord of its ends' input positions (B106).
+    chordal: bool,
     /// Whether the new length was recorded lazily (its first-rung enclosure is then the
     /// flip formula's, not the hull of the built length).
     deferred: bool,
@@ -126,28 +133,61 @@ impl FlipDag {
             if stack.len() > before {
                 continue;
             }
-            let new = self.build(input, node.quad, node.tie);
+            let new = self.build(input, node.quad, node.corners, node.tie);
             stack.pop();
-            self.nodes[top as usize].value =
-                Value::Built(new.unwrap_or_else(|| enclosure_of(bounds, p)));
+            let node = &mut self.nodes[top as usize];
+            node.chordal = new.as_ref().is_some_and(|(_, c)| *c);
+            node.value = Value::Built(new.map_or_else(|| enclosure_of(bounds, p), |(l, _)| l));
         }
     }
 
-    /// The new length of a flip of the quadrilateral `quad` as the eager replay builds it
-    /// ([`tie_length`] or [`new_length`]), from built parents.
+    /// The new length of a flip of the quadrilateral `quad` (corners `corners`) as the
+    /// eager replay builds it, from built parents, and whether it is chordal: the chord of
+    /// a planar hinge of chordal lengths (B106), else [`tie_length`] or [`new_length`].
     fn build<S: InputMetric + ?Sized>(
         &self,
         input: &S,
         quad: Quad<Source>,
+        corners: Option<[Vertex; 4]>,
         tie: bool,
-    ) -> Option<Len> {
+    ) -> Option<(Len, bool)> {
+        if let Some(chord) = self.chord(input, quad, corners, tie) {
+            return Some((chord, true));
+        }
         let lens = quad.map(|s| self.get(input, s));
         let lens = lens.as_refs().map(|l| &**l);
-        if tie {
+        let new = if tie {
             tie_length(lens, self.ptolemy, self.bits)
         } else {
             new_length(lens, self.ptolemy, self.bits)
+        };
+        new.map(|l| (l, false))
+    }
+
+    /// The chordal rule (proof: B106): a Euclidean flip (or a tie flip, whose Ptolemy
+    /// length is the Euclidean one, T29) of a quadrilateral whose five lengths are chordal
+    /// — input lengths of an input with positions, or earlier chordal flips — and whose
+    /// corners are coplanar with `k`, `l` on opposite sides of `ij` has the new length
+    /// `√|p_k − p_l|²`, exactly.
+    fn chord<S: InputMetric + ?Sized>(
+        &self,
+        input: &S,
+        quad: Quad<Source>,
+        corners: Option<[Vertex; 4]>,
+        tie: bool,
+    ) -> Option<Len> {
+        if self.ptolemy && !tie {
+            return None;
         }
+        let chordal = quad.to_array().iter().all(|s| match s {
+            Source::Input(_) => true,
+            Source::Flip(n) => self.nodes[*n as usize].chordal,
+        });
+        if !chordal {
+            return None;
+        }
+        let [i, j, k, l] = corners?.map(|v| input.position(v));
+        planar_chord([&i?, &j?, &k?, &l?]).map(Len::Root)
     }
 
     /// The length from `s`: the input's, a built node's, or a lazy node's `f64` bounds as
@@ -192,6 +232,7 @@ impl FlipDag {
         input: &S,
         e: Edge,
         q: Quad<Edge>,
+        corners: Option<[Vertex; 4]>,
         tie: bool,
         first: &[Option<Bounds>],
     ) -> Option<Option<Bounds>> {
@@ -204,21 +245,23 @@ impl FlipDag {
             _ => None,
         };
         let deferred = lazy.is_some();
-        let (value, bounds) = if let Some((b, p)) = lazy {
-            (Value::Lazy(b, p), Some(b))
+        let (value, bounds, chordal) = if let Some((b, p)) = lazy {
+            (Value::Lazy(b, p), Some(b), false)
         } else {
             for s in quad.to_array() {
                 if let Source::Flip(p) = s {
                     self.force(input, p);
                 }
             }
-            let new = self.build(input, quad, tie)?;
+            let (new, chordal) = self.build(input, quad, corners, tie)?;
             let h = hull(&new);
-            (Value::Built(new), h)
+            (Value::Built(new), h, chordal)
         };
         self.nodes.push(Node {
             quad,
+            corners,
             tie,
+            chordal,
             deferred,
             value,
         });
@@ -288,10 +331,67 @@ impl FlipDag {
                 }
             }
         }
-        sign_of_lens([&*l.ij, &*l.jk, &*l.ki, &*l.il, &*l.lj], self.bits)
+        let s = sign_of_lens([&*l.ij, &*l.jk, &*l.ki, &*l.il, &*l.lj], self.bits);
+        if s.is_some() {
+            return s;
+        }
+        self.algebraic_sign(input, quad)
+    }
+
+    /// The exact sign of `D` on the quadrilateral of lengths `quad` when no enclosure
+    /// decides it (proof: B107, [`delaunay_sign`]): every squared length as an algebraic
+    /// number over the input's exact squares — an exact length's square, or its flip's
+    /// formula, one square root per flip. `None` when a length is not expressible (an
+    /// input that is itself an enclosure), more than [`MAX_RADICALS`] flips are involved,
+    /// or a sign stays open.
+    fn algebraic_sign<S: InputMetric + ?Sized>(
+        &self,
+        input: &S,
+        quad: Quad<Source>,
+    ) -> Option<Sign> {
+        let mut items = Vec::new();
+        let mut index = HashMap::new();
+        let mut budget = MAX_RADICALS;
+        let roots = quad
+            .to_array()
+            .map(|s| self.collect(input, s, &mut items, &mut index, &mut budget));
+        let [a, b, c, d, e] = roots;
+        delaunay_sign(&items, [a?, b?, c?, d?, e?], self.ptolemy)
+    }
+
+    /// The item of the squared length from `s`, its parents collected first (an exact
+    /// length's square is a leaf; a flip without one costs one unit of `budget`).
+    fn collect<S: InputMetric + ?Sized>(
+        &self,
+        input: &S,
+        s: Source,
+        items: &mut Vec<Item>,
+        index: &mut HashMap<Source, usize>,
+        budget: &mut usize,
+    ) -> Option<usize> {
+        if let Some(&i) = index.get(&s) {
+            return Some(i);
+        }
+        let item = match s {
+            Source::Input(e) => Item::Leaf(input.exact(e).exact_square()?),
+            Source::Flip(n) => match &self.nodes[n as usize].value {
+                Value::Built(l) if l.exact_square().is_some() => Item::Leaf(l.exact_square()?),
+                _ => {
+                    *budget = budget.checked_sub(1)?;
+                    let q = self.nodes[n as usize].quad.to_array();
+                    let [a, b, c, d, e] = q.map(|p| self.collect(input, p, items, index, budget));
+                    Item::Flip([a?, b?, c?, d?, e?])
+                }
+            },
+        };
+        items.push(item);
+        index.insert(s, items.len() - 1);
+        Some(items.len() - 1)
     }
 }
 
+/// Flips a sign decision may reach back through (one radical each, proof: B107).
+pub const MAX_RADICALS: usize = 24;
 /// The `f64` hull of a length in the rung's range (the eager replay's first rung).
 fn hull(len: &Len) -> Option<Bounds> {
     f64_enclosure(len).and_then(|x| in_range([*x.lo(), *x.hi()]))

@@ -4,9 +4,10 @@
 //! The first rung of every sign takes a cheap `f64` enclosure of each length (proof: B83);
 //! the exact value of an edge is built only when a sign or a new length needs it.
 
+use super::replay_chord::Point;
 use super::replay_len::{f64_enclosure, Len};
 use crate::io::{DecimalSurface, Metric};
-use crate::mesh::{Edge, Mesh};
+use crate::mesh::{Edge, Mesh, Vertex};
 use crate::predicates::delaunay_widened::{in_range, length_from_square, Bounds};
 
 /// An exact metric on the input triangulation of a replay.
@@ -18,6 +19,11 @@ pub trait InputMetric {
     /// An enclosure of that length for the first rung (proof: B83), `None` when `f64`
     /// cannot hold one in the rung's range.
     fn first_rung(&self, e: Edge) -> Option<Bounds>;
+    /// The exact position of vertex `v` when every input length is the chord `|p_u − p_v|`
+    /// of its ends (the chordal flips of B106 need them); `None` by default.
+    fn position(&self, _v: Vertex) -> Option<Point> {
+        None
+    }
 }
 
 impl InputMetric for Metric {
@@ -74,5 +80,10 @@ impl InputMetric for PositionMetric<'_> {
             self.surface.squared_distance_f64(u, v)?
         };
         length_from_square(nearest)
+    }
+    fn position(&self, v: Vertex) -> Option<Point> {
+        // proof: B106 — `exact` above is `Root(|p_u − p_v|²)` of these positions.
+        let p = self.surface.positions.get(v.idx())?;
+        Some([p[0].to_rational(), p[1].to_rational(), p[2].to_rational()])
     }
 }

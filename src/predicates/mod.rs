@@ -7,6 +7,7 @@ pub mod directed;
 mod filter;
 pub mod ladder;
 pub mod planar;
+pub mod separation;
 pub mod tolerance;
 pub mod triangle;
 pub mod within;

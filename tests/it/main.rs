@@ -62,6 +62,7 @@ mod registry_extra;
 mod registry_uniformization;
 mod replay_dag;
 mod replay_lazy;
+mod replay_ties;
 mod scalar_dd;
 mod scalar_dd_div;
 mod scalar_dd_edges;

@@ -1,0 +1,447 @@
+//! Exact signs of algebraic numbers built from rationals by `+ − × ÷ √`, by a separation
+//! bound (proof: B107): an expression `E` that is not zero is at least `2^{−B(E)}` in
+//! magnitude, with `B(E)` computed from the expression alone (Burnikel, Funke, Mehlhorn,
+//! Schirra and Schmitt's bound); an outward-rounded enclosure of `E` at a precision where
+//! it fits strictly inside `(−2^{−B}, 2^{−B})` therefore proves `E = 0`, and one that
+//! excludes 0 proves the sign. This decides the ties no enclosure can: the Delaunay sign of
+//! a quadrilateral whose lengths are square roots of earlier Euclidean flips, exactly zero
+//! by a symmetry of the input.
+//!
+//! ```
+//! use penner::predicates::separation::Expr;
+//! use penner::scalar::Sign;
+//! use rug::Rational;
+//! // √2 + √3 − √(5 + 2√6) is exactly 0; adding 2⁻²⁰⁰ makes it positive.
+//! let mut e = Expr::new();
+//! let q = |e: &mut Expr, n: i32| e.rational(Rational::from(n));
+//! let (two, three, five, six) = (q(&mut e, 2), q(&mut e, 3), q(&mut e, 5), q(&mut e, 6));
+//! let (r2, r3, r6) = (e.sqrt(two), e.sqrt(three), e.sqrt(six));
+//! let two_r6 = e.add(r6, r6);
+//! let inner = e.add(five, two_r6);
+//! let nested = e.sqrt(inner);
+//! let sum = e.add(r2, r3);
+//! let zero = e.sub(sum, nested);
+//! assert_eq!(e.sign(zero, 1 << 16), Some(Sign::Zero));
+//! let tiny = e.rational(Rational::from((1, rug::Integer::from(1) << 200u32)));
+//! let near = e.add(zero, tiny);
+//! assert_eq!(e.sign(near, 1 << 16), Some(Sign::Positive));
+//! ```
+
+use crate::scalar::Sign;
+use rug::float::Round;
+use rug::{Float, Integer, Rational};
+use std::cmp::Ordering;
+
+/// A node of an [`Expr`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct Id(u32);
+
+#[derive(Clone, Debug)]
+enum Op {
+    Rational(Rational),
+    Add(Id, Id),
+    Sub(Id, Id),
+    Mul(Id, Id),
+    Div(Id, Id),
+    Sqrt(Id),
+}
+
+/// A node with upper bounds on `log₂ u` and `log₂ l` of B107's recursion.
+#[derive(Clone, Debug)]
+struct Node {
+    op: Op,
+    log_u: f64,
+    log_l: f64,
+}
+
+/// An arithmetic expression DAG over exact rationals (nodes are created children first,
+/// so the index order is a topological order). Square roots take non-negative arguments.
+#[derive(Clone, Debug, Default)]
+pub struct Expr {
+    nodes: Vec<Node>,
+}
+
+/// Round a `log₂` bound up by more than the `f64` rounding of the few operations that
+/// produced it (each relative `2⁻⁵³`): the bounds of B107 stay upper bounds.
+fn up(x: f64) -> f64 {
+    x + x.abs() * 2f64.powi(-40) + 2f64.powi(-20)
+}
+
+/// An outward-rounded interval `[lo, hi]` of `rug` floats at one precision.
+#[derive(Clone, Debug)]
+struct Enc {
+    lo: Float,
+    hi: Float,
+}
+
+impl Enc {
+    fn of(q: &Rational, prec: u32) -> Enc {
+        Enc {
+            lo: Float::with_val_round(prec, q, Round::Down).0,
+            hi: Float::with_val_round(prec, q, Round::Up).0,
+        }
+    }
+    fn add(&self, o: &Enc, prec: u32) -> Enc {
+        Enc {
+            lo: Float::with_val_round(prec, &self.lo + &o.lo, Round::Down).0,
+            hi: Float::with_val_round(prec, &self.hi + &o.hi, Round::Up).0,
+        }
+    }
+    fn sub(&self, o: &Enc, prec: u32) -> Enc {
+        Enc {
+            lo: Float::with_val_round(prec, &self.lo - &o.hi, Round::Down).0,
+            hi: Float::with_val_round(prec, &self.hi - &o.lo, Round::Up).0,
+        }
+    }
+    /// The product: the smallest and largest of the four end products, each rounded in
+    /// its direction.
+    fn mul(&self, o: &Enc, prec: u32) -> Enc {
+        let ends = [
+            (&self.lo, &o.lo),
+            (&self.lo, &o.hi),
+            (&self.hi, &o.lo),
+            (&self.hi, &o.hi),
+        ];
+        let down = ends.map(|(a, b)| Float::with_val_round(prec, a * b, Round::Down).0);
+        let upw = ends.map(|(a, b)| Float::with_val_round(prec, a * b, Round::Up).0);
+        let lo = down.into_iter().reduce(|a, b| if b < a { b } else { a });
+        let hi = upw.into_iter().reduce(|a, b| if b > a { b } else { a });
+        Enc {
+            lo: lo.unwrap_or_else(|| Float::with_val(prec, f64::NAN)),
+            hi: hi.unwrap_or_else(|| Float::with_val(prec, f64::NAN)),
+        }
+    }
+    /// The quotient, `None` unless the divisor excludes 0.
+    fn div(&self, o: &Enc, prec: u32) -> Option<Enc> {
+        let positive = o.lo > 0;
+        let negative = o.hi < 0;
+        if !positive && !negative {
+            return None;
+        }
+        let ends = [
+            (&self.lo, &o.lo),
+            (&self.lo, &o.hi),
+            (&self.hi, &o.lo),
+            (&self.hi, &o.hi),
+        ];
+        let down = ends.map(|(a, b)| Float::with_val_round(prec, a / b, Round::Down).0);
+        let upw = ends.map(|(a, b)| Float::with_val_round(prec, a / b, Round::Up).0);
+        let lo = down.into_iter().reduce(|a, b| if b < a { b } else { a })?;
+        let hi = upw.into_iter().reduce(|a, b| if b > a { b } else { a })?;
+        Some(Enc { lo, hi })
+    }
+    /// The square root of an enclosure of a non-negative number; `None` when `lo < 0`.
+    fn sqrt(&self, prec: u32) -> Option<Enc> {
+        if self.lo.is_sign_negative() && !self.lo.is_zero() {
+            return None;
+        }
+        Some(Enc {
+            lo: Float::with_val_round(prec, self.lo.sqrt_ref(), Round::Down).0,
+            hi: Float::with_val_round(prec, self.hi.sqrt_ref(), Round::Up).0,
+        })
+    }
+    fn is_number(&self) -> bool {
+        !self.lo.is_nan() && !self.hi.is_nan() && self.lo <= self.hi
+    }
+}
+
+impl Expr {
+    /// An empty expression.
+    pub fn new() -> Expr {
+        Expr::default()
+    }
+
+    /// The number of nodes.
+    pub fn len(&self) -> usize {
+        self.nodes.len()
+    }
+
+    /// Whether there is no node.
+    pub fn is_empty(&self) -> bool {
+        self.nodes.is_empty()
+    }
+
+    fn push(&mut self, op: Op, log_u: f64, log_l: f64) -> Id {
+        let id = Id(u32::try_from(self.nodes.len()).unwrap_or(u32::MAX));
+        self.nodes.push(Node {
+            op,
+            log_u: up(log_u),
+            log_l: up(log_l),
+        });
+        id
+    }
+
+    fn bounds(&self, a: Id) -> (f64, f64) {
+        let n = &self.nodes[a.0 as usize];
+        (n.log_u, n.log_l)
+    }
+
+    /// The rational `p/q` (`q > 0`): B107's `u = max(|p|, 1)`, `l = q`, their `log₂` bounded
+    /// by bit lengths (`0` for `1`: an integer leaf adds nothing to any `l`).
+    pub fn rational(&mut self, q: Rational) -> Id {
+        let bits = |n: &Integer| {
+            if *n == 1 || *n == -1 || n.is_zero() {
+                0.0
+            } else {
+                f64::from(n.significant_bits())
+            }
+        };
+        let (log_u, log_l) = (bits(q.numer()), bits(q.denom()));
+        self.push(Op::Rational(q), log_u, log_l)
+    }
+
+    /// `a + b`: `u = u_a l_b + l_a u_b`, `l = l_a l_b`.
+    pub fn add(&mut self, a: Id, b: Id) -> Id {
+        let ((ua, la), (ub, lb)) = (self.bounds(a), self.bounds(b));
+        self.push(Op::Add(a, b), (ua + lb).max(la + ub) + 1.0, la + lb)
+    }
+
+    /// `a − b`: the bounds of [`Expr::add`].
+    pub fn sub(&mut self, a: Id, b: Id) -> Id {
+        let ((ua, la), (ub, lb)) = (self.bounds(a), self.bounds(b));
+        self.push(Op::Sub(a, b), (ua + lb).max(la + ub) + 1.0, la + lb)
+    }
+
+    /// `a · b`: `u = u_a u_b`, `l = l_a l_b`.
+    pub fn mul(&mut self, a: Id, b: Id) -> Id {
+        let ((ua, la), (ub, lb)) = (self.bounds(a), self.bounds(b));
+        self.push(Op::Mul(a, b), ua + ub, la + lb)
+    }
+
+    /// `a / b` (`b ≠ 0`): `u = u_a l_b`, `l = l_a u_b`.
+    pub fn div(&mut self, a: Id, b: Id) -> Id {
+        let ((ua, la), (ub, lb)) = (self.bounds(a), self.bounds(b));
+        self.push(Op::Div(a, b), ua + lb, la + ub)
+    }
+
+    /// `√a` (`a ≥ 0`): `u = √(u_a l_a)`, `l = l_a` when `u_a ≥ l_a`, otherwise `u = u_a`,
+    /// `l = √(u_a l_a)`; the `+1` of an integer square root is one more bit.
+    pub fn sqrt(&mut self, a: Id) -> Id {
+        let (ua, la) = self.bounds(a);
+        let half = f64::midpoint(ua, la) + 1.0;
+        let (u, l) = if ua >= la { (half, la) } else { (ua, half) };
+        self.push(Op::Sqrt(a), u, l)
+    }
+
+    /// The nodes `root` depends on (itself included), in index order.
+    fn cone(&self, root: Id) -> Vec<bool> {
+        let mut used = vec![false; root.0 as usize + 1];
+        used[root.0 as usize] = true;
+        for i in (0..=root.0 as usize).rev() {
+            if !used[i] {
+                continue;
+            }
+            match self.nodes[i].op {
+                Op::Rational(_) => {}
+                Op::Add(a, b) | Op::Sub(a, b) | Op::Mul(a, b) | Op::Div(a, b) => {
+                    used[a.0 as usize] = true;
+                    used[b.0 as usize] = true;
+                }
+                Op::Sqrt(a) => used[a.0 as usize] = true,
+            }
+        }
+        used
+    }
+
+    /// B107's `B(E) = (D − 1)·log₂ u(E) + log₂ l(E)` rounded up, with `D = 2^m` for the `m`
+    /// distinct square roots `root` depends on: `E ≠ 0` implies `|E| ≥ 2^{−B}`. `None`
+    /// past 2⁴⁰ radicals' degree.
+    pub fn separation_bits(&self, root: Id) -> Option<f64> {
+        let used = self.cone(root);
+        let m = used
+            .iter()
+            .zip(&self.nodes)
+            .filter(|(u, n)| **u && matches!(n.op, Op::Sqrt(_)))
+            .count();
+        if m > 40 {
+            return None;
+        }
+        let d_minus_1 = 2f64.powi(i32::try_from(m).ok()?) - 1.0;
+        let (u, l) = self.bounds(root);
+        Some(up(d_minus_1 * u.max(0.0) + l.max(0.0)))
+    }
+
+    /// An outward-rounded enclosure of `root` at `prec` bits, `None` where a divisor or a
+    /// radicand is not separated from 0 (or negative) at this precision.
+    fn enclose(&self, root: Id, prec: u32) -> Option<Enc> {
+        let used = self.cone(root);
+        let mut val: Vec<Option<Enc>> = vec![None; used.len()];
+        for (i, node) in self.nodes.iter().enumerate().take(used.len()) {
+            if !used[i] {
+                continue;
+            }
+            let get = |a: Id| val[a.0 as usize].as_ref();
+            let v = match &node.op {
+                Op::Rational(q) => Enc::of(q, prec),
+                Op::Add(a, b) => get(*a)?.add(get(*b)?, prec),
+                Op::Sub(a, b) => get(*a)?.sub(get(*b)?, prec),
+                Op::Mul(a, b) => get(*a)?.mul(get(*b)?, prec),
+                Op::Div(a, b) => get(*a)?.div(get(*b)?, prec)?,
+                Op::Sqrt(a) => get(*a)?.sqrt(prec)?,
+            };
+            if !v.is_number() {
+                return None;
+            }
+            val[i] = Some(v);
+        }
+        val.pop().flatten()
+    }
+
+    /// The exact sign of `root` (proof: B107): enclosures at 256, 512, … bits until one
+    /// excludes 0 (the sign), or, at a precision past `B + 64`, lies strictly inside
+    /// `(−2^{−B}, 2^{−B})` (then `root = 0`). `None` when neither happens by `max_bits`
+    /// (by `min(max_bits, 2¹⁶)` when `B + 64` exceeds `max_bits`: no zero can be proved).
+    pub fn sign(&self, root: Id, max_bits: u32) -> Option<Sign> {
+        let bound = self.separation_bits(root);
+        // Past the reach of the zero rule only a sign can come out: stop at 2¹⁶ bits.
+        let max_bits = match bound {
+            Some(b) if b + 64.0 <= f64::from(max_bits) => max_bits,
+            _ => max_bits.min(1 << 16),
+        };
+        let mut prec: u32 = 256;
+        loop {
+            if let Some(x) = self.enclose(root, prec) {
+                if x.lo > 0 {
+                    return Some(Sign::Positive);
+                }
+                if x.hi < 0 {
+                    return Some(Sign::Negative);
+                }
+                if let Some(b) = bound.filter(|&b| f64::from(prec) >= b + 64.0) {
+                    // |E| ≤ max(|lo|, |hi|) < 2^{−B} ≤ sep(E) proves E = 0.
+                    let limit = Float::with_val(64, 1) >> exponent(b)?;
+                    let inside =
+                        |f: &Float| f.clone().abs().partial_cmp(&limit) == Some(Ordering::Less);
+                    if inside(&x.lo) && inside(&x.hi) {
+                        return Some(Sign::Zero);
+                    }
+                }
+            }
+            if prec >= max_bits {
+                return None;
+            }
+            prec = prec.saturating_mul(2).min(max_bits);
+        }
+    }
+}
+
+/// `⌈b⌉` as a shift, `None` past `i32` range.
+fn exponent(b: f64) -> Option<u32> {
+    let c = b.ceil();
+    (c >= 0.0 && c < f64::from(i32::MAX)).then_some(c as u32)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
+
+    fn q(e: &mut Expr, n: i64, d: i64) -> Id {
+        e.rational(Rational::from((n, d)))
+    }
+
+    /// The exact sign of `p + q√r` (`r ≥ 0`) by squaring with sign tracking in ℚ: the
+    /// oracle of the single-radical test.
+    fn squaring_sign(p: &Rational, q: &Rational, r: &Rational) -> Sign {
+        let s = |x: &Rational| Sign::of_ordering(x.cmp0());
+        let (sp, sq) = (s(p), if r.is_zero() { Sign::Zero } else { s(q) });
+        match (sp, sq) {
+            (Sign::Zero, t) | (t, Sign::Zero) => t,
+            (a, b) if a == b => a,
+            _ => match Rational::from(p * p).cmp(&(Rational::from(q * q) * r)) {
+                Ordering::Greater => sp,
+                Ordering::Less => sq,
+                Ordering::Equal => Sign::Zero,
+            },
+        }
+    }
+
+    /// proof: B107 — on 400 random `p + q√r` (a third of them with `r` a square and `p`
+    /// chosen to cancel, so exactly 0), the separation-bound sign equals the squaring
+    /// oracle's.
+    #[test]
+    fn b107_single_radical_signs_agree_with_exact_squaring() {
+        let mut rng = ChaCha8Rng::seed_from_u64(107);
+        let mut zeros = 0;
+        for case in 0..400 {
+            let qq = Rational::from((rng.gen_range(-50i64..50), rng.gen_range(1i64..30)));
+            let (r, p) = if case % 3 == 0 {
+                let t = Rational::from((rng.gen_range(0i64..40), rng.gen_range(1i64..20)));
+                (Rational::from(&t * &t), -Rational::from(&qq * &t))
+            } else {
+                (
+                    Rational::from((rng.gen_range(0i64..400), rng.gen_range(1i64..40))),
+                    Rational::from((rng.gen_range(-900i64..900), rng.gen_range(1i64..40))),
+                )
+            };
+            let mut e = Expr::new();
+            let (pi, qi, ri) = (
+                e.rational(p.clone()),
+                e.rational(qq.clone()),
+                e.rational(r.clone()),
+            );
+            let root = e.sqrt(ri);
+            let term = e.mul(qi, root);
+            let x = e.add(pi, term);
+            let want = squaring_sign(&p, &qq, &r);
+            zeros += usize::from(want == Sign::Zero);
+            assert_eq!(e.sign(x, 1 << 16), Some(want), "{p} + {qq}·√{r}");
+        }
+        assert!(zeros > 100, "the zero cases occur ({zeros})");
+    }
+
+    /// proof: B107 — denesting identities `√(a + √b) = √((a + c)/2) + √((a − c)/2)` with
+    /// `b = a² − c²` are exactly 0 (three radicals under one), and the same plus or minus
+    /// `2⁻ᵏ` (k up to 2 000, far below any enclosure the identity's 256-bit first try
+    /// sees) is decided with the sign of the perturbation.
+    #[test]
+    fn b107_denesting_identities_are_zero_and_their_perturbations_are_not() {
+        let mut rng = ChaCha8Rng::seed_from_u64(7);
+        for _ in 0..40 {
+            let c = rng.gen_range(1i64..60);
+            let a = c + rng.gen_range(1i64..60);
+            let mut e = Expr::new();
+            let (ai, ci) = (q(&mut e, a, 1), q(&mut e, c, 1));
+            let bi = q(&mut e, a * a - c * c, 1);
+            let rb = e.sqrt(bi);
+            let inner = e.add(ai, rb);
+            let lhs = e.sqrt(inner);
+            let half = q(&mut e, 1, 2);
+            let (s, d) = (e.add(ai, ci), e.sub(ai, ci));
+            let (s2, d2) = (e.mul(s, half), e.mul(d, half));
+            let (r1, r2) = (e.sqrt(s2), e.sqrt(d2));
+            let rhs = e.add(r1, r2);
+            let zero = e.sub(lhs, rhs);
+            assert_eq!(e.sign(zero, 1 << 16), Some(Sign::Zero), "a = {a}, c = {c}");
+            for k in [10u32, 300, 2000] {
+                let eps = e.rational(Rational::from((1, Integer::from(1) << k)));
+                let up = e.add(zero, eps);
+                let down = e.sub(zero, eps);
+                assert_eq!(e.sign(up, 1 << 16), Some(Sign::Positive), "+2^-{k}");
+                assert_eq!(e.sign(down, 1 << 16), Some(Sign::Negative), "-2^-{k}");
+            }
+        }
+    }
+
+    /// Control of the zero rule: at a precision cap below `B + 64` a true zero is not
+    /// proved (`None`, never a sign), and a number `2^{−B−10}` away from 0 — below the
+    /// bound the rule relies on only if the bound were wrong — is never called zero.
+    #[test]
+    fn b107_no_zero_without_the_precision_the_bound_asks_for() {
+        let mut e = Expr::new();
+        let (two, three, six) = (q(&mut e, 2, 1), q(&mut e, 3, 1), q(&mut e, 6, 1));
+        let (r2, r3, r6) = (e.sqrt(two), e.sqrt(three), e.sqrt(six));
+        let p = e.mul(r2, r3);
+        let zero = e.sub(p, r6);
+        let b = e.separation_bits(zero).expect("a bound");
+        assert!(b > 0.0);
+        assert_eq!(e.sign(zero, 1 << 12), Some(Sign::Zero));
+        // A cap of 256 bits is enough here only when B + 64 ≤ 256.
+        assert_eq!(b + 64.0 <= 256.0, e.sign(zero, 256) == Some(Sign::Zero));
+        let k = b.ceil() as u32 + 10;
+        let eps = e.rational(Rational::from((1, Integer::from(1) << k)));
+        let near = e.add(zero, eps);
+        assert_eq!(e.sign(near, 1 << 16), Some(Sign::Positive));
+    }
+}
