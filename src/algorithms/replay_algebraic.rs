@@ -35,7 +35,7 @@ pub enum Item {
 }
 
 /// Largest precision of an enclosure in [`delaunay_sign`].
-pub const ALGEBRAIC_BITS: u32 = 1 << 22;
+pub const ALGEBRAIC_BITS: u32 = 1 << 18;
 
 /// A quotient `num/den` of division-free expressions, `den > 0` (`None`: 1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -19,51 +19,21 @@
 //! assert_eq!(planar_chord([&i, &j, &k, &l_up]), None);
 //! ```
 
+use crate::geometry::exact3d::{opposite_in_plane, squared_distance};
 use rug::Rational;
 
 /// A point of ℝ³ with exact rational coordinates.
 pub type Point = [Rational; 3];
 
-fn minus(a: &Point, b: &Point) -> Point {
-    [
-        Rational::from(&a[0] - &b[0]),
-        Rational::from(&a[1] - &b[1]),
-        Rational::from(&a[2] - &b[2]),
-    ]
-}
-
-fn cross(a: &Point, b: &Point) -> Point {
-    [
-        Rational::from(&a[1] * &b[2]) - Rational::from(&a[2] * &b[1]),
-        Rational::from(&a[2] * &b[0]) - Rational::from(&a[0] * &b[2]),
-        Rational::from(&a[0] * &b[1]) - Rational::from(&a[1] * &b[0]),
-    ]
-}
-
-fn dot(a: &Point, b: &Point) -> Rational {
-    Rational::from(&a[0] * &b[0]) + Rational::from(&a[1] * &b[1]) + Rational::from(&a[2] * &b[2])
-}
-
-/// The exact squared distance `|a − b|²`.
-pub fn squared_distance(a: &Point, b: &Point) -> Rational {
-    let d = minus(a, b);
-    dot(&d, &d)
-}
-
 /// The squared new length `|p_k − p_l|²` of the Euclidean flip of the hinge `i j | k l`
 /// (triangles `ijk` and `jil`), given the corners' positions `[p_i, p_j, p_k, p_l]`, when
 /// the four points are coplanar and `p_k`, `p_l` lie strictly on opposite sides of the
-/// line `p_i p_j` (proof: B106): with `c_k = (p_j − p_i) × (p_k − p_i)` and
-/// `c_l = (p_j − p_i) × (p_l − p_i)`, coplanar means `c_k · (p_l − p_i) = 0` and opposite
-/// sides means `c_k · c_l < 0`. Valid only when the five lengths of the hinge are chordal;
-/// `None` otherwise (the caller then encloses the unfolded distance).
+/// line `p_i p_j` ([`opposite_in_plane`], exact; proof: B106). Valid only when the five
+/// lengths of the hinge are chordal; `None` otherwise (the caller then encloses the
+/// unfolded distance).
 pub fn planar_chord(p: [&Point; 4]) -> Option<Rational> {
     let [i, j, k, l] = p;
-    let a = minus(j, i);
-    let (ck, cl) = (cross(&a, &minus(k, i)), cross(&a, &minus(l, i)));
-    let coplanar = dot(&ck, &minus(l, i)).is_zero();
-    let opposite = dot(&ck, &cl).cmp0() == std::cmp::Ordering::Less;
-    (coplanar && opposite).then(|| squared_distance(k, l))
+    opposite_in_plane(i, j, k, l).then(|| squared_distance(k, l))
 }
 
 #[cfg(test)]

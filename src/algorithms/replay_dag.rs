@@ -391,7 +391,7 @@ impl FlipDag {
 }
 
 /// Flips a sign decision may reach back through (one radical each, proof: B107).
-pub const MAX_RADICALS: usize = 24;
+pub const MAX_RADICALS: usize = 10;
 /// The `f64` hull of a length in the rung's range (the eager replay's first rung).
 fn hull(len: &Len) -> Option<Bounds> {
     f64_enclosure(len).and_then(|x| in_range([*x.lo(), *x.hi()]))

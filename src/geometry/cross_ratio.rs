@@ -1,8 +1,7 @@
 //! Length cross ratios of interior edges (notes Eq. 12; docs/catalogue.md §4).
 
 use crate::mesh::{Edge, HalfEdge, Mesh};
-use crate::scalar::Real;
-use rug::Rational;
+use crate::scalar::{Field, Real};
 
 /// The four half-edges around interior edge `e`, in the order `(il, jk, ki, lj)` of
 /// `c_ij = (ℓ_il ℓ_jk)/(ℓ_ki ℓ_lj)`, where `h = side(0) = i→j` lies in face `ijk` and its
@@ -28,26 +27,12 @@ pub fn cross_ratio_halfedges(mesh: &Mesh, e: Edge) -> Option<[HalfEdge; 4]> {
 /// let c = length_cross_ratios(&tet, &[1.0_f64; 6]);
 /// assert!(c.iter().all(|x| *x == Some(1.0)));
 /// ```
-pub fn length_cross_ratios<T: Real>(mesh: &Mesh, lengths: &[T]) -> Vec<Option<T>> {
+pub fn length_cross_ratios<T: Field>(mesh: &Mesh, lengths: &[T]) -> Vec<Option<T>> {
     let l = |h: HalfEdge| &lengths[h.edge().idx()];
     mesh.edges()
         .map(|e| {
             let [il, jk, ki, lj] = cross_ratio_halfedges(mesh, e)?;
             Some(l(il).clone() * l(jk) / &(l(ki).clone() * l(lj)))
-        })
-        .collect()
-}
-
-/// Exact length cross ratios in ℚ for rational lengths (docs/catalogue.md §4, "Exact arithmetic").
-/// `None` on boundary edges. Lengths must be nonzero.
-pub fn length_cross_ratios_exact(mesh: &Mesh, lengths: &[Rational]) -> Vec<Option<Rational>> {
-    let l = |h: HalfEdge| &lengths[h.edge().idx()];
-    mesh.edges()
-        .map(|e| {
-            let [il, jk, ki, lj] = cross_ratio_halfedges(mesh, e)?;
-            let num = Rational::from(l(il) * l(jk));
-            let den = Rational::from(l(ki) * l(lj));
-            Some(num / den)
         })
         .collect()
 }

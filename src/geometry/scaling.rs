@@ -2,7 +2,7 @@
 //! reconstruction of scale factors from two metrics with equal cross ratios (Theorem 8).
 
 use crate::mesh::{HalfEdge, Mesh};
-use crate::scalar::Real;
+use crate::scalar::{Field, Real};
 use rug::Rational;
 
 /// Conformal scaling `ℓ̃_ij = e^{(u_i+u_j)/2} ℓ_ij` (notes Eq. 10, docs/catalogue.md §4) with
@@ -59,15 +59,8 @@ pub fn conformal_scaling_exact(mesh: &Mesh, lengths: &[Rational], s: &[Rational]
 /// let e = lemma1_exp_u(&[3.0_f64, 4.0, 5.0], &[9.0, 12.0, 15.0]);
 /// assert!((e - 3.0).abs() < 1e-15);
 /// ```
-pub fn lemma1_exp_u<T: Real>(l: &[T; 3], lt: &[T; 3]) -> T {
+pub fn lemma1_exp_u<T: Field>(l: &[T; 3], lt: &[T; 3]) -> T {
     lt[0].clone() / &l[0] * &(l[1].clone() / &lt[1]) * &(lt[2].clone() / &l[2])
-}
-
-/// Lemma 1 in ℚ: `e^{u_i} = (ℓ̃_ij ℓ_jk ℓ̃_ki)/(ℓ_ij ℓ̃_jk ℓ_ki)` for rational lengths.
-pub fn lemma1_exp_u_exact(l: &[Rational; 3], lt: &[Rational; 3]) -> Rational {
-    let num = Rational::from(&lt[0] * &l[1]) * &lt[2];
-    let den = Rational::from(&l[0] * &lt[1]) * &l[2];
-    num / den
 }
 
 /// The three lengths `[ij, jk, ki]` of the face of `h = i→j`, read from `lengths`.
@@ -130,7 +123,7 @@ pub fn reconstruct_scale_factors<T: Real>(mesh: &Mesh, l: &[T], lt: &[T]) -> Rec
     }
 }
 
-/// Exact reconstruction in ℚ for rational lengths: corner values by [`lemma1_exp_u_exact`].
+/// Exact reconstruction in ℚ for rational lengths: corner values by [`lemma1_exp_u`] in ℚ.
 pub fn reconstruct_scale_factors_exact(
     mesh: &Mesh,
     l: &[Rational],
@@ -140,7 +133,7 @@ pub fn reconstruct_scale_factors_exact(
         .halfedges()
         .map(|h| {
             (!mesh.is_boundary_halfedge(h))
-                .then(|| lemma1_exp_u_exact(&face_lengths(mesh, l, h), &face_lengths(mesh, lt, h)))
+                .then(|| lemma1_exp_u(&face_lengths(mesh, l, h), &face_lengths(mesh, lt, h)))
         })
         .collect();
     Reconstruction {

@@ -50,7 +50,7 @@
 use super::directed::scaled_length;
 use super::ladder::{decide, Ladder, SignPredicate};
 use crate::mesh::{Edge, Face, HalfEdge, Mesh};
-use crate::scalar::{Certified, Interval, IntervalBound, Mpfr, Precision, Real, Sign, Stage};
+use crate::scalar::{Certified, Interval, IntervalBound, Mpfr, Precision, Real, Ring, Sign, Stage};
 use rug::Rational;
 
 /// The five lengths of the quadrilateral around edge `ij`: `ij` the edge, `jk, ki` the
@@ -400,7 +400,7 @@ fn filter_not_positive(k: f64, n: f64) -> Option<Sign> {
 /// `P = d·e·(b² + c² − a²) + b·c·(d² + e² − a²)` for the lengths `[a, b, c, d, e]` of
 /// [`Quad`] (docs/catalogue.md §5, Eq. 13), evaluated in `T`: rounded for point types, an enclosure
 /// for intervals ([`enclose_p`]).
-pub fn delaunay_p<T: Real>(q: &[T; 5]) -> T {
+pub fn delaunay_p<T: Ring>(q: &[T; 5]) -> T {
     let [a, b, c, d, e] = q;
     let a2 = a.clone() * a;
     let x = b.clone() * b + &(c.clone() * c) - &a2;
@@ -413,13 +413,9 @@ pub fn enclose_p<B: IntervalBound>(q: &[Interval<B>; 5]) -> Interval<B> {
     delaunay_p(q)
 }
 
-/// `P` in exact rational arithmetic.
+/// `P` in exact rational arithmetic: [`delaunay_p`] in ℚ.
 pub fn exact_p(q: [&Rational; 5]) -> Rational {
-    let [a, b, c, d, e] = q;
-    let a2 = Rational::from(a * a);
-    let x = Rational::from(b * b) + Rational::from(c * c) - &a2;
-    let y = Rational::from(d * d) + Rational::from(e * e) - &a2;
-    Rational::from(d * e) * x + Rational::from(b * c) * y
+    delaunay_p(&q.map(Clone::clone))
 }
 
 fn sign_of(q: &Rational) -> Sign {

@@ -2,25 +2,10 @@
 
 use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
 use rug::Rational;
-use std::ops::{Add, Mul, Sub};
 
 /// The ring operations the determinant formulas need, so one formula serves `f64` (the
 /// filter), `Interval<Mpfr>` (the enclosure) and `rug::Rational` (the exact value).
-pub(crate) trait Ring:
-    Clone
-    + for<'a> Add<&'a Self, Output = Self>
-    + for<'a> Sub<&'a Self, Output = Self>
-    + for<'a> Mul<&'a Self, Output = Self>
-{
-}
-
-impl<T> Ring for T where
-    T: Clone
-        + for<'a> Add<&'a T, Output = T>
-        + for<'a> Sub<&'a T, Output = T>
-        + for<'a> Mul<&'a T, Output = T>
-{
-}
+pub(crate) use crate::scalar::Ring;
 
 pub(crate) use crate::scalar::interval::next_up_f64 as next_up;
 

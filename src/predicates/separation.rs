@@ -93,9 +93,15 @@ impl Enc {
             hi: Float::with_val_round(prec, &self.hi - &o.lo, Round::Up).0,
         }
     }
-    /// The product: the smallest and largest of the four end products, each rounded in
-    /// its direction.
+    /// The product: for two non-negative enclosures `[lo·lo′, hi·hi′]`, otherwise the
+    /// smallest and largest of the four end products, each rounded in its direction.
     fn mul(&self, o: &Enc, prec: u32) -> Enc {
+        if self.lo >= 0 && o.lo >= 0 {
+            return Enc {
+                lo: Float::with_val_round(prec, &self.lo * &o.lo, Round::Down).0,
+                hi: Float::with_val_round(prec, &self.hi * &o.hi, Round::Up).0,
+            };
+        }
         let ends = [
             (&self.lo, &o.lo),
             (&self.lo, &o.hi),
@@ -287,17 +293,17 @@ impl Expr {
         val.pop().flatten()
     }
 
-    /// The exact sign of `root` (proof: B107): enclosures at 256, 512, … bits until one
-    /// excludes 0 (the sign), or, at a precision past `B + 64`, lies strictly inside
-    /// `(−2^{−B}, 2^{−B})` (then `root = 0`). `None` when neither happens by `max_bits`
-    /// (by `min(max_bits, 2¹⁶)` when `B + 64` exceeds `max_bits`: no zero can be proved).
+    /// The exact sign of `root` (proof: B107): an enclosure at 256 bits, then at `B + 64`
+    /// bits and doublings up to `max_bits`, until one excludes 0 (the sign) or, at a
+    /// precision of at least `B + 64`, lies strictly inside `(−2^{−B}, 2^{−B})` (then
+    /// `root = 0`). `None` when neither happens by `max_bits`, or by [`SIGN_ONLY_BITS`]
+    /// when `B + 64` exceeds `max_bits` (no zero can be proved).
     pub fn sign(&self, root: Id, max_bits: u32) -> Option<Sign> {
-        let bound = self.separation_bits(root);
-        // Past the reach of the zero rule only a sign can come out: stop at 2¹⁶ bits.
-        let max_bits = match bound {
-            Some(b) if b + 64.0 <= f64::from(max_bits) => max_bits,
-            _ => max_bits.min(1 << 16),
-        };
+        // The precision at which the zero rule applies, if within `max_bits`.
+        let bound = self
+            .separation_bits(root)
+            .filter(|&b| b + 64.0 <= f64::from(max_bits));
+        let zero_at = bound.and_then(|b| exponent(b + 64.0));
         let mut prec: u32 = 256;
         loop {
             if let Some(x) = self.enclose(root, prec) {
@@ -317,13 +323,26 @@ impl Expr {
                     }
                 }
             }
-            if prec >= max_bits {
+            // Without the zero rule in reach only a sign can come out: doublings up to
+            // `SIGN_ONLY_BITS`. With it, the next try is at its precision `B + 64` (a
+            // number no smaller enclosure separated from 0 is likely a zero), then
+            // doublings up to `max_bits`.
+            let cap = if zero_at.is_some() {
+                max_bits
+            } else {
+                max_bits.min(SIGN_ONLY_BITS)
+            };
+            if prec >= cap {
                 return None;
             }
-            prec = prec.saturating_mul(2).min(max_bits);
+            let next = prec.saturating_mul(2);
+            prec = zero_at.map_or(next, |z| z.max(next)).min(cap);
         }
     }
 }
+
+/// Largest precision of [`Expr::sign`] when no zero can be proved.
+pub const SIGN_ONLY_BITS: u32 = 1 << 13;
 
 /// `⌈b⌉` as a shift, `None` past `i32` range.
 fn exponent(b: f64) -> Option<u32> {

@@ -1,4 +1,5 @@
-//! Numbers: the generic [`Real`] trait and its backends.
+//! Numbers: the generic [`Real`] trait and its backends, beneath it the [`Field`] and
+//! [`Ring`] arithmetic they share with exact rationals ([`field`]).
 //!
 //! | backend | type | unit roundoff `u` |
 //! |---|---|---|
@@ -16,6 +17,7 @@ pub mod dual;
 pub mod exact;
 pub mod exp_length;
 mod f64_impl;
+pub mod field;
 pub mod interval;
 mod mpfr;
 mod nearest;
@@ -32,6 +34,7 @@ pub use dd::Dd;
 #[doc(hidden)]
 pub use dd::{PI_2_FIXED as DD_PI_2_FIXED, TWO_OVER_PI_BITS as DD_TWO_OVER_PI_BITS};
 pub use dual::Dual;
+pub use field::{Field, Ring};
 pub use interval::{Interval, IntervalBound};
 pub use mpfr::{Mpfr, Precision, PrecisionError};
 pub use nearest::nearest_f64;
@@ -40,7 +43,8 @@ pub use parse::{parse_rational, NumberError};
 use std::fmt::Debug;
 use std::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
 
-/// A real-number backend: `f64`, [`Dd`] or [`Mpfr`].
+/// A real-number backend: `f64`, [`Dd`] or [`Mpfr`]: a [`Field`] with `√`, `exp`, `ln` and
+/// the trigonometric functions.
 ///
 /// Precision travels with the value ([`Real::Ctx`]); there is no global precision state.
 /// Mixing two precisions of [`Mpfr`] is a programming error and panics instead of silently
@@ -59,8 +63,7 @@ use std::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
 /// assert_eq!(h.approx_f64(), 5.0);
 /// ```
 pub trait Real:
-    Clone
-    + Debug
+    Field
     + Send
     + Sync
     + 'static

@@ -10,9 +10,7 @@ use super::bounds::{eps, scale_factor_rel_error, SAFETY};
 use super::inputs::{count_mismatch, two_metrics, two_rational_metrics};
 use super::report::{check_lengths, check_rational_lengths, Tally};
 use super::verdict::{Settings, Verdict};
-use crate::geometry::cross_ratio::{
-    cross_ratio_halfedges, length_cross_ratios, length_cross_ratios_exact,
-};
+use crate::geometry::cross_ratio::{cross_ratio_halfedges, length_cross_ratios};
 use crate::geometry::scaling::{conformal_scaling, conformal_scaling_exact};
 use crate::mesh::Mesh;
 use crate::scalar::{nearest_f64, Real};
@@ -121,9 +119,9 @@ pub fn verify_equal_cross_ratios_exact(mesh: &Mesh, l: &[Rational], lt: &[Ration
         return v;
     }
     let mut tally = Tally::new(true, 0);
-    for (k, (a, b)) in length_cross_ratios_exact(mesh, l)
+    for (k, (a, b)) in length_cross_ratios(mesh, l)
         .into_iter()
-        .zip(length_cross_ratios_exact(mesh, lt))
+        .zip(length_cross_ratios(mesh, lt))
         .enumerate()
     {
         if let (Some(a), Some(b)) = (a, b) {

@@ -5,7 +5,7 @@
 
 use super::{Verdict, Witness};
 use crate::algorithms::flips::flip_ptolemy_exact;
-use crate::geometry::cross_ratio::length_cross_ratios_exact;
+use crate::geometry::cross_ratio::length_cross_ratios;
 use crate::geometry::scaling::{conformal_scaling_exact, reconstruct_scale_factors_exact};
 use crate::mesh::{Edge, FlipError, Mesh};
 use crate::scalar::nearest_f64;
@@ -86,10 +86,7 @@ pub fn check_definition_two_exact(
     };
     let mut witnesses = Vec::new();
     // (I ⇒ II): equal cross ratios on the common triangulation.
-    let (ca, cb) = (
-        length_cross_ratios_exact(&m, &la),
-        length_cross_ratios_exact(&m, lb),
-    );
+    let (ca, cb) = (length_cross_ratios(&m, &la), length_cross_ratios(&m, lb));
     for e in m.edges() {
         if ca[e.idx()] != cb[e.idx()] {
             witnesses.push(Witness {
