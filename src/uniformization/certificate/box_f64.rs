@@ -132,7 +132,7 @@ mod tests {
 
     /// The irregular icosahedron (binary64 positions), its lengths enclosed at 256 bits,
     /// and `u_v = (v mod 5)/50` as rationals.
-    fn case() -> (Mesh, Vec<I>, Vec<Rational>) {
+    pub(super) fn case() -> (Mesh, Vec<I>, Vec<Rational>) {
         let s = icosahedron();
         let p = Precision::new(BITS).unwrap();
         let base: Vec<I> = s
@@ -154,12 +154,12 @@ mod tests {
         (s.mesh, base, u)
     }
 
-    fn points(u: &[Rational]) -> Vec<I> {
+    pub(super) fn points(u: &[Rational]) -> Vec<I> {
         let p = Precision::new(BITS).unwrap();
         u.iter().map(|q| I::from_rational(q, p)).collect()
     }
 
-    fn boxed(u: &[Rational], r: &Rational) -> Vec<I> {
+    pub(super) fn boxed(u: &[Rational], r: &Rational) -> Vec<I> {
         let p = Precision::new(BITS).unwrap();
         u.iter()
             .map(|q| {
@@ -299,90 +299,6 @@ mod tests {
     }
 }
 
-/// The outward roundings of B36 (proofs/B36, **Terms**), each on a value whose nearest
-/// binary64 number lies on the wrong side, checked against 256-bit MPFR enclosures.
 #[cfg(test)]
-mod terms {
-    use super::{box_lengths, exp_pm_radius, I};
-    use crate::scalar::{Precision, Real};
-    use rug::float::Round;
-    use rug::{Float, Rational};
-
-    /// `[e^{x}]` at 256 bits, rounded down and up.
-    fn exp256(x: &Rational) -> (Float, Float) {
-        let lo = Float::with_val_round(256, x, Round::Down).0;
-        let hi = Float::with_val_round(256, x, Round::Up).0;
-        (
-            Float::with_val_round(256, lo.exp_ref(), Round::Down).0,
-            Float::with_val_round(256, hi.exp_ref(), Round::Up).0,
-        )
-    }
-
-    /// B36 terms `c⁻ ≤ e^{−r}` and `c⁺ ≥ e^{r}`: radii `k/1000` for which the nearest
-    /// binary64 number of `e^{r}` lies below it and that of `e^{−r}` above it.
-    #[test]
-    fn term_b36_exponential_factors_rounded_outward() {
-        let (mut up_tested, mut down_tested) = (false, false);
-        for k in 1..200 {
-            let r = Rational::from((k, 1000));
-            let (lo, hi) = exp_pm_radius(&r).expect("finite factors");
-            let (_, e_up) = exp256(&r);
-            let (e_down, _) = exp256(&Rational::from(-&r));
-            assert!(
-                Float::with_val(256, hi) >= e_up,
-                "r = {r}: e^r rounded inward"
-            );
-            assert!(
-                Float::with_val(256, lo) <= e_down,
-                "r = {r}: e^-r rounded inward"
-            );
-            up_tested |= Float::with_val(53, &e_up) < e_up;
-            down_tested |= Float::with_val(53, &e_down) > e_down;
-        }
-        assert!(
-            up_tested && down_tested,
-            "no radius had its nearest on the wrong side"
-        );
-    }
-
-    /// B36 term "every bound of `[ℓ(u)]·[e^{−r}, e^{r}]` rounded outward": exact binary64
-    /// centre lengths `c` (point enclosures) on boxes of radius `k/1000`, among which some
-    /// have the nearest binary64 number of `c·c⁺` below `c·e^{r}` (and of `c·c⁻` above
-    /// `c·e^{−r}`); a product rounded to nearest would leave the box there.
-    #[test]
-    fn term_b36_box_lengths_rounded_outward() {
-        let p = Precision::new(64).expect("precision");
-        let (mut up_tested, mut down_tested) = (false, false);
-        for k in [1, 7, 50, 199] {
-            let r = Rational::from((k, 1000));
-            let (lo_factor, hi_factor) = exp_pm_radius(&r).expect("finite factors");
-            let (_, e_up) = exp256(&r);
-            let (e_down, _) = exp256(&Rational::from(-&r));
-            for j in 0..400 {
-                let c = 1.0 + f64::from(j) / 997.0;
-                let l = box_lengths(&[I::from_f64(c, p)], &r).expect("a positive length");
-                let high = Float::with_val_round(256, c * &e_up, Round::Up).0;
-                let low = Float::with_val_round(256, c * &e_down, Round::Down).0;
-                assert!(Float::with_val(256, *l[0].hi()) >= high, "c = {c}, r = {r}");
-                assert!(Float::with_val(256, *l[0].lo()) <= low, "c = {c}, r = {r}");
-                up_tested |= Float::with_val(256, c * hi_factor) < high;
-                down_tested |= Float::with_val(256, c * lo_factor) > low;
-            }
-        }
-        assert!(
-            up_tested && down_tested,
-            "no product had its nearest on the wrong side"
-        );
-    }
-
-    /// B36 `None` when a bound leaves binary64: `e^{720}` overflows while `e^{−720}` is a
-    /// positive subnormal; a centre length `10³⁰⁸` times `e` overflows.
-    #[test]
-    fn term_b36_bounds_outside_binary64_are_refused() {
-        assert!(exp_pm_radius(&Rational::from(720)).is_none());
-        assert!(exp_pm_radius(&Rational::from(700)).is_some());
-        let p = Precision::new(64).expect("precision");
-        assert!(box_lengths(&[I::from_f64(1e308, p)], &Rational::from(1)).is_none());
-        assert!(box_lengths(&[I::from_f64(1e300, p)], &Rational::from(1)).is_some());
-    }
-}
+#[path = "box_f64_terms.rs"]
+mod terms;

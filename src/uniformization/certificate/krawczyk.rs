@@ -230,6 +230,23 @@ mod terms {
         assert!(image(0.6, 0.1).is_ok());
     }
 
+    /// B72 term `Y = [−r, r]ⁿ`, the whole box on both sides of `u`: `F(y) = 1 − y/2` has
+    /// its only zero at `y = 2` (closed form), outside `Y = [−1, 1]`. With `R = 2` (any real
+    /// matrix is allowed) `K = −2 + 2·Y = [−4, 0]` escapes; over one end of the box only
+    /// (`Y` read as `{1}`) it would be `{0}`, inside, a zero claimed where none is. Control:
+    /// `F(y) = 1/4 − y/2` with `R = −2` (the inverse of `J`) gives `K = {1/2}`, the zero.
+    #[test]
+    fn term_b72_image_over_the_whole_box() {
+        let jac = vec![vec![(0, point(-0.5))]];
+        let e =
+            krawczyk_image(&[point(1.0)], &jac, &[vec![2.0]], 1.0).expect_err("F has no zero in Y");
+        assert_eq!((*e.image.lo(), *e.image.hi()), (-4.0, 0.0));
+        assert_eq!(
+            krawczyk_image(&[point(0.25)], &jac, &[vec![-2.0]], 1.0).ok(),
+            Some(0.5)
+        );
+    }
+
     /// B72 term "inside the open box": `K = [0, 1]` touches the boundary of `Y = [−1, 1]`
     /// (existence but not uniqueness), on either side.
     #[test]
