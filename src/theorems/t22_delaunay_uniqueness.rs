@@ -19,9 +19,7 @@
 
 use super::{Settings, Verdict, Witness};
 use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
-use crate::algorithms::replay::{
-    replay_escalating, sign as replay_sign, tie_length, Len, Replayed,
-};
+use crate::algorithms::replay::{replay_escalating_lazy, FlippedLens, Replayed};
 use crate::io::Metric;
 use crate::mesh::relabel::isomorphisms;
 use crate::mesh::Mesh;
@@ -129,7 +127,7 @@ struct CertifiedRun {
 
 /// Flip `(mesh, lengths)` in the backend of `lengths` once per seed in `seeds` (random
 /// visit orders), replay each recorded flip sequence on the exact `input` metric with
-/// certified arithmetic ([`replay_escalating`], proof: B80) and compare the runs certified
+/// certified arithmetic ([`replay_escalating_lazy`], proof: B80) and compare the runs certified
 /// there (module documentation). Every comparison is about the one metric `input`: two
 /// runs in a rounded backend round their new lengths differently and so run on two
 /// different metrics, which refutes nothing. A run whose triangulation is not certified
@@ -183,7 +181,7 @@ pub fn check_delaunay_uniqueness_of<T: Real>(
             });
             continue;
         }
-        let (r, bits) = replay_escalating(
+        let (r, bits) = replay_escalating_lazy(
             mesh,
             input,
             &report.sequence,
@@ -207,7 +205,7 @@ pub fn check_delaunay_uniqueness_of<T: Real>(
         // At a tie both diagonals pass: flipping it gives a tie again (exact lengths where
         // Ptolemy's theorem keeps them exact; an open sign is undecided).
         for &e in &r.ties {
-            match tie_flip_sign(&r, e, kind, bits) {
+            match tie_flip_sign(&r, input, e) {
                 Some(Sign::Zero) => {}
                 Some(_) => witnesses.push(Witness {
                     element: e.to_string(),
@@ -218,9 +216,7 @@ pub fn check_delaunay_uniqueness_of<T: Real>(
                 }),
                 None => undecided.push(Witness {
                     element: e.to_string(),
-                    detail: format!(
-                        "seed {seed}: tie edge whose flip is not decided a tie at {bits} bits"
-                    ),
+                    detail: format!("seed {seed}: tie edge whose flip is not decided a tie"),
                     value: 0.0,
                 }),
             }
@@ -273,7 +269,7 @@ fn compare_runs(runs: &[CertifiedRun]) -> Vec<Witness> {
 const REPLAY_START_BITS: u32 = 128;
 
 /// Why a replay is not certified, in words.
-fn replay_gap(r: &Replayed) -> String {
+fn replay_gap(r: &Replayed<FlippedLens>) -> String {
     match &r.broken {
         Some((n, e, why)) => format!("flip {n} of the sequence, edge {e}: {why:?}"),
         None => format!(
@@ -296,16 +292,18 @@ fn strict_pairs(mesh: &Mesh, ties: &[crate::mesh::Edge]) -> PairCounts {
     strict
 }
 
-/// The certified sign of `D` of the tie `e` of the replay `r` after flipping it, its new
-/// length by Ptolemy's theorem (proof: B82).
-fn tie_flip_sign(r: &Replayed, e: crate::mesh::Edge, kind: FlipKind, bits: u32) -> Option<Sign> {
+/// The certified sign of `D` of the tie `e` of the replay `r` after flipping it: the tie
+/// flip recorded on a copy of the replay's flip DAG (its new length by Ptolemy's theorem,
+/// exact where the lengths are, B82), then the replay's rungs on the flipped
+/// quadrilateral, the algebraic one included (B107).
+fn tie_flip_sign(r: &Replayed<FlippedLens>, input: &Metric, e: crate::mesh::Edge) -> Option<Sign> {
     let q = QuadEdges::of(&r.mesh, e)?;
-    let new = tie_length(q.lengths(&r.lens), kind == FlipKind::Ptolemy, bits)?;
-    let (mut m, mut lens): (Mesh, Vec<Len>) = (r.mesh.clone(), r.lens.clone());
+    let (mut m, mut dag) = (r.mesh.clone(), r.lens.clone());
+    let none = vec![None; m.n_edges()];
+    dag.flip(input, e, q.edges, Some(m.quad_vertices(e)), true, &none)?;
     m.flip(e).ok()?;
-    lens[e.idx()] = new;
     let q2 = QuadEdges::of(&m, e)?;
-    replay_sign(&lens, q2.edges, bits)
+    dag.sign_open(input, q2.edges, &none)
 }
 
 /// Flip the planar triangulation `faces` of `points` (convex boundary) with Euclidean flips
