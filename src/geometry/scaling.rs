@@ -108,27 +108,8 @@ impl<T: Real> Reconstruction<T> {
 }
 
 /// Reconstruct scale factors from metrics `l`, `lt` on the same mesh by Lemma 1 in every
-/// face (see [`Reconstruction`]).
-pub fn reconstruct_scale_factors<T: Real>(mesh: &Mesh, l: &[T], lt: &[T]) -> Reconstruction<T> {
-    let corner_exp_u = mesh
-        .halfedges()
-        .map(|h| {
-            (!mesh.is_boundary_halfedge(h))
-                .then(|| lemma1_exp_u(&face_lengths(mesh, l, h), &face_lengths(mesh, lt, h)))
-        })
-        .collect();
-    Reconstruction {
-        corner_exp_u,
-        representative: representatives(mesh),
-    }
-}
-
-/// Exact reconstruction in ℚ for rational lengths: corner values by [`lemma1_exp_u`] in ℚ.
-pub fn reconstruct_scale_factors_exact(
-    mesh: &Mesh,
-    l: &[Rational],
-    lt: &[Rational],
-) -> Reconstruction<Rational> {
+/// face (see [`Reconstruction`]); any [`Field`], exactly in ℚ for rational lengths.
+pub fn reconstruct_scale_factors<T: Field>(mesh: &Mesh, l: &[T], lt: &[T]) -> Reconstruction<T> {
     let corner_exp_u = mesh
         .halfedges()
         .map(|h| {

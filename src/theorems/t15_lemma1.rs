@@ -13,7 +13,7 @@ use super::bounds::SAFETY;
 use super::inputs::{count_mismatch, two_metrics, two_rational_metrics};
 use super::report::Tally;
 use super::verdict::{Settings, Verdict};
-use crate::geometry::scaling::{reconstruct_scale_factors, reconstruct_scale_factors_exact};
+use crate::geometry::scaling::reconstruct_scale_factors;
 use crate::mesh::{HalfEdge, Mesh};
 use crate::scalar::{nearest_f64, Real};
 use rug::Rational;
@@ -74,7 +74,7 @@ pub fn check_lemma1_exact(mesh: &Mesh, l: &[Rational], lt: &[Rational]) -> Verdi
     if let Some(v) = two_rational_metrics(mesh, l, lt) {
         return v;
     }
-    let r = reconstruct_scale_factors_exact(mesh, l, lt);
+    let r = reconstruct_scale_factors(mesh, l, lt);
     verify_lemma1_exact(mesh, l, lt, &r.corner_exp_u)
 }
 

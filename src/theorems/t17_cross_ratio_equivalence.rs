@@ -12,9 +12,7 @@ use super::inputs::{two_metrics, two_rational_metrics};
 use super::report::Tally;
 use super::t15_lemma1::{verify_lemma1, verify_lemma1_exact};
 use super::verdict::{Settings, Verdict};
-use crate::geometry::scaling::{
-    reconstruct_scale_factors, reconstruct_scale_factors_exact, Reconstruction,
-};
+use crate::geometry::scaling::{reconstruct_scale_factors, Reconstruction};
 use crate::mesh::{HalfEdge, Mesh};
 use crate::scalar::{nearest_f64, Real};
 use rug::Rational;
@@ -110,7 +108,7 @@ pub fn check_conformal_equivalence_exact(mesh: &Mesh, l: &[Rational], lt: &[Rati
     if let Some(v) = two_rational_metrics(mesh, l, lt) {
         return v;
     }
-    let r = reconstruct_scale_factors_exact(mesh, l, lt);
+    let r = reconstruct_scale_factors(mesh, l, lt);
     let mut tally = Tally::new(true, 0);
     for (h, rep, x, xr) in corners_and_representatives(mesh, &r) {
         if x != xr {

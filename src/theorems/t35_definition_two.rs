@@ -6,7 +6,7 @@
 use super::{Verdict, Witness};
 use crate::algorithms::flips::flip_ptolemy_exact;
 use crate::geometry::cross_ratio::length_cross_ratios;
-use crate::geometry::scaling::{conformal_scaling_exact, reconstruct_scale_factors_exact};
+use crate::geometry::scaling::{conformal_scaling_exact, reconstruct_scale_factors};
 use crate::mesh::{Edge, FlipError, Mesh};
 use crate::scalar::nearest_f64;
 use rug::Rational;
@@ -97,7 +97,7 @@ pub fn check_definition_two_exact(
         }
     }
     // (II ⇒ I): Lemma 1 per corner, one factor per vertex, then lb = scaled la.
-    let rec = reconstruct_scale_factors_exact(&m, &la, lb);
+    let rec = reconstruct_scale_factors(&m, &la, lb);
     let exp_u = rec.exp_u();
     for h in m.halfedges() {
         let v = m.tail(h).idx();

@@ -11,7 +11,7 @@
 )]
 
 use super::{bump, first_interior_edge, first_quad_side, not_applicable, TRIVIAL_CROSS_RATIOS};
-use crate::geometry::scaling::{reconstruct_scale_factors, reconstruct_scale_factors_exact};
+use crate::geometry::scaling::reconstruct_scale_factors;
 use crate::io::{Metric, Surface};
 use crate::mesh::builders;
 use crate::mesh::Mesh;
@@ -47,7 +47,7 @@ fn t15_nc(case: &Surface, prec: Prec, s: &Settings) -> Option<Verdict> {
         let (Metric::Lengths(a), Metric::Lengths(b)) = (&case.metric, &lt) else {
             return None;
         };
-        let mut r = reconstruct_scale_factors_exact(mesh, a, b);
+        let mut r = reconstruct_scale_factors(mesh, a, b);
         *r.corner_exp_u.get_mut(corner.idx())?.as_mut()? *= bump();
         return Some(t15_lemma1::verify_lemma1_exact(mesh, a, b, &r.corner_exp_u));
     }
