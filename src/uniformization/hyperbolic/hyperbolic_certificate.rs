@@ -748,6 +748,106 @@ mod terms {
         );
     }
 
+    /// The face `refine_hyperbolic` names when the binary64 Hessian cannot be factored:
+    /// `first_bad_face` on tetrahedra with pseudo-random base logarithmic lengths and scale
+    /// factors is the first face whose lengths `2 arsinh(e^{(x + u_i + u_j)/2})`, evaluated
+    /// at 128 bits, violate a strict triangle inequality (`u32::MAX` when none does; cases
+    /// within `10⁻⁶` of a tie skipped). Both outcomes and faces past `f1` occur.
+    #[test]
+    fn b39_first_bad_face_is_the_first_face_not_a_strict_triangle() {
+        let mesh = builders::tetrahedron().mesh;
+        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut next = |lo: f64, hi: f64| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            lo + (hi - lo) * (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let length = |x: f64, a: f64, b: f64| {
+            let lam = rug::Float::with_val(128, x) + a + b;
+            let s: rug::Float = (lam / 2u32).exp().asinh();
+            s * 2u32
+        };
+        let (mut none, mut late) = (0, 0);
+        for _ in 0..400 {
+            let base: Vec<f64> = (0..mesh.n_edges()).map(|_| next(-2.0, 2.0)).collect();
+            let u: Vec<f64> = (0..mesh.n_vertices()).map(|_| next(-1.5, 1.5)).collect();
+            let mut tie = false;
+            let expected = mesh.faces().find(|&f| {
+                let l = mesh.face_halfedges(f).map(|h| {
+                    let (i, j) = (mesh.tail(h).idx(), mesh.tip(h).idx());
+                    length(base[h.edge().idx()], u[i], u[j])
+                });
+                let slack = (0..3).map(|m| {
+                    let s = l[(m + 1) % 3].clone() + &l[(m + 2) % 3] - &l[m];
+                    s.to_f64()
+                });
+                let least = slack.fold(f64::INFINITY, f64::min);
+                tie |= least.abs() < 1e-6;
+                least <= 0.0
+            });
+            if tie {
+                continue;
+            }
+            let expected = expected.map_or(u32::MAX, |f| f.0);
+            assert_eq!(first_bad_face(&mesh, &base, &u), expected, "{base:?} {u:?}");
+            none += usize::from(expected == u32::MAX);
+            late += usize::from(expected != u32::MAX && expected >= 2);
+        }
+        assert!(none > 0 && late > 0, "{none} without, {late} past f1");
+    }
+
+    /// `certify_hyperbolic_on` refuses a `u` or enclosed lengths `base0` of the wrong
+    /// length, either one alone, as a typed error (genus 2, one vertex, a cone of angle
+    /// `π`). Control: the right lengths give a certificate.
+    #[test]
+    fn b39_certify_on_refuses_inputs_of_the_wrong_length() {
+        use super::super::error::UniformizeError;
+        use super::super::hyperbolic::{uniformize_hyperbolic, HyperbolicOptions};
+        let mesh = builders::genus(2).expect("genus 2");
+        let cone = Targets::from_multiples_of_pi(vec![Rational::from(1)]);
+        let options = HyperbolicOptions::default();
+        let sol = uniformize_hyperbolic(&mesh, &[1.0; 9], &cone, &options).expect("solved");
+        let p = prec();
+        let base0 = base_log_i(&lengths_i(&sol.lengths, p));
+        let u: Vec<Rational> = sol
+            .u
+            .iter()
+            .map(|&x| Rational::from_f64(x).unwrap())
+            .collect();
+        assert!(certify_hyperbolic_on(&sol, &base0, &u, p).is_ok());
+        let wrong = |r: Result<HyperbolicCertificate, HyperbolicError>| {
+            matches!(
+                r,
+                Err(HyperbolicError::Input(UniformizeError::TargetCount { .. }))
+            )
+        };
+        assert!(wrong(certify_hyperbolic_on(&sol, &base0, &u[1..], p)));
+        assert!(wrong(certify_hyperbolic_on(&sol, &base0[1..], &u, p)));
+    }
+
+    /// The L'Huilier area (B68's oracle) is `None` when a face is not a strict triangle:
+    /// sides `1, 1, 2.5` (a negative factor, whose square root would be NaN) and `1, 1, 2`
+    /// (a zero factor, area 0). Controls: the doubled equilateral triangle of side `a` has
+    /// area `2(π − 3α)`, `cos α = cosh a/(cosh a + 1)` (hyperbolic law of cosines), at
+    /// `a = 1` and at `a = 500`, nearly ideal (area `2π`), where `tanh` of the half
+    /// perimeter `375` from `e^{+2x}` would overflow to NaN.
+    #[test]
+    fn b68_lhuilier_area_none_unless_every_face_is_strict() {
+        let mesh = Mesh::from_faces(3, &[[0, 1, 2], [0, 2, 1]]).expect("doubled triangle");
+        assert!(total_area_lhuilier(&mesh, &[1.0, 1.0, 2.5]).is_none());
+        assert!(total_area_lhuilier(&mesh, &[1.0, 1.0, 2.0]).is_none());
+        for a in [1f64, 500.0] {
+            let alpha = (a.cosh() / (a.cosh() + 1.0)).acos();
+            let area = total_area_lhuilier(&mesh, &[a; 3]).expect("a triangle");
+            let expected = 2.0 * (std::f64::consts::PI - 3.0 * alpha);
+            assert!(
+                (area - expected).abs() < 1e-12,
+                "a = {a}: {area} vs {expected}"
+            );
+        }
+    }
+
     fn leibon_sum_f64(mesh: &Mesh, e: Edge, x: &[f64]) -> Option<f64> {
         super::super::hyperbolic_flips::leibon_sum(mesh, e, &|f: Edge| x[f.idx()]).ok()
     }
