@@ -15,7 +15,7 @@ use penner::io::Surface;
 use penner::mesh::{Edge, Mesh, Vertex};
 use penner::scalar::{Interval, Mpfr, Precision};
 use penner::uniformization::certificate::CertificateOutcome;
-use penner::uniformization::dirichlet_certificate::certify_disk_near;
+use penner::uniformization::dirichlet_certificate::{certify_disk, certify_disk_near};
 use penner::uniformization::sphere::{
     check_pole, uniformize_sphere, SphereOptions, SphereUniformization,
 };
@@ -202,6 +202,33 @@ fn b93_star_flips_make_rough_spheres_convex_and_certified() {
     assert!(before >= 3, "{before} of {solved}");
     assert_eq!(after, 0);
     assert!(not_certified.is_empty(), "{not_certified:?}");
+}
+
+/// B93, the disk certificate's own metric (`certify_disk`, no metric given): with flips at
+/// the pole it is `T₀`'s binary64 lengths carried through them in intervals, not the
+/// disk's binary64 lengths (rounded in the flips), so one of those moved by 10⁻³ changes
+/// nothing. Negative control: on the unjittered icosphere, which needs no flip at the pole
+/// and whose disk lengths are `T₀`'s, it holds and the same move is refused.
+#[test]
+fn b93_disk_certificate_reads_t0_through_the_flips_at_the_pole() {
+    let holds = |sol: &SphereUniformization| {
+        matches!(certify_disk(sol, 128).1, CertificateOutcome::Holds { .. })
+    };
+    let s = rough_sphere(1);
+    let mut sol = solved_with_a_star_flip(&s, &s.lengths::<f64>(()));
+    assert!(sol.star_prefix > 0 && holds(&sol));
+    sol.disk.lengths[0] *= 1.001;
+    assert!(holds(&sol), "the disk's binary64 lengths were read");
+    let smooth = exact_positions("icosphere", &icosphere(2));
+    let mut sol = uniformize_sphere(
+        &smooth.mesh,
+        &smooth.lengths::<f64>(()),
+        &SphereOptions::default(),
+    )
+    .unwrap();
+    assert!(sol.star_prefix == 0 && holds(&sol));
+    sol.disk.lengths[0] *= 1.001;
+    assert!(!holds(&sol), "control: a moved length is refused");
 }
 
 /// B93 (b): the Ptolemy length of the new boundary edge `bc` in the disk's coordinates is
