@@ -93,3 +93,51 @@ pub fn lobachevsky_enclosure(x: &Interval<Mpfr>) -> Interval<Mpfr> {
     }
     to_precision(&lo, &hi, p)
 }
+
+/// B52's extremum term (proofs/B52, **Terms**): `±M` joins the hull wherever `±π/6 + jπ`
+/// may lie in `[a, b]`, decided with the margin `δ = 2⁻⁶⁰` outward.
+#[cfg(test)]
+mod terms {
+    use super::*;
+
+    const BITS: u32 = 256;
+
+    /// A lower bound of `M = Л(π/6) = ½·Cl₂(π/3)`: the literature value of `Cl₂(π/3)`
+    /// (`1.01494160640965362502120255427452028594168930753029979…`, as in
+    /// tests/it/claims_energy.rs) halved and truncated to 50 digits.
+    fn m_below() -> Float {
+        let digits = "0.50747080320482681251060127713726014297084465376514";
+        Float::with_val_round(300, Float::parse(digits).expect("digits"), Round::Down).0
+    }
+
+    fn interval(a: &Float, b: &Float) -> Interval<Mpfr> {
+        Interval::new(
+            Mpfr(Float::with_val(BITS, a)),
+            Mpfr(Float::with_val(BITS, b)),
+        )
+    }
+
+    /// B52 term "`±M` where `±π/6 + jπ` may lie in `[a, b]`, margin `δ` outward": `π/6`
+    /// inside `[a, b]` by `2⁻⁶²` (below `δ`) at either end, where `Л` at the ends is below
+    /// `M` by about `4·10⁻³⁸` (`Л″(π/6) = −√3`), so only the extremum term reaches `M`; the
+    /// same for `−π/6` and `−M` by oddness. Control: `π/6` outside by `2⁻⁵⁰`, where `M` is
+    /// not attained, gives an upper end below `M`.
+    #[test]
+    fn term_b52_extremum_kept_within_delta_of_an_end() {
+        let p6 = Float::with_val(BITS, Constant::Pi) / 6u32;
+        let f = |x: f64| Float::with_val(BITS, x);
+        let near = f(1.0) >> 62u32;
+        let m = m_below();
+        let a = Float::with_val(BITS, &p6 - &near);
+        let b = Float::with_val(BITS, &p6 + &near);
+        for x in [interval(&a, &f(1.0)), interval(&f(0.2), &b)] {
+            let y = lobachevsky_enclosure(&x);
+            assert!(y.hi().0 >= m, "{x:?}: {:?}", y.hi());
+            let y = lobachevsky_enclosure(&-x.clone());
+            assert!(y.lo().0 <= -m.clone(), "−{x:?}: {:?}", y.lo());
+        }
+        let c = Float::with_val(BITS, &p6 - (f(1.0) >> 50u32));
+        let y = lobachevsky_enclosure(&interval(&f(0.2), &c));
+        assert!(y.hi().0 < m, "{:?}", y.hi());
+    }
+}
