@@ -379,7 +379,7 @@ fn flagged(state: &[u8], flag: u8) -> Vec<Edge> {
     state
         .iter()
         .enumerate()
-        .filter(|(_, &f)| f & flag != 0)
+        .filter(|&(_, &f)| f & flag != 0)
         .map(|(i, _)| Edge(i as u32))
         .collect()
 }

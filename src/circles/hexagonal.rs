@@ -229,7 +229,7 @@ fn component_at_origin(tris: &[Tri]) -> Vec<Tri> {
     }
     tris.iter()
         .zip(&seen)
-        .filter(|(_, &s)| s)
+        .filter(|&(_, &s)| s)
         .map(|(t, _)| *t)
         .collect()
 }

@@ -267,7 +267,7 @@ pub fn convergence_rate(history: &[f64], times: &[f64]) -> Option<f64> {
     let pts: Vec<(f64, f64)> = times
         .iter()
         .zip(history)
-        .filter(|(_, &r)| r > 0.0 && r.is_finite())
+        .filter(|&(_, &r)| r > 0.0 && r.is_finite())
         .map(|(&t, &r)| (t, -r.ln()))
         .collect();
     if pts.len() < 4 {

@@ -517,7 +517,7 @@ pub fn random_surface(g: u32, n_vertices: u32, seed: u64) -> Result<Mesh, BuildE
         })?;
     }
     let flips = 3 * m.n_edges();
-    Ok(random_flips(&m, flips, rng.gen()))
+    Ok(random_flips(&m, flips, rng.r#gen()))
 }
 
 /// Remove face `f`, making a hole (a new boundary loop, or enlarging one). Refused with a

@@ -64,19 +64,19 @@ impl Mesh {
     }
 
     /// All vertices.
-    pub fn vertices(&self) -> impl ExactSizeIterator<Item = Vertex> + Clone {
+    pub fn vertices(&self) -> impl ExactSizeIterator<Item = Vertex> + Clone + use<> {
         (0..self.n_vertices).map(Vertex)
     }
     /// All edges.
-    pub fn edges(&self) -> impl ExactSizeIterator<Item = Edge> + Clone {
+    pub fn edges(&self) -> impl ExactSizeIterator<Item = Edge> + Clone + use<> {
         (0..self.n_edges() as u32).map(Edge)
     }
     /// All faces.
-    pub fn faces(&self) -> impl ExactSizeIterator<Item = Face> + Clone {
+    pub fn faces(&self) -> impl ExactSizeIterator<Item = Face> + Clone + use<> {
         (0..self.n_faces() as u32).map(Face)
     }
     /// All half-edges.
-    pub fn halfedges(&self) -> impl ExactSizeIterator<Item = HalfEdge> + Clone {
+    pub fn halfedges(&self) -> impl ExactSizeIterator<Item = HalfEdge> + Clone + use<> {
         (0..self.n_halfedges() as u32).map(HalfEdge)
     }
 

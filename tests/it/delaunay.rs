@@ -126,7 +126,7 @@ fn adversarial_quad(rng: &mut ChaCha8Rng, family: u32) -> [f64; 5] {
     match family % 6 {
         // Random valid triangles.
         0 => {
-            let p: [[f64; 2]; 4] = std::array::from_fn(|_| [rng.gen(), rng.gen()]);
+            let p: [[f64; 2]; 4] = std::array::from_fn(|_| [rng.r#gen(), rng.r#gen()]);
             lengths_of(p)
         }
         // Four points on a circle (f64 coordinates): nearly cocircular.
@@ -141,10 +141,10 @@ fn adversarial_quad(rng: &mut ChaCha8Rng, family: u32) -> [f64; 5] {
             let eps = 10f64.powi(-rng.gen_range(3..14));
             [
                 1.0,
-                1.0 + eps * rng.gen::<f64>(),
+                1.0 + eps * rng.r#gen::<f64>(),
                 eps,
                 1.0,
-                eps * rng.gen::<f64>() + 1e-300,
+                eps * rng.r#gen::<f64>() + 1e-300,
             ]
         }
         // Cocircular rectangle 3-4-5 with a relative perturbation 1e-15 … 1e-17.

@@ -80,7 +80,7 @@ pub(crate) fn case(i: u64) -> Case {
         MetricKind::NearDegenerate
     };
     let nv = rng.gen_range(1..=18);
-    let mesh = surface(g, nv, boundary, rng.gen());
+    let mesh = surface(g, nv, boundary, rng.r#gen());
     let lengths = lengths(mesh.n_edges(), kind, &mut rng);
     Case {
         name: format!(

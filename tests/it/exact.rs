@@ -22,9 +22,9 @@ enum Expr {
 fn random_finite_f64(rng: &mut ChaCha8Rng) -> f64 {
     match rng.gen_range(0..4) {
         0 => rng.gen_range(-1e3..1e3),
-        1 => f64::from_bits(rng.gen::<u64>() & 0x800F_FFFF_FFFF_FFFF), // subnormal or ±0
+        1 => f64::from_bits(rng.r#gen::<u64>() & 0x800F_FFFF_FFFF_FFFF), // subnormal or ±0
         _ => loop {
-            let x = f64::from_bits(rng.gen());
+            let x = f64::from_bits(rng.r#gen());
             if x.is_finite() {
                 break x;
             }
@@ -36,7 +36,7 @@ fn gen_expr(rng: &mut ChaCha8Rng, depth: u32) -> Expr {
     if depth == 0 || rng.gen_bool(0.25) {
         return match rng.gen_range(0..4) {
             0 => Expr::Int(rng.gen_range(-5..=5)),
-            1 => Expr::Int([i64::MIN, i64::MAX, rng.gen()][rng.gen_range(0..3)]),
+            1 => Expr::Int([i64::MIN, i64::MAX, rng.r#gen()][rng.gen_range(0..3)]),
             _ => Expr::Float(random_finite_f64(rng)),
         };
     }
@@ -203,7 +203,7 @@ fn rug_round_trips_through_the_other_fields() {
 }
 
 fn random_integer(rng: &mut ChaCha8Rng) -> Integer {
-    let digits: Vec<u64> = (0..rng.gen_range(1..8)).map(|_| rng.gen()).collect();
+    let digits: Vec<u64> = (0..rng.gen_range(1..8)).map(|_| rng.r#gen()).collect();
     Integer::from_digits(&digits, rug::integer::Order::Lsf) >> rng.gen_range(0..64u32)
 }
 

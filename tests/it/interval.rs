@@ -36,7 +36,7 @@ enum Dom {
 }
 
 /// A random f64 in the domain, biased toward hard cases.
-fn gen(rng: &mut ChaCha8Rng, dom: Dom) -> f64 {
+fn sample(rng: &mut ChaCha8Rng, dom: Dom) -> f64 {
     let m: f64 = rng.gen_range(1.0..2.0);
     let e: i32 = rng.gen_range(-40..40);
     let s = if rng.gen_bool(0.5) { 1.0 } else { -1.0 };
@@ -64,7 +64,7 @@ fn gen(rng: &mut ChaCha8Rng, dom: Dom) -> f64 {
 
 /// A random interval `[lo, hi]` around a generated point: a point, a narrow or a wide one.
 fn gen_box(rng: &mut ChaCha8Rng, dom: Dom) -> (f64, f64) {
-    let x = gen(rng, dom);
+    let x = sample(rng, dom);
     let w = match rng.gen_range(0..3) {
         0 => 0.0,
         1 => x.abs() * 2f64.powi(-rng.gen_range(1..50)),
@@ -348,7 +348,7 @@ fn b22_f64_libm_error_within_allowance() {
     let mut worst = 0.0f64;
     for (name, f, r, dom) in fns {
         for _ in 0..n {
-            let x = gen(&mut rng, dom);
+            let x = sample(&mut rng, dom);
             let e = ulp_error(f(x), &r(reference(x)));
             assert!(
                 e <= f64::from(F64_LIBM_ULPS) / 2.0,
@@ -358,7 +358,7 @@ fn b22_f64_libm_error_within_allowance() {
         }
     }
     for _ in 0..n {
-        let (y, x) = (gen(&mut rng, Dom::Any), gen(&mut rng, Dom::Any));
+        let (y, x) = (sample(&mut rng, Dom::Any), sample(&mut rng, Dom::Any));
         let e = ulp_error(y.atan2(x), &reference(y).atan2(&reference(x)));
         assert!(
             e <= f64::from(F64_LIBM_ULPS) / 2.0,
@@ -433,7 +433,7 @@ fn b20_negative_control_round_to_nearest_and_shrunk_enclosures_miss() {
     let (mut rn_miss, mut shrunk_miss) = (0, 0);
     let p = prec(64);
     for _ in 0..n {
-        let x = gen(&mut rng, Dom::Trig);
+        let x = sample(&mut rng, Dom::Trig);
         // The reference enclosure used by the containment tests above.
         let mut v = reference(x);
         let o = v.sin_round(Round::Nearest);
@@ -466,7 +466,7 @@ fn b20_negative_control_round_to_nearest_and_shrunk_enclosures_miss() {
 fn b20_from_rational_encloses_and_is_tight() {
     let mut rng = ChaCha8Rng::seed_from_u64(61);
     for case in 0..cases(2000, 100_000) {
-        let num: i128 = rng.gen::<i64>().into();
+        let num: i128 = rng.r#gen::<i64>().into();
         let den: i128 = i128::from(rng.gen_range(1..u32::MAX)) << rng.gen_range(0..80);
         let q = Rational::from((num, den)) * Rational::from(rng.gen_range(1u64..u64::MAX));
         if !crate::support::in_shard(case) {

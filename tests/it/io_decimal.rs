@@ -150,7 +150,7 @@ fn decimal_to_f64_rounds_like_the_exact_conversion() {
     let mut checked = 0;
     for i in 0..cases(20_000, 1_000_000) {
         let bits = rng.gen_range(1..=127);
-        let n: u128 = rng.gen::<u128>() >> (128 - bits);
+        let n: u128 = rng.r#gen::<u128>() >> (128 - bits);
         let e: i32 = rng.gen_range(-340..=300);
         // Halfway cases: n·10^e just at a midpoint of two binary64 values.
         let (n, e) = if i % 10 == 0 {
@@ -472,7 +472,7 @@ fn b19_wide_to_f64_rounds_256_bit_integers_like_mpfr() {
             (limbs, -(k as i32))
         } else {
             let bits = rng.gen_range(1..=256u32);
-            let mut limbs: [u64; 4] = rng.gen();
+            let mut limbs: [u64; 4] = rng.r#gen();
             for (j, limb) in limbs.iter_mut().enumerate() {
                 let lo = 64 * j as u32;
                 if bits <= lo {

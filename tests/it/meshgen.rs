@@ -71,8 +71,8 @@ impl Embedded {
         for p in &mut self.pos {
             for c in p.iter_mut() {
                 // u1 ∈ (0, 1] so that ln u1 is finite.
-                let u1: f64 = 1.0 - rng.gen::<f64>();
-                let u2: f64 = rng.gen();
+                let u1: f64 = 1.0 - rng.r#gen::<f64>();
+                let u2: f64 = rng.r#gen();
                 *c += sigma * (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos();
             }
         }
@@ -237,7 +237,7 @@ pub fn planar_grid(n: u32, jitter: f64, seed: u64) -> Embedded {
 pub fn random_tetrahedron(seed: u64) -> Embedded {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let pos = (0..4)
-        .map(|_| [rng.gen(), rng.gen(), rng.gen()])
+        .map(|_| [rng.r#gen(), rng.r#gen(), rng.r#gen()])
         .collect::<Vec<[f64; 3]>>();
     // Orient faces outward-consistently (the orientation only needs to be consistent).
     Embedded {

@@ -11,7 +11,7 @@
 //!
 //! `PENNER_LONG=1` multiplies the random parameters (≥ 10⁵ check runs in all).
 
-use crate::adversarial_gen as gen;
+use crate::adversarial_gen as r#gen;
 use crate::adversarial_gen::PolygonSplit;
 use crate::support::cases;
 use penner::io::Surface;
@@ -245,7 +245,7 @@ pub fn cocircular_family() -> Vec<Surface> {
             ] {
                 let r = &radii[(seed as usize + n as usize) % radii.len()];
                 let c = [(seed as i64 % 3) - 1, 7 * (seed as i64 % 2)];
-                out.extend(gen::cocircular_polygon(
+                out.extend(r#gen::cocircular_polygon(
                     n,
                     split,
                     r,
@@ -253,13 +253,13 @@ pub fn cocircular_family() -> Vec<Surface> {
                     seed * 31 + u64::from(n),
                 ));
             }
-            out.extend(gen::cocircular_pillow(
+            out.extend(r#gen::cocircular_pillow(
                 n,
                 PolygonSplit::Fan,
                 PolygonSplit::Random(seed + 1),
                 seed * 17 + u64::from(n),
             ));
-            out.extend(gen::cocircular_pillow(
+            out.extend(r#gen::cocircular_pillow(
                 n,
                 PolygonSplit::Zigzag,
                 PolygonSplit::Zigzag,
@@ -281,11 +281,11 @@ pub fn regular_family() -> Vec<Surface> {
     };
     for n in 4..=top {
         for split in [PolygonSplit::Fan, PolygonSplit::Zigzag] {
-            out.extend(gen::rounded_regular_polygon(n, split, false));
+            out.extend(r#gen::rounded_regular_polygon(n, split, false));
         }
-        out.extend(gen::rounded_regular_polygon(n, PolygonSplit::Fan, true));
+        out.extend(r#gen::rounded_regular_polygon(n, PolygonSplit::Fan, true));
         for digits in [3, 9, 15] {
-            out.extend(gen::regular_fan_lengths(n, digits));
+            out.extend(r#gen::regular_fan_lengths(n, digits));
         }
     }
     out
@@ -295,7 +295,7 @@ pub fn regular_family() -> Vec<Surface> {
 pub fn needle_family() -> Vec<Surface> {
     [3, 6, 9, 12, 16, 20, 24]
         .into_iter()
-        .flat_map(gen::needles_and_caps)
+        .flat_map(r#gen::needles_and_caps)
         .collect()
 }
 
@@ -303,7 +303,7 @@ pub fn needle_family() -> Vec<Surface> {
 pub fn collinear_family() -> Vec<Surface> {
     [1, 2, 3, 5, 8, 12]
         .into_iter()
-        .flat_map(gen::nearly_collinear)
+        .flat_map(r#gen::nearly_collinear)
         .collect()
 }
 
@@ -312,7 +312,7 @@ pub fn perturbed_family() -> Vec<Surface> {
     let mut out = Vec::new();
     for seed in seeds(1, 400) {
         for k in [12, 16, 20, 24, 30, 40] {
-            out.extend(gen::perturbed(k, seed));
+            out.extend(r#gen::perturbed(k, seed));
         }
     }
     out
@@ -322,13 +322,13 @@ pub fn perturbed_family() -> Vec<Surface> {
 pub fn grid_family() -> Vec<Surface> {
     let mut out = Vec::new();
     for seed in seeds(1, 150) {
-        out.extend(gen::grids(2 + (seed % 3) as u32, seed));
-        out.extend(gen::voxel_box(1, 1, 1, Some(seed)));
-        out.extend(gen::voxel_box(2, 1, 1, Some(seed + 100)));
+        out.extend(r#gen::grids(2 + (seed % 3) as u32, seed));
+        out.extend(r#gen::voxel_box(1, 1, 1, Some(seed)));
+        out.extend(r#gen::voxel_box(2, 1, 1, Some(seed + 100)));
     }
-    out.extend(gen::voxel_box(1, 1, 1, None));
-    out.extend(gen::voxel_box(2, 2, 1, None));
-    out.extend(gen::cubes());
+    out.extend(r#gen::voxel_box(1, 1, 1, None));
+    out.extend(r#gen::voxel_box(2, 2, 1, None));
+    out.extend(r#gen::cubes());
     out
 }
 
@@ -338,25 +338,25 @@ pub fn representatives() -> Vec<Surface> {
         .into_iter()
         .filter(|s| s.mesh.n_faces() <= 20)
         .collect();
-    out.extend(gen::cocircular_polygon(
+    out.extend(r#gen::cocircular_polygon(
         6,
         PolygonSplit::Zigzag,
         &Rational::from(1),
         [0, 0],
         1,
     ));
-    out.extend(gen::cocircular_pillow(
+    out.extend(r#gen::cocircular_pillow(
         5,
         PolygonSplit::Fan,
         PolygonSplit::Zigzag,
         2,
     ));
-    out.extend(gen::rounded_regular_polygon(6, PolygonSplit::Fan, true));
-    out.extend(gen::needles_and_caps(6).into_iter().take(3));
-    out.extend(gen::nearly_collinear(3).into_iter().take(2));
-    out.extend(gen::perturbed(16, 0).into_iter().take(1));
-    out.extend(gen::perturbed(20, 0).into_iter().skip(3));
-    out.extend(gen::voxel_box(1, 1, 1, None));
+    out.extend(r#gen::rounded_regular_polygon(6, PolygonSplit::Fan, true));
+    out.extend(r#gen::needles_and_caps(6).into_iter().take(3));
+    out.extend(r#gen::nearly_collinear(3).into_iter().take(2));
+    out.extend(r#gen::perturbed(16, 0).into_iter().take(1));
+    out.extend(r#gen::perturbed(20, 0).into_iter().skip(3));
+    out.extend(r#gen::voxel_box(1, 1, 1, None));
     out
 }
 
@@ -365,7 +365,7 @@ pub fn scaled_family(ks: &[i32]) -> Vec<Surface> {
     let reps = representatives();
     let mut out = Vec::new();
     for &k in ks {
-        out.extend(reps.iter().map(|s| gen::scaled_by_pow2(s, k)));
+        out.extend(reps.iter().map(|s| r#gen::scaled_by_pow2(s, k)));
     }
     out
 }
@@ -482,10 +482,10 @@ fn never_fails_generators_give_valid_surfaces_of_each_kind() {
         s.as_ref()
             .map(|s| (s.mesh.is_closed(), s.mesh.euler_characteristic()))
     };
-    assert_eq!(closed(&gen::voxel_box(1, 1, 1, None)), Some((true, 2)));
-    assert_eq!(closed(&gen::voxel_box(2, 1, 3, Some(5))), Some((true, 2)));
+    assert_eq!(closed(&r#gen::voxel_box(1, 1, 1, None)), Some((true, 2)));
+    assert_eq!(closed(&r#gen::voxel_box(2, 1, 3, Some(5))), Some((true, 2)));
     assert_eq!(
-        closed(&gen::cocircular_pillow(
+        closed(&r#gen::cocircular_pillow(
             7,
             PolygonSplit::Fan,
             PolygonSplit::Zigzag,
@@ -498,19 +498,19 @@ fn never_fails_generators_give_valid_surfaces_of_each_kind() {
         PolygonSplit::Zigzag,
         PolygonSplit::Random(9),
     ] {
-        let s = gen::cocircular_polygon(8, split, &Rational::from(1), [0, 0], 1);
+        let s = r#gen::cocircular_polygon(8, split, &Rational::from(1), [0, 0], 1);
         assert_eq!(closed(&s), Some((false, 1)), "{split:?}");
         assert_eq!(s.map(|s| s.mesh.n_faces()), Some(6));
     }
-    assert_eq!(gen::needles_and_caps(24).len(), 7);
-    assert_eq!(gen::nearly_collinear(12).len(), 3);
-    assert_eq!(gen::perturbed(40, 1).len(), 5);
-    assert_eq!(gen::grids(3, 1).len(), 2);
-    assert!(gen::rounded_regular_polygon(7, PolygonSplit::Fan, true).is_some());
-    assert!(gen::regular_fan_lengths(9, 15).is_some());
+    assert_eq!(r#gen::needles_and_caps(24).len(), 7);
+    assert_eq!(r#gen::nearly_collinear(12).len(), 3);
+    assert_eq!(r#gen::perturbed(40, 1).len(), 5);
+    assert_eq!(r#gen::grids(3, 1).len(), 2);
+    assert!(r#gen::rounded_regular_polygon(7, PolygonSplit::Fan, true).is_some());
+    assert!(r#gen::regular_fan_lengths(9, 15).is_some());
     // The ties are exact: a Pythagorean point lies on its circle.
     let z = Rational::new();
-    let p = gen::pythagorean_point(&Rational::from((2, 7)), &Rational::from(1), [&z, &z]);
+    let p = r#gen::pythagorean_point(&Rational::from((2, 7)), &Rational::from(1), [&z, &z]);
     assert_eq!(
         Rational::from(&p[0] * &p[0]) + Rational::from(&p[1] * &p[1]),
         1
@@ -625,8 +625,8 @@ fn high_precision_sample() -> Vec<Surface> {
     cases.extend(needle_family().into_iter().step_by(4));
     cases.extend(collinear_family().into_iter().step_by(3));
     cases.extend(perturbed_family().into_iter().step_by(4));
-    cases.extend(gen::grids(2, 0));
-    cases.extend(gen::voxel_box(1, 1, 1, Some(0)));
+    cases.extend(r#gen::grids(2, 0));
+    cases.extend(r#gen::voxel_box(1, 1, 1, Some(0)));
     cases.extend(scaled_family(&[300, -1000]).into_iter().step_by(5));
     cases
 }

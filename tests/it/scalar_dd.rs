@@ -284,9 +284,9 @@ fn b09_dd_from_rational_within_u2() {
     let mut max = 0.0_f64;
     for i in 0..n {
         let num =
-            rug::Integer::from(rng.gen::<u64>()) * rug::Integer::from(rng.gen::<u64>()) + 1u32;
+            rug::Integer::from(rng.r#gen::<u64>()) * rug::Integer::from(rng.r#gen::<u64>()) + 1u32;
         let den =
-            rug::Integer::from(rng.gen::<u64>()) * rug::Integer::from(rng.gen::<u32>()) + 1u32;
+            rug::Integer::from(rng.r#gen::<u64>()) * rug::Integer::from(rng.r#gen::<u32>()) + 1u32;
         let shift = (i % 400) as i32 - 200;
         let mut r = Rational::from((num, den));
         if shift >= 0 {

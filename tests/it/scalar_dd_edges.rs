@@ -338,8 +338,8 @@ fn tiny_rationals(n: usize) -> Vec<Rational> {
                 let delta = Rational::from((1 + rng.gen_range(0..1000u32), 1u64 << 60));
                 (Rational::from(k) + Rational::from((1, 2)) + delta) >> 1074u32
             } else {
-                let num = rug::Integer::from(rng.gen::<u64>()) * rng.gen::<u64>() + 1u32;
-                let den = rug::Integer::from(rng.gen::<u64>()) + 1u32;
+                let num = rug::Integer::from(rng.r#gen::<u64>()) * rng.r#gen::<u64>() + 1u32;
+                let den = rug::Integer::from(rng.r#gen::<u64>()) + 1u32;
                 Rational::from((num, den)) >> rng.gen_range(900..1150u32)
             };
             r * s

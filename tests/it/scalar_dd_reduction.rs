@@ -70,7 +70,7 @@ fn near_multiple(rng: &mut ChaCha8Rng, kbits: u32) -> [Dd; 2] {
     let mut k = Integer::new();
     for _ in 0..limbs {
         k <<= 64u32;
-        k += rng.gen::<u64>();
+        k += rng.r#gen::<u64>();
     }
     k >>= 64 * limbs - bits;
     k |= Integer::from(1) << (bits - 1);

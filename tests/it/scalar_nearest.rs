@@ -240,7 +240,7 @@ fn random_rational(rng: &mut ChaCha8Rng) -> Rational {
         let n = rng.gen_range(1..=200u32);
         let mut x = Integer::new();
         for _ in 0..n.div_ceil(64) {
-            x = (x << 64u32) + rng.gen::<u64>();
+            x = (x << 64u32) + rng.r#gen::<u64>();
         }
         (x >> (n.div_ceil(64) * 64 - n)) | 1u32
     };

@@ -64,7 +64,7 @@ fn arguments(rng: &mut ChaCha8Rng, count: usize) -> Vec<f64> {
             }
             _ => rng.gen_range(0.5..1.0) * 2f64.powi(rng.gen_range(20..1023)),
         };
-        out.push(if rng.gen() { x } else { -x });
+        out.push(if rng.r#gen() { x } else { -x });
     }
     out
 }
@@ -121,7 +121,7 @@ fn mpfr_arguments(rng: &mut ChaCha8Rng, p: u32, count: usize) -> Vec<Float> {
             }
             _ => m << rng.gen_range(10..400u32),
         };
-        out.push(if rng.gen() { x } else { -x });
+        out.push(if rng.r#gen() { x } else { -x });
     }
     out
 }

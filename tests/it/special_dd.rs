@@ -82,7 +82,7 @@ fn arguments(rng: &mut ChaCha8Rng, count: usize) -> Vec<Dd> {
                 // Next to kπ/2 (k = 1, 2), offsets 2⁻⁴⁰ … 2⁻²: both sides of the 2⁻³⁰ switch.
                 let k: u32 = rng.gen_range(1..3);
                 let off = Float::with_val(400, rng.gen_range(0.5..1.0)) >> rng.gen_range(2..40u32);
-                let v = Float::with_val(400, &hp * k) + if rng.gen() { off } else { -off };
+                let v = Float::with_val(400, &hp * k) + if rng.r#gen() { off } else { -off };
                 nearest(&v)
             }
             3 => {
@@ -94,7 +94,7 @@ fn arguments(rng: &mut ChaCha8Rng, count: usize) -> Vec<Dd> {
                 Dd::from_parts(hi, lo_word(rng, hi))
             }
         };
-        out.push(if rng.gen() { x } else { -x });
+        out.push(if rng.r#gen() { x } else { -x });
     }
     out
 }
@@ -143,7 +143,7 @@ fn wide_arguments(rng: &mut ChaCha8Rng, count: usize) -> Vec<Dd> {
             1 => {
                 let n: u64 = rng.gen_range(3..1u64 << 60);
                 let off = Float::with_val(4000, rng.gen_range(0.5..1.0)) >> rng.gen_range(2..96u32);
-                let v = Float::with_val(4000, &hp * n) + if rng.gen() { off } else { -off };
+                let v = Float::with_val(4000, &hp * n) + if rng.r#gen() { off } else { -off };
                 nearest(&v)
             }
             _ => {
@@ -151,7 +151,7 @@ fn wide_arguments(rng: &mut ChaCha8Rng, count: usize) -> Vec<Dd> {
                 Dd::from_parts(hi, hi * 2f64.powi(-54) * rng.gen_range(-1.0..1.0))
             }
         };
-        out.push(if rng.gen() { x } else { -x });
+        out.push(if rng.r#gen() { x } else { -x });
     }
     out
 }

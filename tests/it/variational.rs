@@ -43,7 +43,7 @@ fn surface(seed: u64) -> (Mesh, Vec<f64>) {
             let mut e = icosphere(1);
             let mut rng = ChaCha8Rng::seed_from_u64(seed);
             for p in &mut e.pos {
-                let s = 1.0 + 0.1 * (rng.gen::<f64>() - 0.5);
+                let s = 1.0 + 0.1 * (rng.r#gen::<f64>() - 0.5);
                 *p = p.map(|x| x * s);
             }
             let m = e.mesh();
@@ -56,7 +56,7 @@ fn surface(seed: u64) -> (Mesh, Vec<f64>) {
 
 fn random_vec(n: usize, scale: f64, rng: &mut ChaCha8Rng) -> Vec<f64> {
     (0..n)
-        .map(|_| scale * (2.0 * rng.gen::<f64>() - 1.0))
+        .map(|_| scale * (2.0 * rng.r#gen::<f64>() - 1.0))
         .collect()
 }
 
@@ -122,7 +122,7 @@ fn t31_degenerate_extension_is_continuous_and_differentiable() {
 fn energy_data(seed: u64, n: usize, scale: f64) -> (Vec<f64>, Vec<f64>, Vec<Vec<f64>>) {
     let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x5eed);
     let u = random_vec(n, scale, &mut rng);
-    let t = (0..n).map(|_| 6.0 + rng.gen::<f64>()).collect();
+    let t = (0..n).map(|_| 6.0 + rng.r#gen::<f64>()).collect();
     let mut d = vec![(0..n).map(|v| if v == 0 { 1.0 } else { 0.0 }).collect()];
     d.push(random_vec(n, 1.0, &mut rng));
     d.push(random_vec(n, 1.0, &mut rng));

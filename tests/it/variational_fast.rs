@@ -163,9 +163,9 @@ fn case(seed: u64) -> (Mesh, Vec<f64>, Vec<f64>, Vec<f64>) {
     };
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let n = m.n_vertices();
-    let shift = 600.0 * (rng.gen::<f64>() - 0.5);
+    let shift = 600.0 * (rng.r#gen::<f64>() - 0.5);
     let u: Vec<f64> = (0..n)
-        .map(|_| rng.gen::<f64>() - 0.5 + shift / 2.0)
+        .map(|_| rng.r#gen::<f64>() - 0.5 + shift / 2.0)
         .collect();
     let lambda = log_lengths(&l);
     let lt = m
@@ -175,7 +175,7 @@ fn case(seed: u64) -> (Mesh, Vec<f64>, Vec<f64>, Vec<f64>) {
             lambda[e.idx()] + u[m.tail(h).idx()] + u[m.tip(h).idx()]
         })
         .collect();
-    let t = (0..n).map(|_| 6.0 * rng.gen::<f64>()).collect();
+    let t = (0..n).map(|_| 6.0 * rng.r#gen::<f64>()).collect();
     (m, lt, u, t)
 }
 

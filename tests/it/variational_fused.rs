@@ -32,7 +32,7 @@ fn case(seed: u64) -> (Mesh, Vec<f64>) {
     };
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let lt = (0..m.n_edges())
-        .map(|_| 0.6 * (rng.gen::<f64>() - 0.5))
+        .map(|_| 0.6 * (rng.r#gen::<f64>() - 0.5))
         .collect();
     (m, lt)
 }
@@ -85,8 +85,8 @@ fn mismatches<T: Real>(m: &Mesh, lt: &[f64], lt_ref: &[f64], ctx: T::Ctx) -> usi
     let (x, xr) = (to(lt), to(lt_ref));
     let mut rng = ChaCha8Rng::seed_from_u64(lt.len() as u64);
     let n = m.n_vertices();
-    let u = to(&(0..n).map(|_| rng.gen::<f64>() - 0.5).collect::<Vec<_>>());
-    let t = to(&(0..n).map(|_| 6.0 * rng.gen::<f64>()).collect::<Vec<_>>());
+    let u = to(&(0..n).map(|_| rng.r#gen::<f64>() - 0.5).collect::<Vec<_>>());
+    let t = to(&(0..n).map(|_| 6.0 * rng.r#gen::<f64>()).collect::<Vec<_>>());
     let parts = energy_gradient_hessian_at(m, &x, &u, &t);
     let q = |v: &T| v.to_rational();
     let mut bad = 0;
@@ -186,9 +186,9 @@ fn b57_difference_enclosure_contains_the_gradient_and_excludes_a_moved_one() {
         };
         let n = m.n_vertices();
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
-        let u: Vec<f64> = (0..n).map(|_| 0.2 * (rng.gen::<f64>() - 0.5)).collect();
-        let t: Vec<f64> = (0..n).map(|_| 6.0 * rng.gen::<f64>()).collect();
-        let d: Vec<f64> = (0..n).map(|_| rng.gen::<f64>() - 0.5).collect();
+        let u: Vec<f64> = (0..n).map(|_| 0.2 * (rng.r#gen::<f64>() - 0.5)).collect();
+        let t: Vec<f64> = (0..n).map(|_| 6.0 * rng.r#gen::<f64>()).collect();
+        let d: Vec<f64> = (0..n).map(|_| rng.r#gen::<f64>() - 0.5).collect();
         let lambda = log_lengths(&l);
         let enc = derivative_enclosure(&m, &lambda, &u, &t, &d, 53).expect("enclosure");
         // Independent: Θ − θ from the angles at 320 bits on the same exact data.
@@ -233,8 +233,8 @@ fn b32_difference_on_touched_faces_encloses_the_gradient_and_a_missed_face_does_
         let (m, l) = jittered_torus(10, 12, seed);
         let n = m.n_vertices();
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
-        let u: Vec<f64> = (0..n).map(|_| 0.2 * (rng.gen::<f64>() - 0.5)).collect();
-        let t: Vec<f64> = (0..n).map(|_| 6.0 * rng.gen::<f64>()).collect();
+        let u: Vec<f64> = (0..n).map(|_| 0.2 * (rng.r#gen::<f64>() - 0.5)).collect();
+        let t: Vec<f64> = (0..n).map(|_| 6.0 * rng.r#gen::<f64>()).collect();
         let mut d = vec![0.0; n];
         d[(seed as usize * 7) % n] = 0.75;
         d[(seed as usize * 7 + n / 2) % n] = -0.5;

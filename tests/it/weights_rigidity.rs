@@ -81,10 +81,10 @@ fn kernel_bounds(l: [f64; 3], bits: u32) -> Option<[[(f64, f64); 3]; 3]> {
 /// Random strict triangles: generic, obtuse, and needles down to sides `10⁻⁸` apart.
 fn random_triangle(rng: &mut ChaCha8Rng) -> [f64; 3] {
     loop {
-        let a = 0.1 + rng.gen::<f64>();
-        let b = 0.1 + rng.gen::<f64>();
+        let a = 0.1 + rng.r#gen::<f64>();
+        let b = 0.1 + rng.r#gen::<f64>();
         let c = match rng.gen_range(0..3) {
-            0 => (a - b).abs() + (a + b - (a - b).abs()) * rng.gen::<f64>(),
+            0 => (a - b).abs() + (a + b - (a - b).abs()) * rng.r#gen::<f64>(),
             1 => (a + b) * (1.0 - 10f64.powi(-rng.gen_range(2..8))),
             _ => (a - b).abs() + 10f64.powi(-rng.gen_range(2..8)),
         };
@@ -164,7 +164,7 @@ fn small_surface(seed: u64) -> (Mesh, Vec<f64>) {
             let mut e = icosphere(1);
             let mut rng = ChaCha8Rng::seed_from_u64(seed);
             for p in &mut e.pos {
-                let s = 1.0 + 0.1 * (rng.gen::<f64>() - 0.5);
+                let s = 1.0 + 0.1 * (rng.r#gen::<f64>() - 0.5);
                 *p = p.map(|x| x * s);
             }
             let m = e.mesh();
@@ -388,7 +388,7 @@ fn t06_certified_beyond_the_dense_recovery_cap() {
     let mut e = icosphere(8);
     let mut rng = ChaCha8Rng::seed_from_u64(3);
     for p in &mut e.pos {
-        let s = 1.0 + 0.05 * (rng.gen::<f64>() - 0.5);
+        let s = 1.0 + 0.05 * (rng.r#gen::<f64>() - 0.5);
         *p = p.map(|x| x * s);
     }
     let im = e.mesh();

@@ -156,7 +156,7 @@ pub fn residual<T: Real>(mesh: &Mesh, u: &[T], interior: &[bool]) -> Vec<T> {
     theta
         .into_iter()
         .zip(interior)
-        .filter(|(_, &i)| i)
+        .filter(|&(_, &i)| i)
         .map(|(th, _)| two_pi.clone() - &th)
         .collect()
 }

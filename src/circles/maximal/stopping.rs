@@ -42,7 +42,7 @@ pub fn layout_defect<T: Real>(mesh: &Mesh, circles: &[Circle<T>], interior: &[bo
         let dy = a.centre[1].clone() - &b.centre[1];
         see(norm(&dx, &dy) - &(a.radius.clone() + &b.radius));
     }
-    for (c, _) in circles.iter().zip(interior).filter(|(_, &i)| !i) {
+    for (c, _) in circles.iter().zip(interior).filter(|&(_, &i)| !i) {
         see(c.radius.one_like() - &norm(&c.centre[0], &c.centre[1]) - &c.radius);
     }
     worst

@@ -215,7 +215,7 @@ pub fn validate(surface: &Surface, claim: &UniformizationClaim) -> Result<(), Cl
         .flips
         .iter()
         .enumerate()
-        .find(|(_, &i)| i >= order.len())
+        .find(|&(_, &i)| i >= order.len())
     {
         return Err(ClaimFormError::FlipIndex {
             position,
@@ -224,7 +224,7 @@ pub fn validate(surface: &Surface, claim: &UniformizationClaim) -> Result<(), Cl
         });
     }
     let mut euclidean = claim.euclidean_flips.iter().flatten().enumerate();
-    if let Some((position, &index)) = euclidean.find(|(_, &i)| i >= order.len()) {
+    if let Some((position, &index)) = euclidean.find(|&(_, &i)| i >= order.len()) {
         return Err(ClaimFormError::EuclideanFlipIndex {
             position,
             index,

@@ -142,7 +142,7 @@ pub fn validate(surface: &Surface, claim: &SphereClaim) -> Result<(), SphereClai
         ("euclidean_flips", &claim.euclidean_flips),
         ("flips", &claim.flips),
     ] {
-        if let Some((position, &index)) = list.iter().enumerate().find(|(_, &i)| i >= edges) {
+        if let Some((position, &index)) = list.iter().enumerate().find(|&(_, &i)| i >= edges) {
             return Err(SphereClaimError::FlipIndex {
                 field,
                 position,
