@@ -5,7 +5,7 @@
 //! 1. enclose `g = ∇E(ũ) = Θ − θ(ũ)` and bound `‖g‖₂ ≤ γ`;
 //! 2. enclose the grounded Hessian `H(u) = −∂θ/∂u` over all of `U` and prove `H − λI`
 //!    positive definite for every member by an interval Cholesky factorisation
-//!    ([`super::linalg::interval_cholesky_positive`]);
+//!    ([`crate::scalar::dense::interval_cholesky_positive`]);
 //! 3. prove `2γ < λρ`.
 //!
 //! Then `E(u) ≥ E(ũ) + g·(u − ũ) + λ‖u − ũ‖²/2 > E(ũ)` on the sphere `‖u − ũ‖₂ = ρ` (which
@@ -13,9 +13,9 @@
 //! `U`, and it is the only one there (`E` strictly convex on `U`). With the convexity of `E`
 //! on all of the grounded space (Chow–Luo 2003, notes Thm 6) it is the unique solution.
 
-use super::linalg::{cholesky, interval_cholesky_positive};
 use super::pattern::CirclePattern;
 use super::solve::{gradient, hessian};
+use crate::scalar::dense::{cholesky, interval_cholesky_positive};
 use crate::scalar::{Interval, IntervalBound, Mpfr, Precision, Real, Sign};
 use rug::Rational;
 

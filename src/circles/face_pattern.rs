@@ -24,9 +24,9 @@
 //! `ΣΦ ≠ (E − F)π` admit no solution ([`FacePatternError::AngleSum`]).
 
 use super::layout::third_corner;
-use super::linalg::solve_spd;
 use crate::geometry::unfold::dual_breadth_first;
 use crate::mesh::{HalfEdge, Mesh};
+use crate::scalar::dense::solve_spd;
 use std::f64::consts::PI;
 
 /// Why no face circle pattern was computed.

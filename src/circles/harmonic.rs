@@ -3,13 +3,14 @@
 //! = 0` at every interior vertex. With positive weights the map is an embedding (T36);
 //! with negative cotan weights a triangle can fold.
 //!
-//! The map is computed in `f64` (Gaussian elimination with partial pivoting); the
+//! The map is computed in `f64` ([`lu_solve`], Gaussian elimination with partial pivoting); the
 //! orientation of every face of the **computed** map is then decided exactly
 //! ([`crate::predicates::planar::orient2d`] on the binary64 positions).
 
 use crate::mesh::Mesh;
 use crate::predicates::ladder::Ladder;
 use crate::predicates::planar::{orient2d, point_from_f64};
+use crate::scalar::dense::lu_solve;
 use crate::scalar::{Certified, Sign};
 
 /// The vertices of the boundary loop of a disk in loop order, or `None` unless the mesh has
@@ -106,35 +107,18 @@ pub fn harmonic_map(mesh: &Mesh, w: &[f64], polygon: &[[f64; 2]]) -> Option<Vec<
     Some(pos)
 }
 
-/// Solve the `m × m` system with two right-hand sides in columns `m, m + 1`.
-#[allow(clippy::needless_range_loop)] // elimination by indices
-fn gauss(mut a: Vec<Vec<f64>>, m: usize) -> Option<Vec<[f64; 2]>> {
-    for c in 0..m {
-        let p = (c..m).max_by(|&x, &y| a[x][c].abs().total_cmp(&a[y][c].abs()))?;
-        if a[p][c].abs() < 1e-300 || !a[p][c].is_finite() {
-            return None;
-        }
-        a.swap(c, p);
-        for r in c + 1..m {
-            let f = a[r][c] / a[c][c];
-            if f != 0.0 {
-                for k in c..m + 2 {
-                    a[r][k] -= f * a[c][k];
-                }
-            }
-        }
+/// Solve the `m × m` system with two right-hand sides in columns `m, m + 1` ([`lu_solve`];
+/// a pivot below `10⁻³⁰⁰` in magnitude counts as singular).
+fn gauss(a: Vec<Vec<f64>>, m: usize) -> Option<Vec<[f64; 2]>> {
+    let (mut lhs, mut rhs) = (Vec::with_capacity(m), vec![vec![0.0; m]; 2]);
+    for (r, mut row) in a.into_iter().enumerate() {
+        rhs[0][r] = row[m];
+        rhs[1][r] = row[m + 1];
+        row.truncate(m);
+        lhs.push(row);
     }
-    let mut x = vec![[0.0; 2]; m];
-    for r in (0..m).rev() {
-        for d in 0..2 {
-            let mut s = a[r][m + d];
-            for k in r + 1..m {
-                s -= a[r][k] * x[k][d];
-            }
-            x[r][d] = s / a[r][r];
-        }
-    }
-    Some(x)
+    let x = lu_solve(lhs, rhs, 1e-300)?;
+    Some((0..m).map(|r| [x[0][r], x[1][r]]).collect())
 }
 
 /// The exact orientation sign of every face of the planar map `pos` (binary64 positions

@@ -7,7 +7,6 @@
 //!   evaluated on [`Interval`](crate::scalar::Interval)s they are certified enclosures.
 //! - [`jacobian`]: `∂θ/∂u` from the power centres of the faces (symmetric, zero row sums).
 //! - [`pattern`]: a problem (mesh, angles `Φ`, target cone angles `Θ`) with typed errors.
-//! - [`linalg`]: dense Cholesky generic over `Real`, and its interval form.
 //! - [`solve`]: Newton on the convex energy and the combinatorial Ricci flow (Chow–Luo).
 //! - [`certify`]: a ball around a computed solution on which the grounded Hessian is proved
 //!   positive definite and which provably contains a solution (T09).
@@ -30,7 +29,6 @@ pub mod harmonic;
 pub mod hexagonal;
 pub mod jacobian;
 pub mod layout;
-pub mod linalg;
 pub mod maximal;
 pub mod metric;
 pub mod pack;

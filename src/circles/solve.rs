@@ -14,9 +14,9 @@
 //! solution come from [`super::certify`].
 
 use super::jacobian::angle_jacobian;
-use super::linalg::solve_spd;
 use super::metric::{cone_angles, lengths_from_radii};
 use super::pattern::CirclePattern;
+use crate::scalar::dense::solve_spd;
 use crate::scalar::Real;
 
 /// Why a solver stopped without a solution.

@@ -13,6 +13,7 @@
 mod approx_impls;
 mod certified;
 mod dd;
+pub mod dense;
 pub mod dual;
 pub mod exact;
 pub mod exp_length;

@@ -17,10 +17,10 @@ use crate::circles::face_pattern::{
     angle_sum_bound, face_angle_dphi, face_weight, grounded_matrix, intersection_angles,
     opposite_angles_of_points, solve_face_pattern, unfold, FacePattern, FacePatternError,
 };
-use crate::circles::linalg::solve_spd;
 use crate::mesh::Mesh;
 use crate::predicates::ladder::Ladder;
 use crate::predicates::planar::{incircle, orient2d, point_from_f64};
+use crate::scalar::dense::solve_spd;
 use crate::scalar::Sign;
 use std::f64::consts::PI;
 

@@ -29,6 +29,7 @@ use super::triangle::{shape, Shape};
 use crate::geometry::cotan::cotan_weights;
 use crate::geometry::triangle::kahan_area;
 use crate::mesh::Mesh;
+use crate::scalar::dense::lu_solve;
 use crate::scalar::{Dual, Real};
 
 /// The most Newton steps [`metric_from_weights`] takes.
@@ -102,43 +103,10 @@ fn reduced_hessian<T: Real>(mesh: &Mesh, q: &[T], free: &[usize]) -> Vec<Vec<T>>
     h
 }
 
-/// Solve `a x = b` by Gaussian elimination with partial pivoting (pivots chosen by the
-/// `f64` approximations, a heuristic); `None` on a zero pivot.
-fn solve<T: Real>(mut a: Vec<Vec<T>>, mut b: Vec<T>) -> Option<Vec<T>> {
-    let n = b.len();
-    for c in 0..n {
-        let p = (c..n).max_by(|&i, &j| {
-            a[i][c]
-                .approx_f64()
-                .abs()
-                .total_cmp(&a[j][c].approx_f64().abs())
-        })?;
-        if a[p][c].approx_f64() == 0.0 {
-            return None;
-        }
-        a.swap(c, p);
-        b.swap(c, p);
-        let (top, rest) = a.split_at_mut(c + 1);
-        let pivot = &top[c];
-        for (k, row) in rest.iter_mut().enumerate() {
-            let f = row[c].clone() / &pivot[c];
-            for (x, y) in row[c..].iter_mut().zip(&pivot[c..]) {
-                let t = f.clone() * y;
-                *x -= &t;
-            }
-            let t = f * &b[c];
-            b[c + 1 + k] -= &t;
-        }
-    }
-    let mut x = b.clone();
-    for c in (0..n).rev() {
-        let mut s = b[c].clone();
-        for k in c + 1..n {
-            s -= &(a[c][k].clone() * &x[k]);
-        }
-        x[c] = s / &a[c][c];
-    }
-    Some(x)
+/// Solve `a x = b` ([`lu_solve`], partial pivoting on the `f64` approximations, a
+/// heuristic); `None` on a zero pivot.
+fn solve<T: Real>(a: Vec<Vec<T>>, b: Vec<T>) -> Option<Vec<T>> {
+    lu_solve(a, vec![b], 0.0)?.pop()
 }
 
 /// The inverse of an `f64` matrix (columns by [`solve`]); `None` when singular.

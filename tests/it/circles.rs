@@ -263,7 +263,7 @@ fn t09_rigidity_two_starts_three_precisions() {
 
 #[test]
 fn b94_interval_cholesky_rejects_an_indefinite_hull() {
-    use penner::circles::linalg::interval_cholesky_positive;
+    use penner::scalar::dense::interval_cholesky_positive;
     use penner::scalar::Interval;
     let p = Precision::new(128).unwrap();
     let iv = |lo: f64, hi: f64| Interval::new(Mpfr::from_f64(lo, p), Mpfr::from_f64(hi, p));

@@ -35,6 +35,7 @@ mod delaunay_scaled;
 mod delaunay_triangles;
 mod delaunay_undecided;
 mod delaunay_uniqueness;
+mod dense_solve;
 mod dual;
 mod enclosed_angles;
 mod exact;
