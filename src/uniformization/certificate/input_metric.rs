@@ -121,19 +121,41 @@ pub(crate) fn clearly_not_delaunay(t0: &Mesh, values: &[Mpfr], sequence: &[Edge]
 /// gives (the same operations on the same operands), so `true` means that the full replay
 /// would admit these flips and that [`t0_delaunay`] cannot certify `e` Delaunay, nor can
 /// any replay on the exact metric (its lengths lie in the enclosures, where `P < 0`): `T₀`
-/// is not intrinsic Delaunay for any metric in `enclosures`. proof: B73, B62
+/// is not intrinsic Delaunay for any metric in `enclosures`. The lengths it overwrites are
+/// restored: `enclosures` comes back as given, and nothing of its size is copied.
+/// proof: B73, B62
 pub(crate) fn negative_on_enclosures(
     mesh: &Mesh,
-    mut enclosures: Vec<I>,
+    enclosures: &mut [I],
     sequence: &[Edge],
     e: Edge,
 ) -> bool {
+    let mut undo = Vec::new();
+    let negative = negative_with_undo(mesh, enclosures, sequence, e, &mut undo);
+    for (x, old) in undo.into_iter().rev() {
+        enclosures[x] = old;
+    }
+    negative
+}
+
+/// [`negative_on_enclosures`], recording in `undo` the value of every length it
+/// overwrites, in order.
+fn negative_with_undo(
+    mesh: &Mesh,
+    enclosures: &mut [I],
+    sequence: &[Edge],
+    e: Edge,
+    undo: &mut Vec<(usize, I)>,
+) -> bool {
     // The flips on the connectivity: each one's five input edges' last writers.
-    const NONE: usize = usize::MAX;
+    const NONE: u32 = u32::MAX;
+    let Ok(count) = u32::try_from(sequence.len()) else {
+        return false;
+    };
     let mut m = mesh.clone();
     let mut writer = vec![NONE; mesh.n_edges()];
-    let mut inputs: Vec<[usize; 5]> = Vec::with_capacity(sequence.len());
-    for (k, &f) in sequence.iter().enumerate() {
+    let mut inputs: Vec<[u32; 5]> = Vec::with_capacity(sequence.len());
+    for (k, &f) in (0..count).zip(sequence) {
         let Some(q) = (f.idx() < m.n_edges())
             .then(|| QuadEdges::of(&m, f))
             .flatten()
@@ -154,13 +176,13 @@ pub(crate) fn negative_on_enclosures(
     };
     // The flips the quadrilateral of e depends on (each input written before its reader).
     let mut needed = vec![false; sequence.len()];
-    let mut stack: Vec<usize> = q.edges.to_array().map(|x| writer[x.idx()]).to_vec();
+    let mut stack: Vec<u32> = q.edges.to_array().map(|x| writer[x.idx()]).to_vec();
     while let Some(k) = stack.pop() {
-        if k == NONE || needed[k] {
+        if k == NONE || needed[k as usize] {
             continue;
         }
-        needed[k] = true;
-        stack.extend(inputs[k]);
+        needed[k as usize] = true;
+        stack.extend(inputs[k as usize]);
     }
     let mut m = mesh.clone();
     for (k, &f) in sequence.iter().enumerate() {
@@ -173,13 +195,15 @@ pub(crate) fn negative_on_enclosures(
         let Some(q) = QuadEdges::of(&m, f) else {
             return false;
         };
-        if !strictly_convex(&q.lengths(&enclosures).map(Clone::clone))
-            || flip_euclidean(&mut m, &mut enclosures, f).is_err()
-        {
+        if !strictly_convex(&q.lengths(enclosures).map(Clone::clone)) {
+            return false;
+        }
+        undo.push((f.idx(), enclosures[f.idx()].clone()));
+        if flip_euclidean(&mut m, enclosures, f).is_err() {
             return false;
         }
     }
-    let p = enclose_p(&q.lengths(&enclosures).map(Clone::clone).to_array());
+    let p = enclose_p(&q.lengths(enclosures).map(Clone::clone).to_array());
     p.is_valid() && p.sign() == Some(Sign::Negative)
 }
 
@@ -364,7 +388,7 @@ mod tests {
     /// strictly convex Delaunay edges (each leaves an edge with `P < 0`). Every edge
     /// certified negative by the full replay is so on its flips alone, and no other;
     /// [`clearly_not_delaunay`] finds one of them from the rounded lengths, and none on the
-    /// Delaunay `T₀`.
+    /// Delaunay `T₀`; the enclosures given come back unchanged.
     #[test]
     fn negative_on_the_flips_an_edge_depends_on_is_the_full_replays_answer() {
         let planar = crate::mesh::builders::random_planar(60, 7).expect("points");
@@ -414,12 +438,18 @@ mod tests {
             };
             let p = enclose_p(&q.lengths(&enc).map(Clone::clone).to_array());
             let full = p.is_valid() && p.sign() == Some(Sign::Negative);
+            let mut given = enc0.clone();
             assert_eq!(
-                negative_on_enclosures(&s.mesh, enc0.clone(), &seq, e),
+                negative_on_enclosures(&s.mesh, &mut given, &seq, e),
                 full,
                 "e{}",
                 e.0
             );
+            // The enclosures are left as given.
+            assert!(given
+                .iter()
+                .zip(&enc0)
+                .all(|(x, y)| x.lo().0 == y.lo().0 && x.hi().0 == y.hi().0));
             if full {
                 negatives.push(e);
             }

@@ -240,13 +240,13 @@ fn input_metric_on_t0(
     let euclidean = euclidean_sequence(sol, &surface.mesh, lengths)?;
     let mut values = surface.lengths::<Mpfr>(prec);
     let carried = replay_values(&surface.mesh, &mut values, &euclidean);
-    let enclosures = surface.lengths::<Interval<Mpfr>>(prec);
+    let mut enclosures = surface.lengths::<Interval<Mpfr>>(prec);
     let candidate = carried
         .is_ok()
         .then(|| clearly_not_delaunay(&sol.initial_mesh, &values, &euclidean))
         .flatten();
     if let Some(e) = candidate {
-        if negative_on_enclosures(&surface.mesh, enclosures.clone(), &euclidean, e) {
+        if negative_on_enclosures(&surface.mesh, &mut enclosures, &euclidean, e) {
             return Err(not_delaunay_reason(surface, e));
         }
     }
