@@ -1,6 +1,8 @@
 //! Discrete uniformization (T24): the `f64` Newton solve with Ptolemy flips on noisy
-//! icospheres of about 10⁴ and 10⁵ faces with random admissible targets, and one
-//! refinement of the 10⁴-face solution to MPFR-256 (max |Θ − θ| ≤ 1e-60).
+//! icospheres of about 10⁴ and 10⁵ faces with random admissible targets, one refinement of
+//! the 10⁴-face solution to MPFR-256 (max |Θ − θ| ≤ 1e-60), and the certificate alone
+//! (B71: `check_certificate` at 256 bits on the refined `u`, the box of the proof that
+//! holds, as `penner certify` re-checks a claim's box).
 //!
 //! `cargo bench --bench uniformize`.
 
@@ -13,6 +15,7 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use meshgen::icosphere;
 use penner::mesh::Mesh;
 use penner::scalar::{Mpfr, Precision};
+use penner::uniformization::certificate::{check_certificate, prove, CertificateOutcome};
 use penner::uniformization::refine::refine;
 use penner::uniformization::{uniformize, Targets, UniformizeOptions};
 use rand::{Rng, SeedableRng};
@@ -71,6 +74,15 @@ fn bench(c: &mut Criterion) {
                     let r = refine::<Mpfr>(&sol, p, 1e-60, 12).expect("replays");
                     assert!(r.reached);
                     r
+                });
+            });
+            let proof = prove(&sol, 256, 1e-60).expect("a proof attempt");
+            assert!(matches!(proof.outcome, CertificateOutcome::Holds { .. }));
+            g.bench_function(format!("certificate-mpfr256-{}", m.n_faces()), |b| {
+                b.iter(|| {
+                    let o = check_certificate(&proof.data, 256).expect("well formed");
+                    assert!(matches!(o, CertificateOutcome::Holds { .. }));
+                    o
                 });
             });
         }

@@ -13,6 +13,7 @@ use crate::mesh::Mesh;
 use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
 use faer::linalg::cholesky::llt::factor::LltRegularization;
 use faer::linalg::solvers::Solve;
+use faer::perm::PermRef;
 use faer::sparse::linalg::cholesky::{
     factorize_symbolic_cholesky, CholeskySymbolicParams, LltRef, SymbolicCholesky,
     SymmetricOrdering,
@@ -130,6 +131,10 @@ pub struct GroundedPattern {
     /// adds nothing (boundary, loop).
     slots: Vec<[usize; 3]>,
     symbolic: Option<SymbolicCholesky<usize>>,
+    /// The fill-reducing ordering (forward and inverse permutation) of the symbolic
+    /// factorization, or one adopted from the pattern of the triangulation before a few
+    /// flips ([`Self::adopt_symbolic`]): `None` computes AMD.
+    ordering: Option<(Vec<usize>, Vec<usize>)>,
     /// The numeric factor's values (reused across steps).
     l_values: Vec<f64>,
     /// Work space of the numeric factorization and the solves (reused).
@@ -217,6 +222,7 @@ impl GroundedPattern {
             row_idx: rows,
             slots,
             symbolic: None,
+            ordering: None,
             l_values: Vec::new(),
             scratch: MemBuffer::new(StackReq::empty()),
         }
@@ -265,14 +271,26 @@ impl GroundedPattern {
             &self.row_idx,
         );
         if self.symbolic.is_none() {
+            let ordering = match &self.ordering {
+                Some((fwd, inv)) => {
+                    SymmetricOrdering::Custom(PermRef::new_checked(fwd, inv, self.n))
+                }
+                None => SymmetricOrdering::Amd,
+            };
             let Ok(s) = factorize_symbolic_cholesky(
                 sym,
                 Side::Lower,
-                SymmetricOrdering::Amd,
+                ordering,
                 CholeskySymbolicParams::default(),
             ) else {
                 return false;
             };
+            if self.ordering.is_none() {
+                self.ordering = s.perm().map(|p| {
+                    let (fwd, inv) = p.arrays();
+                    (fwd.to_vec(), inv.to_vec())
+                });
+            }
             let req = StackReq::any_of(&[
                 s.factorize_numeric_llt_scratch::<f64>(Par::Seq, Spec::default()),
                 s.solve_in_place_scratch::<f64>(1, Par::Seq),
@@ -333,12 +351,18 @@ impl GroundedPattern {
         self.col_ptr == other.col_ptr && self.row_idx == other.row_idx
     }
 
-    /// Take over the symbolic factorization of `other` (same pattern, [`Self::same_pattern`]).
+    /// Take over the symbolic factorization of `other` when the pattern is the same
+    /// ([`Self::same_pattern`]), else its fill-reducing ordering (same dimension): after a
+    /// few Ptolemy flips the AMD ordering of the previous triangulation still reduces fill,
+    /// and the symbolic factorization of the new pattern skips AMD.
     pub fn adopt_symbolic(&mut self, other: &mut GroundedPattern) {
         if self.same_pattern(other) {
             self.symbolic = other.symbolic.take();
+            self.ordering = other.ordering.take();
             self.l_values = std::mem::take(&mut other.l_values);
             self.scratch = std::mem::replace(&mut other.scratch, MemBuffer::new(StackReq::empty()));
+        } else if self.n == other.n {
+            self.ordering = other.ordering.take();
         }
     }
 }

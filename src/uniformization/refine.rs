@@ -296,8 +296,10 @@ pub fn refine_problem<T: Real>(
     let mut cache = CholeskyCache::default();
     let factor = cache.factor(&h).ok_or(RefineError::Hessian)?;
     let mut flips = Vec::new();
+    // The first residual is at the same u: its scaled lengths are those of the Hessian.
+    let mut at_start = Some(l);
     let residual = |u: &[T]| -> Result<Vec<T>, RefineError> {
-        let mut l = scaled(mesh, base, u);
+        let mut l = at_start.take().unwrap_or_else(|| scaled(mesh, base, u));
         if keep_delaunay {
             flips.extend(flip_to_delaunay_at(mesh, base, &mut l, u)?);
         }

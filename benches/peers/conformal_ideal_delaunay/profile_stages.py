@@ -19,7 +19,7 @@ STAGES = [  # (stage, substrings of a frame's symbol)
     ("claim writing", ["ClosedOutcome::claim", "Certification::claim", "certificate_report::write_claim", "claim_form::"]),
     ("certificate", ["certificate::certify_after_flips", "certificate::certify_near"]),
     ("refinement", ["refine::refine_with_flips", "refine::refine_problem", "certificate::prove_on"]),
-    ("replay of the input to T0 (MPFR/intervals)", ["closed::input_on_t0", "input_metric::", "closed::t0_delaunay_for_input", "Surface>::lengths", "surface::Surface::lengths"]),
+    ("replay of the input to T0 (MPFR/intervals)", ["closed::input_on_t0", "closed::input_metric_on_t0", "input_metric::", "closed::t0_delaunay_for_input", "Surface>::lengths", "surface::Surface::lengths"]),
     ("Euclidean flips", ["algorithms::flip_to_delaunay::flip_to_delaunay"]),
     ("f64 solve", ["newton::uniformize_with_progress"]),
     ("reading", ["input::load_flip_case", "uniformize::read_targets", "into_surface"]),

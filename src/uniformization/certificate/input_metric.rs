@@ -16,7 +16,7 @@ use crate::algorithms::flips::flip_euclidean;
 use crate::geometry::exact3d::{opposite_in_plane, squared_distance};
 use crate::io::Surface;
 use crate::mesh::{Edge, Mesh};
-use crate::predicates::delaunay::{delaunay_sign_squared, enclose_p, Quad, QuadEdges};
+use crate::predicates::delaunay::{delaunay_p, delaunay_sign_squared, enclose_p, Quad, QuadEdges};
 use crate::scalar::{Interval, Mpfr, Real, Sign};
 use rug::Rational;
 
@@ -34,7 +34,23 @@ pub fn input_on_t0(
     if values.len() != mesh.n_edges() || enclosures.len() != mesh.n_edges() {
         return Err("one input length per edge is required".into());
     }
-    // The Euclidean flips of the solve, recorded: the same deterministic run.
+    let euclidean = euclidean_sequence(sol, mesh, lengths)?;
+    let (_, enclosures) = replay_enclosed(mesh, enclosures, &euclidean)?;
+    replay_values(mesh, &mut values, &euclidean)?;
+    Ok(T0Metric {
+        values,
+        enclosures,
+        euclidean,
+    })
+}
+
+/// The Euclidean flips from `mesh` (binary64 `lengths`, what [`super::uniformize`] was
+/// given) to `sol`'s `T₀`, recorded by rerunning the solve's deterministic flips.
+pub fn euclidean_sequence(
+    sol: &Uniformization,
+    mesh: &Mesh,
+    lengths: &[f64],
+) -> Result<Vec<Edge>, String> {
     let mut m = mesh.clone();
     let mut l = lengths.to_vec();
     let opts = FlipOptions {
@@ -46,16 +62,165 @@ pub fn input_on_t0(
     if m.face_list() != sol.initial_mesh.face_list() {
         return Err("the Euclidean flips do not reproduce the solve's T₀".into());
     }
-    let (_, enclosures) = replay_enclosed(mesh, enclosures, &rep.sequence)?;
+    Ok(rep.sequence)
+}
+
+/// The MPFR lengths `values` of `mesh` carried through the Euclidean flips `sequence` (in
+/// place): the input lengths on `T₀` rounded, for the refinement (not an enclosure).
+pub fn replay_values(mesh: &Mesh, values: &mut [Mpfr], sequence: &[Edge]) -> Result<(), String> {
     let mut mv = mesh.clone();
-    for &e in &rep.sequence {
-        flip_euclidean(&mut mv, &mut values, e).map_err(|err| err.to_string())?;
+    for &e in sequence {
+        flip_euclidean(&mut mv, values, e).map_err(|err| err.to_string())?;
     }
-    Ok(T0Metric {
-        values,
-        enclosures,
-        euclidean: rep.sequence,
+    Ok(())
+}
+
+/// The first edge of `t0` whose quadrilateral has an edge flipped by `sequence` and whose
+/// `P` (B60) at the rounded MPFR lengths `values` of `t0` (precision `p`) is below
+/// `−2^(24−p)·M`, `M = de(b² + c² + a²) + bc(d² + e² + a²)` its magnitude: clearly
+/// negative, far beyond the rounding of the carried lengths, so an edge presumably not
+/// Delaunay for the exact metric (edges of unflipped quadrilaterals keep the input's
+/// lengths, decided exactly by [`t0_delaunay`]). A heuristic choice of the edge that
+/// [`negative_on_enclosures`] then decides; `P` in binary64 first, to pass over the edges
+/// clearly Delaunay.
+pub(crate) fn clearly_not_delaunay(t0: &Mesh, values: &[Mpfr], sequence: &[Edge]) -> Option<Edge> {
+    let first = values.first()?;
+    let margin = first.lit(2f64.powi(24 - Mpfr::precision_bits(first.ctx()).min(1000) as i32));
+    let mut flipped = vec![false; t0.n_edges()];
+    for e in sequence {
+        if let Some(f) = flipped.get_mut(e.idx()) {
+            *f = true;
+        }
+    }
+    let magnitude = |[a, b, c, d, e]: &[Mpfr; 5]| {
+        d.clone() * e * &(b.clone() * b + &(c.clone() * c) + &(a.clone() * a))
+            + &(b.clone() * c * &(d.clone() * d + &(e.clone() * e) + &(a.clone() * a)))
+    };
+    t0.edges().find(|&e| {
+        let Some(q) = QuadEdges::of(t0, e) else {
+            return false;
+        };
+        if !q.edges.to_array().iter().any(|x| flipped[x.idx()]) {
+            return false;
+        }
+        let l = q.lengths(values).to_array().map(Clone::clone);
+        let [a, b, c, d, e] = l.each_ref().map(Real::approx_f64);
+        let m = d * e * (b * b + c * c + a * a) + b * c * (d * d + e * e + a * a);
+        if delaunay_p(&[a, b, c, d, e]) > 1e-8 * m {
+            return false;
+        }
+        (delaunay_p(&l) + &(magnitude(&l) * &margin)).approx_f64() < 0.0
     })
+}
+
+/// Whether `P` (B60) of edge `e` of `T₀` (reached from `mesh` by the Euclidean flips
+/// `sequence`) is certified negative on the enclosures `enclosures` of `mesh`'s lengths
+/// carried to `T₀` by [`replay_enclosed`] — computed on the flips that the five lengths of
+/// `e`'s quadrilateral depend on only, each admitted as there (strictly convex), all others
+/// done on the connectivity alone. These five enclosures are the ones [`replay_enclosed`]
+/// gives (the same operations on the same operands), so `true` means that the full replay
+/// would admit these flips and that [`t0_delaunay`] cannot certify `e` Delaunay, nor can
+/// any replay on the exact metric (its lengths lie in the enclosures, where `P < 0`): `T₀`
+/// is not intrinsic Delaunay for any metric in `enclosures`. The lengths it overwrites are
+/// restored: `enclosures` comes back as given, and nothing of its size is copied.
+/// proof: B73, B62
+pub(crate) fn negative_on_enclosures(
+    mesh: &Mesh,
+    enclosures: &mut [I],
+    sequence: &[Edge],
+    e: Edge,
+) -> bool {
+    let mut undo = Vec::new();
+    let negative = negative_with_undo(mesh, enclosures, sequence, e, &mut undo);
+    for (x, old) in undo.into_iter().rev() {
+        enclosures[x] = old;
+    }
+    negative
+}
+
+/// [`negative_on_enclosures`], recording in `undo` the value of every length it
+/// overwrites, in order.
+fn negative_with_undo(
+    mesh: &Mesh,
+    enclosures: &mut [I],
+    sequence: &[Edge],
+    e: Edge,
+    undo: &mut Vec<(usize, I)>,
+) -> bool {
+    // The flips on the connectivity: each one's five input edges' last writers.
+    const NONE: u32 = u32::MAX;
+    let Ok(count) = u32::try_from(sequence.len()) else {
+        return false;
+    };
+    let mut m = mesh.clone();
+    let mut writer = vec![NONE; mesh.n_edges()];
+    let mut inputs: Vec<[u32; 5]> = Vec::with_capacity(sequence.len());
+    for (k, &f) in (0..count).zip(sequence) {
+        let Some(q) = (f.idx() < m.n_edges())
+            .then(|| QuadEdges::of(&m, f))
+            .flatten()
+        else {
+            return false;
+        };
+        inputs.push(q.edges.to_array().map(|x| writer[x.idx()]));
+        if m.flip(f).is_err() {
+            return false;
+        }
+        writer[f.idx()] = k;
+    }
+    let Some(q) = (e.idx() < m.n_edges())
+        .then(|| QuadEdges::of(&m, e))
+        .flatten()
+    else {
+        return false;
+    };
+    // The flips the quadrilateral of e depends on (each input written before its reader).
+    let mut needed = vec![false; sequence.len()];
+    let mut stack: Vec<u32> = q.edges.to_array().map(|x| writer[x.idx()]).to_vec();
+    while let Some(k) = stack.pop() {
+        if k == NONE || needed[k as usize] {
+            continue;
+        }
+        needed[k as usize] = true;
+        stack.extend(inputs[k as usize]);
+    }
+    let mut m = mesh.clone();
+    for (k, &f) in sequence.iter().enumerate() {
+        if !needed[k] {
+            if m.flip(f).is_err() {
+                return false;
+            }
+            continue;
+        }
+        let Some(q) = QuadEdges::of(&m, f) else {
+            return false;
+        };
+        if !strictly_convex(&q.lengths(enclosures).map(Clone::clone)) {
+            return false;
+        }
+        undo.push((f.idx(), enclosures[f.idx()].clone()));
+        if flip_euclidean(&mut m, enclosures, f).is_err() {
+            return false;
+        }
+    }
+    let p = enclose_p(&q.lengths(enclosures).map(Clone::clone).to_array());
+    p.is_valid() && p.sign() == Some(Sign::Negative)
+}
+
+/// Whether replaying `sequence` on `surface`'s exact metric certifies every flip a legal
+/// step and reaches `t0` certified intrinsic Delaunay (B80: escalating from 128 to 1024
+/// bits, exact signs where the squared lengths are rational, B83). proof: B80
+pub(crate) fn t0_delaunay_by_exact_replay(surface: &Surface, t0: &Mesh, sequence: &[Edge]) -> bool {
+    use crate::algorithms::replay::replay_escalating_lazy;
+    let (r, _) = replay_escalating_lazy(
+        &surface.mesh,
+        &surface.metric,
+        sequence,
+        FlipKind::Euclidean,
+        128,
+        1024,
+    );
+    r.certified_delaunay() && r.mesh.face_list() == t0.face_list()
 }
 
 /// Replay the Euclidean flips `sequence` on `mesh` with the enclosed lengths
@@ -200,20 +365,11 @@ pub(crate) fn t0_delaunay_on_input(
     lengths: &[I],
     sequence: &[Edge],
 ) -> Result<(), Edge> {
-    use crate::algorithms::replay::replay_escalating_lazy;
     let exact = exact_squared_on_t0(surface, sequence);
     let Err(e) = t0_delaunay(t0, lengths, &exact) else {
         return Ok(());
     };
-    let (r, _) = replay_escalating_lazy(
-        &surface.mesh,
-        &surface.metric,
-        sequence,
-        FlipKind::Euclidean,
-        128,
-        1024,
-    );
-    if r.certified_delaunay() && r.mesh.face_list() == t0.face_list() {
+    if t0_delaunay_by_exact_replay(surface, t0, sequence) {
         Ok(())
     } else {
         Err(e)
@@ -225,6 +381,85 @@ mod tests {
     use super::*;
     use crate::mesh::builders::Embedded;
     use crate::scalar::Precision;
+
+    /// [`negative_on_enclosures`] on the flips an edge depends on gives the answer of the
+    /// full [`replay_enclosed`] at every edge: a random planar triangulation scrambled by
+    /// random flips, flipped to Delaunay (many Euclidean flips), then three more flips of
+    /// strictly convex Delaunay edges (each leaves an edge with `P < 0`). Every edge
+    /// certified negative by the full replay is so on its flips alone, and no other;
+    /// [`clearly_not_delaunay`] finds one of them from the rounded lengths, and none on the
+    /// Delaunay `T₀`; the enclosures given come back unchanged.
+    #[test]
+    fn negative_on_the_flips_an_edge_depends_on_is_the_full_replays_answer() {
+        let planar = crate::mesh::builders::random_planar(60, 7).expect("points");
+        // Random flips may fold an edge onto a vertex pair twice (length 0): the first seed
+        // whose scrambled mesh is a valid surface.
+        let s = (11..)
+            .find_map(|seed| {
+                let scrambled = Embedded {
+                    mesh: crate::mesh::builders::random_flips(&planar.mesh, 150, seed),
+                    positions: planar.positions.clone(),
+                    exact: true,
+                };
+                Surface::from_embedded("scrambled", scrambled).ok()
+            })
+            .expect("a valid scrambled surface");
+        let prec = Precision::new(256).expect("bits");
+        let mut m = s.mesh.clone();
+        let mut l = s.lengths::<f64>(());
+        let opts = FlipOptions {
+            record: true,
+            ..FlipOptions::default()
+        };
+        let mut seq = flip_to_delaunay(&mut m, &mut l, FlipKind::Euclidean, &opts)
+            .expect("flips")
+            .sequence;
+        assert!(seq.len() > 20, "{} flips", seq.len());
+        let enc0 = s.lengths::<I>(prec);
+        let mut values = s.lengths::<Mpfr>(prec);
+        replay_values(&s.mesh, &mut values, &seq).expect("replay");
+        assert_eq!(clearly_not_delaunay(&m, &values, &seq), None);
+        let mut extra = 0;
+        while extra < 3 {
+            let (t, enc) = replay_enclosed(&s.mesh, enc0.clone(), &seq).expect("convex");
+            let next = t.edges().find(|&e| {
+                !seq.contains(&e)
+                    && QuadEdges::of(&t, e)
+                        .is_some_and(|q| strictly_convex(&q.lengths(&enc).map(Clone::clone)))
+            });
+            seq.push(next.expect("a convex edge"));
+            extra += 1;
+        }
+        let (t, enc) = replay_enclosed(&s.mesh, enc0.clone(), &seq).expect("convex");
+        let mut negatives = Vec::new();
+        for e in t.edges() {
+            let Some(q) = QuadEdges::of(&t, e) else {
+                continue;
+            };
+            let p = enclose_p(&q.lengths(&enc).map(Clone::clone).to_array());
+            let full = p.is_valid() && p.sign() == Some(Sign::Negative);
+            let mut given = enc0.clone();
+            assert_eq!(
+                negative_on_enclosures(&s.mesh, &mut given, &seq, e),
+                full,
+                "e{}",
+                e.0
+            );
+            // The enclosures are left as given.
+            assert!(given
+                .iter()
+                .zip(&enc0)
+                .all(|(x, y)| x.lo().0 == y.lo().0 && x.hi().0 == y.hi().0));
+            if full {
+                negatives.push(e);
+            }
+        }
+        assert!(!negatives.is_empty());
+        let mut values = s.lengths::<Mpfr>(prec);
+        replay_values(&s.mesh, &mut values, &seq).expect("replay");
+        let found = clearly_not_delaunay(&t, &values, &seq).expect("a negative edge");
+        assert!(negatives.contains(&found));
+    }
 
     /// [`t0_delaunay_on_input`] refuses a `T₀` that is not Delaunay for the exact metric:
     /// a flat kite `(0, 0), (4, 0), (2, 1), (2, −1)` split by its long diagonal (both

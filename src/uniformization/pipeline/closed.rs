@@ -7,7 +7,7 @@
 //! of rational squared lengths, decimals may not be binary64). The certificate is first
 //! attempted for the exact input: the solve's Euclidean flips to `T₀` are replayed on
 //! enclosures of the exact lengths, each admitted only on a certified strictly convex
-//! quadrilateral ([`input_on_t0`]), the refinement runs on the input lengths and the ball
+//! quadrilateral ([`input_on_t0`](crate::uniformization::input_metric::input_on_t0)), the refinement runs on the input lengths and the ball
 //! argument on their enclosures. Only when that replay is refused (a flip whose
 //! quadrilateral is not certified strictly convex for the exact lengths, e.g. an exact tie)
 //! or its box does not hold is the binary64-rounded metric certified instead, and the
@@ -31,11 +31,15 @@
 use super::{exact, rescaled, CertifiedMetric, Options, PipelineError, Precision};
 use crate::io::json::edge_order;
 use crate::io::Surface;
+use crate::mesh::Edge;
 use crate::scalar::{Dd, Interval, Mpfr, Precision as Bits, Real};
 use crate::uniformization::certificate::{certify_near, prove, prove_on, CertificateError};
 use crate::uniformization::certificate::{CertificateOutcome, Proof, T0Metric};
 use crate::uniformization::claim_form::{to_claim, to_claim_on_input};
-use crate::uniformization::input_metric::{input_on_t0, t0_delaunay_on_input};
+use crate::uniformization::input_metric::{
+    clearly_not_delaunay, euclidean_sequence, negative_on_enclosures, replay_enclosed,
+    replay_values, t0_delaunay_on_input,
+};
 use crate::uniformization::newton::{uniformize_with_progress, StepReport, Uniformization};
 use crate::uniformization::refine::{refine, refine_on};
 use crate::uniformization::{Targets, UniformizeOptions};
@@ -176,14 +180,7 @@ pub fn certify_solution(
 ) -> Result<Certification, PipelineError> {
     let (bits, tolerance) = precision.bits_and_tolerance();
     let prec = Bits::new(u64::from(bits)).map_err(|_| CertificateError::Bits(bits.into()))?;
-    let replay = input_on_t0(
-        sol,
-        &surface.mesh,
-        lengths,
-        surface.lengths::<Mpfr>(prec),
-        surface.lengths::<Interval<Mpfr>>(prec),
-    )
-    .and_then(|m| t0_delaunay_for_input(surface, sol, m));
+    let replay = input_metric_on_t0(surface, lengths, sol, prec);
     let reason = match replay {
         Ok(m) => {
             let proof = match precision {
@@ -226,6 +223,55 @@ pub fn certify_solution(
     })
 }
 
+/// The input's exact metric on `T₀` ([`input_on_t0`](crate::uniformization::input_metric::input_on_t0))
+/// when `T₀` is certified intrinsic Delaunay for it ([`t0_delaunay_for_input`]), else the
+/// reason. The rounded lengths of `T₀` come first (cheap): when they make an edge of `T₀`
+/// clearly not Delaunay ([`clearly_not_delaunay`]), that edge is decided on the enclosures
+/// carried through the flips it depends on only ([`negative_on_enclosures`]); certified
+/// negative, the input's metric cannot be certified (not by the enclosures, not by the
+/// exact replay) and the answer is the one of the full replay, without carrying every
+/// enclosure to `T₀` nor replaying on the exact metric.
+fn input_metric_on_t0(
+    surface: &Surface,
+    lengths: &[f64],
+    sol: &Uniformization,
+    prec: Bits,
+) -> Result<T0Metric, String> {
+    let euclidean = euclidean_sequence(sol, &surface.mesh, lengths)?;
+    let mut values = surface.lengths::<Mpfr>(prec);
+    let carried = replay_values(&surface.mesh, &mut values, &euclidean);
+    let mut enclosures = surface.lengths::<Interval<Mpfr>>(prec);
+    let candidate = carried
+        .is_ok()
+        .then(|| clearly_not_delaunay(&sol.initial_mesh, &values, &euclidean))
+        .flatten();
+    if let Some(e) = candidate {
+        if negative_on_enclosures(&surface.mesh, &mut enclosures, &euclidean, e) {
+            return Err(not_delaunay_reason(surface, e));
+        }
+    }
+    let (_, enclosures) = replay_enclosed(&surface.mesh, enclosures, &euclidean)?;
+    carried?;
+    t0_delaunay_for_input(
+        surface,
+        sol,
+        T0Metric {
+            values,
+            enclosures,
+            euclidean,
+        },
+    )
+}
+
+/// Why the input's exact metric is not certified: edge `e` of `T₀` (of `surface.mesh`).
+fn not_delaunay_reason(surface: &Surface, e: Edge) -> String {
+    let k = edge_order(&surface.mesh)
+        .iter()
+        .position(|&x| x == e.idx())
+        .unwrap_or(e.idx());
+    format!("edge {k} of T₀ is not certified intrinsic Delaunay for the input's exact metric")
+}
+
 /// `m`, when `T₀` is certified intrinsic Delaunay for the input's exact metric (exactly
 /// where its squared lengths are known, [`exact_squared_on_t0`]; on the enclosures
 /// elsewhere): the decorated metric of the certificate is then the input's (B73 (a)).
@@ -236,14 +282,6 @@ fn t0_delaunay_for_input(
 ) -> Result<T0Metric, String> {
     match t0_delaunay_on_input(surface, &sol.initial_mesh, &m.enclosures, &m.euclidean) {
         Ok(()) => Ok(m),
-        Err(e) => {
-            let k = edge_order(&surface.mesh)
-                .iter()
-                .position(|&x| x == e.idx())
-                .unwrap_or(e.idx());
-            Err(format!(
-                "edge {k} of T₀ is not certified intrinsic Delaunay for the input's exact metric"
-            ))
-        }
+        Err(e) => Err(not_delaunay_reason(surface, e)),
     }
 }
