@@ -1,0 +1,87 @@
+//! `penner uniformize … --uv OUT.obj` for closed flat and cone targets: the common
+//! refinement of the input mesh and the final triangulation with texture coordinates
+//! (`uniformization::pipeline::uv_closed`), written with its sidecar `OUT.obj.json`, both
+//! new files; the exact checks (`overlay::check_parametrization`) run on the written text.
+
+use super::error::CliError;
+use super::files::create_new;
+use super::uniformize::pipeline_error;
+use penner::io::Surface;
+use penner::overlay::check_parametrization;
+use penner::uniformization::pipeline::{uv_closed, ClosedOutcome};
+use std::fmt::Write as _;
+use std::io::Write as _;
+use std::path::{Path, PathBuf};
+
+/// The sidecar's path: `OUT.obj.json`.
+fn sidecar_path(path: &Path) -> PathBuf {
+    let mut s = path.as_os_str().to_owned();
+    s.push(".json");
+    PathBuf::from(s)
+}
+
+fn write_all(path: &Path, mut f: std::fs::File, bytes: &[u8]) -> Result<(), CliError> {
+    f.write_all(bytes)
+        .and_then(|()| f.flush())
+        .map_err(|e| CliError::Write {
+            path: path.to_path_buf(),
+            reason: e.to_string(),
+        })
+}
+
+/// Compute, write and check the UV mesh of `outcome` (of the input `surface`); the lines
+/// to report.
+pub fn write(
+    path: &Path,
+    shown: &str,
+    surface: &Surface,
+    outcome: &ClosedOutcome,
+) -> Result<String, CliError> {
+    let uv = uv_closed(surface, outcome).map_err(|e| pipeline_error(shown, &e))?;
+    let obj = uv.obj();
+    let sidecar = uv.sidecar();
+    let side_path = sidecar_path(path);
+    // Both files are created before either is written: neither overwrites a file.
+    let f_obj = create_new(path)?;
+    let f_side = match create_new(&side_path) {
+        Ok(f) => f,
+        Err(e) => {
+            drop(f_obj);
+            let _ = std::fs::remove_file(path);
+            return Err(e);
+        }
+    };
+    let text = sidecar.to_string();
+    write_all(path, f_obj, obj.as_bytes())?;
+    write_all(&side_path, f_side, text.as_bytes())?;
+    let report = check_parametrization(&obj, &sidecar)
+        .map_err(|e| CliError::NotConverged(format!("{}: {e}", path.display())))?;
+    let mut out = format!(
+        "UV mesh written to {} and {} ({} vertices, {} triangles)\n",
+        path.display(),
+        side_path.display(),
+        uv.positions.len(),
+        report.triangles
+    );
+    let first = |v: &[usize]| {
+        v.iter()
+            .take(5)
+            .map(|f| format!("f{f}"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    if report.holds() {
+        out.push_str("exact checks on the written decimals: every UV triangle counterclockwise, every input face tiled (barycentric areas sum to 1 in ℚ)\n");
+    } else {
+        let _ = writeln!(
+            out,
+            "exact checks on the written decimals FAIL: {} UV folds ({}), {} folds in the input faces ({}), {} input faces not tiled",
+            report.uv_folds.len(),
+            first(&report.uv_folds),
+            report.input_folds.len(),
+            first(&report.input_folds),
+            report.untiled_faces.len()
+        );
+    }
+    Ok(out)
+}
