@@ -393,3 +393,44 @@ fn b109_closed_cones_uv_area_oracle_and_negative_controls() {
     assert_eq!(r.untiled_faces, vec![f_in], "{r:?}");
     let _ = Face(0);
 }
+
+/// Typed errors, never panics: a flip whose quadrilateral is not convex in the input metric
+/// (what a Ptolemy flip far from a Euclidean one is) is `NotStraight` and changes nothing;
+/// a boundary flip is refused; a surface without positions gets no UVs (bad input).
+#[test]
+fn b108_nonconvex_flip_and_missing_positions_are_typed_errors() {
+    use penner::overlay::{TrackError, TrackedOverlay};
+    let (t_in, pos, l0, _) = planar_case(2);
+    let nonconvex = t_in
+        .edges()
+        .find(|&e| {
+            if t_in.is_boundary_edge(e) {
+                return false;
+            }
+            let [i, j, k, l] = t_in.quad_vertices(e).map(|v| &pos[v.idx()]);
+            orient(k, l, i) * orient(k, l, j) > 0
+        })
+        .expect("a non-convex quadrilateral");
+    let mut o = TrackedOverlay::of_input(&t_in, &l0).unwrap();
+    let before = o.paths.clone();
+    assert!(matches!(
+        o.flip(nonconvex),
+        Err(TrackError::NotStraight { .. })
+    ));
+    assert_eq!(o.paths, before);
+    assert_eq!(o.mesh, t_in);
+    let b = t_in.edges().find(|&e| t_in.is_boundary_edge(e)).unwrap();
+    assert!(matches!(o.flip(b), Err(TrackError::Flip(_))));
+    assert!(TrackedOverlay::of_input(&t_in, &l0[1..]).is_err());
+    // An intrinsic torus: solved, but no 3-D positions to write.
+    let t = builders::flat_torus(3, 3).unwrap();
+    let s = Surface::from_intrinsic("torus", t).unwrap();
+    let n = s.mesh.n_vertices();
+    let opts = Options {
+        precision: Precision::F64,
+        certify: false,
+    };
+    let out = uniformize_closed(&s, &Targets::flat(n), &opts, &mut |_| {}).unwrap();
+    let e = uv_closed(&s, &out).unwrap_err();
+    assert!(e.is_bad_input(), "{e}");
+}
