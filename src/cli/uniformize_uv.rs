@@ -7,8 +7,9 @@ use super::error::CliError;
 use super::files::create_new;
 use super::uniformize::pipeline_error;
 use penner::io::Surface;
-use penner::overlay::check_parametrization;
+use penner::overlay::{check_parametrization, check_seams};
 use penner::uniformization::pipeline::{uv_closed, ClosedOutcome};
+use rug::Rational;
 use std::fmt::Write as _;
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
@@ -83,5 +84,34 @@ pub fn write(
             report.untiled_faces.len()
         );
     }
+    out.push_str(&seams_line(&obj, outcome)?);
     Ok(out)
+}
+
+/// The seam check's line (B110) when every cone angle is a multiple of π/2.
+fn seams_line(obj: &str, outcome: &ClosedOutcome) -> Result<String, CliError> {
+    let quarter = outcome
+        .solution
+        .targets
+        .over_pi()
+        .iter()
+        .all(|t| Rational::from(t * 2u32).is_integer());
+    if !quarter {
+        return Ok("seams not checked: not every cone angle is a multiple of π/2\n".into());
+    }
+    let eps = Rational::from((1, 1_000_000_000u32));
+    let r = check_seams(obj, &eps).map_err(|e| CliError::NotConverged(e.to_string()))?;
+    Ok(if r.broken.is_empty() {
+        format!(
+            "seams: all {} cut segments related by rotations by multiples of π/2 and translations, within relative ε = 1e-9 (exact check)\n",
+            r.seam_segments
+        )
+    } else {
+        format!(
+            "seams: {} of {} cut segments are not rotations by multiples of π/2 within relative ε = 1e-9 (first at f{}; on genus ≥ 1 the handles' holonomy is not fixed by the cone angles)\n",
+            r.broken.len(),
+            r.seam_segments,
+            r.broken[0]
+        )
+    })
 }

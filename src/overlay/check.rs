@@ -61,8 +61,12 @@ fn number(word: Option<&str>, line: usize) -> Result<Rational, ParametrizationEr
     parse_rational(w).map_err(|e| ParametrizationError::Obj(line, e.to_string()))
 }
 
-/// The texture coordinates of each `f` line's corners, read exactly.
-fn uv_triangles(obj: &str) -> Result<Vec<[[Rational; 2]; 3]>, ParametrizationError> {
+/// A triangle of an OBJ text: its vertex indices (0-based) and its corners' texture
+/// coordinates, read exactly.
+pub(crate) type UvFace = ([usize; 3], [[Rational; 2]; 3]);
+
+/// The `f` lines of an OBJ text with their texture coordinates, read exactly.
+pub(crate) fn uv_faces(obj: &str) -> Result<Vec<UvFace>, ParametrizationError> {
     let mut vt = Vec::new();
     let mut tris = Vec::new();
     for (k, line) in obj.lines().enumerate() {
@@ -72,23 +76,24 @@ fn uv_triangles(obj: &str) -> Result<Vec<[[Rational; 2]; 3]>, ParametrizationErr
             Some("f") => {
                 let mut c = Vec::new();
                 for word in w {
-                    let t = word
-                        .split('/')
-                        .nth(1)
+                    let bad = || ParametrizationError::Obj(k + 1, format!("not v/vt: {word:?}"));
+                    let mut parts = word.split('/');
+                    let v = parts
+                        .next()
+                        .and_then(|x| x.parse::<usize>().ok())
+                        .and_then(|i| i.checked_sub(1))
+                        .ok_or_else(bad)?;
+                    let t = parts
+                        .next()
                         .and_then(|x| x.parse::<usize>().ok())
                         .and_then(|i| vt.get(i.checked_sub(1)?))
-                        .ok_or_else(|| {
-                            ParametrizationError::Obj(
-                                k + 1,
-                                format!("no texture coordinate in {word:?}"),
-                            )
-                        })?;
-                    c.push(t.clone());
+                        .ok_or_else(bad)?;
+                    c.push((v, t.clone()));
                 }
-                let [a, b, c]: [[Rational; 2]; 3] = c
+                let [(a, ta), (b, tb), (c, tc)]: [(usize, [Rational; 2]); 3] = c
                     .try_into()
                     .map_err(|_| ParametrizationError::Obj(k + 1, "not a triangle".into()))?;
-                tris.push([a, b, c]);
+                tris.push(([a, b, c], [ta, tb, tc]));
             }
             _ => {}
         }
@@ -102,7 +107,7 @@ pub fn check_parametrization(
     sidecar: &Value,
 ) -> Result<ParametrizationReport, ParametrizationError> {
     let side = |m: &str| ParametrizationError::Sidecar(m.into());
-    let tris = uv_triangles(obj)?;
+    let tris: Vec<[[Rational; 2]; 3]> = uv_faces(obj)?.into_iter().map(|f| f.1).collect();
     let faces = sidecar["faces"]
         .as_array()
         .ok_or_else(|| side("no faces array"))?;

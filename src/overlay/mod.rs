@@ -13,19 +13,21 @@
 //! - [`uv`]: texture coordinates from a layout of `T` with its final lengths, 3-D
 //!   positions and barycentric coordinates, and the OBJ and sidecar texts (B109).
 //! - [`check`]: the exact checks of written files: no fold, each input face tiled (B109).
+//! - [`seams`]: the exact seam check: rotations by multiples of π/2 within `ε` (B110).
 //!
 //! Not computed yet: positions after Ptolemy flips whose quadrilateral is not convex in
-//! the input metric (the projective maps of the flips), seams at cone angles that are
-//! multiples of π/2, surfaces with boundary.
+//! the input metric (the projective maps of the flips), surfaces with boundary.
 
 pub mod check;
 pub mod normal_coordinates;
 pub mod refinement;
+pub mod seams;
 pub mod tracking;
 pub mod uv;
 
 pub use check::{check_parametrization, ParametrizationReport};
 pub use normal_coordinates::{replay_normal_coordinates, NormalCoordinates, NormalError};
 pub use refinement::{common_refinement, Refinement, RefinementError};
+pub use seams::{check_seams, SeamReport};
 pub use tracking::{track_flips, TrackError, TrackedOverlay};
 pub use uv::{uv_mesh, UvError, UvMesh};

@@ -434,3 +434,50 @@ fn b108_nonconvex_flip_and_missing_positions_are_typed_errors() {
     let e = uv_closed(&s, &out).unwrap_err();
     assert!(e.is_bad_input(), "{e}");
 }
+
+/// B110: on the four-cone icosahedron (genus 0, cone angles π) every seam segment is a
+/// rotation by a multiple of π/2 and a translation within 10⁻⁹; negative control: one
+/// UV corner on a seam moved by 10⁻³ of the layout breaks that segment.
+#[test]
+fn b110_seams_of_quarter_turn_cones_and_a_broken_seam() {
+    use penner::overlay::check_seams;
+    let (s, targets) = four_cone_icosahedron();
+    let opts = Options {
+        precision: Precision::F64,
+        certify: false,
+    };
+    let out = uniformize_closed(&s, &targets, &opts, &mut |_| {}).unwrap();
+    let uv = uv_closed(&s, &out).unwrap();
+    let obj = uv.obj();
+    let eps = Rational::from((1, 1_000_000_000u32));
+    let r = check_seams(&obj, &eps).unwrap();
+    assert!(r.seam_segments > 0 && r.broken.is_empty(), "{r:?}");
+    // Move the UV of one corner of a triangle on a seam.
+    let faces: Vec<[u32; 3]> = uv.refinement.triangles.iter().map(|t| t.vertices).collect();
+    let mut dir = std::collections::HashMap::new();
+    for (k, f) in faces.iter().enumerate() {
+        for i in 0..3 {
+            dir.insert((f[i], f[(i + 1) % 3]), (k, i));
+        }
+    }
+    let (k, i) = dir
+        .iter()
+        .find_map(|(&(a, b), &(k, i))| {
+            let &(k2, j) = dir.get(&(b, a))?;
+            (uv.uv[k][i] != uv.uv[k2][(j + 1) % 3]).then_some((k, i))
+        })
+        .expect("a seam");
+    let p = uv.uv[k][i];
+    let line = format!("vt {} {}", p[0], p[1]);
+    let lines: Vec<&str> = obj.lines().collect();
+    let at = lines.iter().position(|l| *l == line).unwrap();
+    assert_eq!(
+        at,
+        1 + uv.positions.len() + 3 * k + i,
+        "the vt line of that corner"
+    );
+    let mut moved: Vec<String> = lines.iter().map(|l| (*l).to_string()).collect();
+    moved[at] = format!("vt {} {}", p[0] + 1e-3, p[1]);
+    let r = check_seams(&moved.join("\n"), &eps).unwrap();
+    assert!(!r.broken.is_empty(), "{r:?}");
+}
