@@ -180,8 +180,11 @@ fn report_closed(
     if let Some(path) = o.extra.svg.as_deref() {
         out.push_str(&super::uniformize_svg::write(path, sol)?);
     }
+    let mut uv_missing = false;
     if let Some(path) = o.extra.uv.as_deref() {
-        out.push_str(&super::uniformize_uv::write(path, shown, surface, outcome)?);
+        let (line, written) = super::uniformize_uv::write(path, shown, surface, outcome)?;
+        out.push_str(&line);
+        uv_missing = !written;
     }
     let Some(proof) = &outcome.proof else {
         out.push_str(&numerical_line(sol.residual_max));
@@ -218,7 +221,11 @@ fn report_closed(
         },
     )?;
     super::files::emit(&out)?;
-    Ok(status)
+    Ok(if uv_missing {
+        status.max(code::UNDECIDED)
+    } else {
+        status
+    })
 }
 
 /// The exact surface of a loaded case.

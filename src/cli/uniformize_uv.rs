@@ -31,14 +31,20 @@ fn write_all(path: &Path, mut f: std::fs::File, bytes: &[u8]) -> Result<(), CliE
 }
 
 /// Compute, write and check the UV mesh of `outcome` (of the input `surface`); the lines
-/// to report.
+/// to report and whether the files were written. Bad input is an error; a UV mesh penner
+/// could not compute (e.g. a Ptolemy flip not convex in the input metric) is a line, so the
+/// solve and its certificate are still reported (the command then exits 2).
 pub fn write(
     path: &Path,
     shown: &str,
     surface: &Surface,
     outcome: &ClosedOutcome,
-) -> Result<String, CliError> {
-    let uv = uv_closed(surface, outcome).map_err(|e| pipeline_error(shown, &e))?;
+) -> Result<(String, bool), CliError> {
+    let uv = match uv_closed(surface, outcome) {
+        Ok(uv) => uv,
+        Err(e) if e.is_bad_input() => return Err(pipeline_error(shown, &e)),
+        Err(e) => return Ok((format!("{shown}: {e}; no UV mesh written\n"), false)),
+    };
     let obj = uv.obj();
     let sidecar = uv.sidecar();
     let side_path = sidecar_path(path);
@@ -85,7 +91,7 @@ pub fn write(
         );
     }
     out.push_str(&seams_line(&obj, outcome)?);
-    Ok(out)
+    Ok((out, true))
 }
 
 /// The seam check's line (B110) when every cone angle is a multiple of π/2.
