@@ -187,6 +187,13 @@ pub struct UniformizeExtra {
     /// Write the planar layout of the result as SVG to this new file.
     #[arg(long, value_name = "FILE")]
     pub svg: Option<PathBuf>,
+    /// Closed flat or cone targets: write the common refinement of the input mesh and the
+    /// final triangulation as OBJ to this new file (`v` on the input surface, `vt` the
+    /// flattened metric), with the sidecar `FILE.json` (input face and barycentric
+    /// coordinates per face, input vertex or crossing per vertex); folds and the tiling of
+    /// the input faces are checked exactly on the written decimals.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["sphere", "hyperbolic"])]
+    pub uv: Option<PathBuf>,
     /// Solve in f64 only and skip the refinement and the certificate: the result is
     /// numerical and says so (exit 2, no claim to write).
     #[arg(long, conflicts_with = "output")]

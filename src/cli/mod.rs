@@ -20,6 +20,7 @@ mod uniformize_hyperbolic;
 mod uniformize_options;
 mod uniformize_sphere;
 mod uniformize_svg;
+mod uniformize_uv;
 
 use args::{Cli, Command};
 use clap::Parser;

@@ -87,6 +87,11 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     let shown = o.path.display().to_string();
     let surface = into_surface(load_flip_case(o.path)?);
     let n = surface.mesh.n_vertices();
+    if o.extra.uv.is_some() && !surface.mesh.is_closed() {
+        return Err(CliError::Input(format!(
+            "{shown}: --uv is for closed surfaces (flat or cone targets) only, for now"
+        )));
+    }
     if o.extra.hyperbolic {
         let targets = targets_of(o, n, true, || Targets::flat(n), "")?;
         let outcome = uniformize_hyperbolic(&surface, targets.as_ref(), &options)
@@ -134,12 +139,13 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     if let Some(b) = &bar {
         b.finish_and_clear();
     }
-    report_closed(&shown, &outcome, precision, o)
+    report_closed(&shown, &surface, &outcome, precision, o)
 }
 
 /// The report of [`uniformize_closed`]'s outcome, the SVG and the claim written.
 fn report_closed(
     shown: &str,
+    surface: &penner::io::Surface,
     outcome: &ClosedOutcome,
     precision: Precision,
     o: &Options<'_>,
@@ -173,6 +179,12 @@ fn report_closed(
     }
     if let Some(path) = o.extra.svg.as_deref() {
         out.push_str(&super::uniformize_svg::write(path, sol)?);
+    }
+    let mut uv_missing = false;
+    if let Some(path) = o.extra.uv.as_deref() {
+        let (line, written) = super::uniformize_uv::write(path, shown, surface, outcome)?;
+        out.push_str(&line);
+        uv_missing = !written;
     }
     let Some(proof) = &outcome.proof else {
         out.push_str(&numerical_line(sol.residual_max));
@@ -209,7 +221,11 @@ fn report_closed(
         },
     )?;
     super::files::emit(&out)?;
-    Ok(status)
+    Ok(if uv_missing {
+        status.max(code::UNDECIDED)
+    } else {
+        status
+    })
 }
 
 /// The exact surface of a loaded case.

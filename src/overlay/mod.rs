@@ -1,15 +1,33 @@
 //! The common refinement of the input triangulation `T_in` and a triangulation `T`
-//! reached from it by flips (issue 29), first slice: the combinatorics.
+//! reached from it by flips (issue 29).
 //!
 //! - [`normal_coordinates`]: the integer normal coordinates of the edges of `T_in`
 //!   relative to the current triangulation `T`, kept through flips by a purely
 //!   combinatorial update (proof: B105). The update holds for Euclidean and Ptolemy flips
 //!   alike, since the flipped edge is the same isotopy class of arc either way.
+//! - [`tracking`]: the crossing positions, tracked through flips whose quadrilaterals are
+//!   strictly convex in the input metric (every edge of `T` then a geodesic of the input
+//!   metric; B108); the first flip that is not is a typed error.
+//! - [`refinement`]: the refinement as a triangle mesh, each triangle knowing its face of
+//!   `T` and of `T_in` (B108).
+//! - [`uv`]: texture coordinates from a layout of `T` with its final lengths, 3-D
+//!   positions and barycentric coordinates, and the OBJ and sidecar texts (B109).
+//! - [`check`]: the exact checks of written files: no fold, each input face tiled (B109).
+//! - [`seams`]: the exact seam check: rotations by multiples of π/2 within `ε` (B110).
 //!
-//! Not computed yet: the crossing positions along the edges and the faces of the
-//! refinement with their barycentric coordinates; after Ptolemy flips the positions need
-//! the projective maps of the flips and are not computed either (the combinatorics are).
+//! Not computed yet: positions after Ptolemy flips whose quadrilateral is not convex in
+//! the input metric (the projective maps of the flips), surfaces with boundary.
 
+pub mod check;
 pub mod normal_coordinates;
+pub mod refinement;
+pub mod seams;
+pub mod tracking;
+pub mod uv;
 
+pub use check::{check_parametrization, ParametrizationReport};
 pub use normal_coordinates::{replay_normal_coordinates, NormalCoordinates, NormalError};
+pub use refinement::{common_refinement, Refinement, RefinementError};
+pub use seams::{check_seams, SeamReport};
+pub use tracking::{track_flips, TrackError, TrackedOverlay};
+pub use uv::{uv_mesh, UvError, UvMesh};

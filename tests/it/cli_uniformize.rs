@@ -281,3 +281,56 @@ fn uniformize_no_certify_is_numerical_and_says_so() {
     let out = penner(&["uniformize", &surf, "--flat"]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stdout));
 }
+
+/// B109 through the binary: `--uv` writes the refinement and its sidecar as new files, the
+/// exact checks hold on them when re-read, a second run refuses to overwrite (exit 4), and
+/// a surface with boundary is refused as bad input (exit 3).
+#[test]
+fn b109_cli_uniformize_uv_writes_new_files_that_check() {
+    let d = scratch("uniformize-uv");
+    let surf = octahedron_off(&d, "octahedron", 1.0);
+    let tf = d.join("cones.json");
+    std::fs::write(&tf, "[\"1\", \"1\", \"1\", \"1\", \"2\", \"2\"]").unwrap();
+    let uv = d.join("uv.obj");
+    let args = [
+        "uniformize",
+        &surf,
+        "--targets",
+        tf.to_str().unwrap(),
+        "--uv",
+        uv.to_str().unwrap(),
+    ];
+    let out = penner(&args);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}{}",
+        text(&out.stdout),
+        text(&out.stderr)
+    );
+    assert!(
+        text(&out.stdout).contains("every UV triangle counterclockwise"),
+        "{}",
+        text(&out.stdout)
+    );
+    let obj = std::fs::read_to_string(&uv).unwrap();
+    let side_path = d.join("uv.obj.json");
+    let side: Value = serde_json::from_str(&std::fs::read_to_string(&side_path).unwrap()).unwrap();
+    let report = penner::overlay::check_parametrization(&obj, &side).unwrap();
+    assert!(report.holds() && report.triangles >= 8, "{report:?}");
+    let out = penner(&args);
+    assert_eq!(out.status.code(), Some(4), "{}", text(&out.stderr));
+    assert_eq!(std::fs::read_to_string(&uv).unwrap(), obj);
+    // A disk: one triangle with boundary.
+    let disk = d.join("disk.off");
+    std::fs::write(&disk, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n").unwrap();
+    let out = penner(&[
+        "uniformize",
+        disk.to_str().unwrap(),
+        "--flat",
+        "--uv",
+        d.join("disk.obj").to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(3), "{}", text(&out.stderr));
+    assert!(text(&out.stderr).contains("--uv"), "{}", text(&out.stderr));
+}

@@ -1,0 +1,123 @@
+//! `penner uniformize … --uv OUT.obj` for closed flat and cone targets: the common
+//! refinement of the input mesh and the final triangulation with texture coordinates
+//! (`uniformization::pipeline::uv_closed`), written with its sidecar `OUT.obj.json`, both
+//! new files; the exact checks (`overlay::check_parametrization`) run on the written text.
+
+use super::error::CliError;
+use super::files::create_new;
+use super::uniformize::pipeline_error;
+use penner::io::Surface;
+use penner::overlay::{check_parametrization, check_seams};
+use penner::uniformization::pipeline::{uv_closed, ClosedOutcome};
+use rug::Rational;
+use std::fmt::Write as _;
+use std::io::Write as _;
+use std::path::{Path, PathBuf};
+
+/// The sidecar's path: `OUT.obj.json`.
+fn sidecar_path(path: &Path) -> PathBuf {
+    let mut s = path.as_os_str().to_owned();
+    s.push(".json");
+    PathBuf::from(s)
+}
+
+fn write_all(path: &Path, mut f: std::fs::File, bytes: &[u8]) -> Result<(), CliError> {
+    f.write_all(bytes)
+        .and_then(|()| f.flush())
+        .map_err(|e| CliError::Write {
+            path: path.to_path_buf(),
+            reason: e.to_string(),
+        })
+}
+
+/// Compute, write and check the UV mesh of `outcome` (of the input `surface`); the lines
+/// to report and whether the files were written. Bad input is an error; a UV mesh penner
+/// could not compute (e.g. a Ptolemy flip not convex in the input metric) is a line, so the
+/// solve and its certificate are still reported (the command then exits 2).
+pub fn write(
+    path: &Path,
+    shown: &str,
+    surface: &Surface,
+    outcome: &ClosedOutcome,
+) -> Result<(String, bool), CliError> {
+    let uv = match uv_closed(surface, outcome) {
+        Ok(uv) => uv,
+        Err(e) if e.is_bad_input() => return Err(pipeline_error(shown, &e)),
+        Err(e) => return Ok((format!("{shown}: {e}; no UV mesh written\n"), false)),
+    };
+    let obj = uv.obj();
+    let sidecar = uv.sidecar();
+    let side_path = sidecar_path(path);
+    // Both files are created before either is written: neither overwrites a file.
+    let f_obj = create_new(path)?;
+    let f_side = match create_new(&side_path) {
+        Ok(f) => f,
+        Err(e) => {
+            drop(f_obj);
+            let _ = std::fs::remove_file(path);
+            return Err(e);
+        }
+    };
+    let text = sidecar.to_string();
+    write_all(path, f_obj, obj.as_bytes())?;
+    write_all(&side_path, f_side, text.as_bytes())?;
+    let report = check_parametrization(&obj, &sidecar)
+        .map_err(|e| CliError::NotConverged(format!("{}: {e}", path.display())))?;
+    let mut out = format!(
+        "UV mesh written to {} and {} ({} vertices, {} triangles)\n",
+        path.display(),
+        side_path.display(),
+        uv.positions.len(),
+        report.triangles
+    );
+    let first = |v: &[usize]| {
+        v.iter()
+            .take(5)
+            .map(|f| format!("f{f}"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    if report.holds() {
+        out.push_str("exact checks on the written decimals: every UV triangle counterclockwise, every input face tiled (barycentric areas sum to 1 in ℚ)\n");
+    } else {
+        let _ = writeln!(
+            out,
+            "exact checks on the written decimals FAIL: {} UV folds ({}), {} folds in the input faces ({}), {} input faces not tiled",
+            report.uv_folds.len(),
+            first(&report.uv_folds),
+            report.input_folds.len(),
+            first(&report.input_folds),
+            report.untiled_faces.len()
+        );
+    }
+    out.push_str(&seams_line(&obj, outcome)?);
+    Ok((out, true))
+}
+
+/// The seam check's line (B110) when every cone angle is a multiple of π/2.
+fn seams_line(obj: &str, outcome: &ClosedOutcome) -> Result<String, CliError> {
+    let quarter = outcome
+        .solution
+        .targets
+        .over_pi()
+        .iter()
+        .all(|t| Rational::from(t * 2u32).is_integer());
+    if !quarter {
+        return Ok("seams not checked: not every cone angle is a multiple of π/2\n".into());
+    }
+    let eps = Rational::from((1, 1_000_000_000u32));
+    let r = check_seams(obj, &eps).map_err(|e| CliError::NotConverged(e.to_string()))?;
+    Ok(if r.broken.is_empty() {
+        format!(
+            "seams: all {} cut segments related by rotations by multiples of π/2 and translations, within relative ε = 1e-9 (exact check)\n",
+            r.seam_segments
+        )
+    } else {
+        format!(
+            "seams: {} of {} cut segments are not rotations by multiples of π/2 within relative ε = 1e-9 (first at f{}; on genus ≥ 1 the handles' holonomy is not fixed by the cone angles)\n",
+            r.broken.len(),
+            r.seam_segments,
+            r.broken[0]
+        )
+    })
+}

@@ -1,0 +1,172 @@
+//! Exact checks of a written parametrization, from the files alone (proof: B109): every
+//! UV triangle positively oriented, and the triangles tile each input face (every
+//! barycentric triangle positively oriented and their signed areas summing to exactly 1
+//! per input face). The decimals are read exactly into ℚ; nothing is rounded.
+
+use crate::scalar::parse::parse_rational;
+use rug::Rational;
+use serde_json::Value;
+use std::collections::BTreeMap;
+
+/// What the exact checks found.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct ParametrizationReport {
+    /// Triangles (0-based `f` lines).
+    pub triangles: usize,
+    /// Triangles whose UV triangle is not counterclockwise (folded or degenerate).
+    pub uv_folds: Vec<usize>,
+    /// Triangles whose barycentric triangle in their input face is not counterclockwise.
+    pub input_folds: Vec<usize>,
+    /// Input faces whose triangles' barycentric areas do not sum to 1 (or whose
+    /// barycentric triples do not each sum to 1).
+    pub untiled_faces: Vec<u64>,
+}
+
+impl ParametrizationReport {
+    /// No fold on either side and every input face tiled.
+    pub fn holds(&self) -> bool {
+        self.uv_folds.is_empty() && self.input_folds.is_empty() && self.untiled_faces.is_empty()
+    }
+}
+
+/// Why the files could not be read.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum ParametrizationError {
+    /// A malformed OBJ line.
+    #[error("OBJ line {0}: {1}")]
+    Obj(usize, String),
+    /// A malformed sidecar.
+    #[error("sidecar: {0}")]
+    Sidecar(String),
+}
+
+fn orient(a: &[Rational; 2], b: &[Rational; 2], c: &[Rational; 2]) -> Rational {
+    let (ux, uy) = (Rational::from(&b[0] - &a[0]), Rational::from(&b[1] - &a[1]));
+    let (vx, vy) = (Rational::from(&c[0] - &a[0]), Rational::from(&c[1] - &a[1]));
+    ux * vy - uy * vx
+}
+
+/// The 3×3 determinant of barycentric rows: the signed area of the triangle as a fraction
+/// of its face's.
+fn det3(m: &[[Rational; 3]; 3]) -> Rational {
+    let minor = |a: usize, b: usize, c: usize, d: usize| {
+        Rational::from(&m[1][a] * &m[2][b]) - Rational::from(&m[1][c] * &m[2][d])
+    };
+    Rational::from(&m[0][0] * &minor(1, 2, 2, 1)) - Rational::from(&m[0][1] * &minor(0, 2, 2, 0))
+        + Rational::from(&m[0][2] * &minor(0, 1, 1, 0))
+}
+
+fn number(word: Option<&str>, line: usize) -> Result<Rational, ParametrizationError> {
+    let w = word.ok_or_else(|| ParametrizationError::Obj(line, "missing number".into()))?;
+    parse_rational(w).map_err(|e| ParametrizationError::Obj(line, e.to_string()))
+}
+
+/// A triangle of an OBJ text: its vertex indices (0-based) and its corners' texture
+/// coordinates, read exactly.
+pub(crate) type UvFace = ([usize; 3], [[Rational; 2]; 3]);
+
+/// The `f` lines of an OBJ text with their texture coordinates, read exactly.
+pub(crate) fn uv_faces(obj: &str) -> Result<Vec<UvFace>, ParametrizationError> {
+    let mut vt = Vec::new();
+    let mut tris = Vec::new();
+    for (k, line) in obj.lines().enumerate() {
+        let mut w = line.split_whitespace();
+        match w.next() {
+            Some("vt") => vt.push([number(w.next(), k + 1)?, number(w.next(), k + 1)?]),
+            Some("f") => {
+                let mut c = Vec::new();
+                for word in w {
+                    let bad = || ParametrizationError::Obj(k + 1, format!("not v/vt: {word:?}"));
+                    let mut parts = word.split('/');
+                    let v = parts
+                        .next()
+                        .and_then(|x| x.parse::<usize>().ok())
+                        .and_then(|i| i.checked_sub(1))
+                        .ok_or_else(bad)?;
+                    let t = parts
+                        .next()
+                        .and_then(|x| x.parse::<usize>().ok())
+                        .and_then(|i| vt.get(i.checked_sub(1)?))
+                        .ok_or_else(bad)?;
+                    c.push((v, t.clone()));
+                }
+                let [(a, ta), (b, tb), (c, tc)]: [(usize, [Rational; 2]); 3] = c
+                    .try_into()
+                    .map_err(|_| ParametrizationError::Obj(k + 1, "not a triangle".into()))?;
+                tris.push(([a, b, c], [ta, tb, tc]));
+            }
+            _ => {}
+        }
+    }
+    Ok(tris)
+}
+
+/// Check the OBJ text `obj` and its `sidecar` exactly (module documentation).
+pub fn check_parametrization(
+    obj: &str,
+    sidecar: &Value,
+) -> Result<ParametrizationReport, ParametrizationError> {
+    let side = |m: &str| ParametrizationError::Sidecar(m.into());
+    let tris: Vec<[[Rational; 2]; 3]> = uv_faces(obj)?.into_iter().map(|f| f.1).collect();
+    let faces = sidecar["faces"]
+        .as_array()
+        .ok_or_else(|| side("no faces array"))?;
+    if faces.len() != tris.len() {
+        return Err(side("not one sidecar face per f line"));
+    }
+    let mut report = ParametrizationReport {
+        triangles: tris.len(),
+        ..Default::default()
+    };
+    let mut area: BTreeMap<u64, Rational> = BTreeMap::new();
+    let mut broken: Vec<u64> = Vec::new();
+    for (k, (t, f)) in tris.iter().zip(faces).enumerate() {
+        if orient(&t[0], &t[1], &t[2]).cmp0().is_le() {
+            report.uv_folds.push(k);
+        }
+        let input = f["input_face"]
+            .as_u64()
+            .ok_or_else(|| side("a face without input_face"))?;
+        let rows = f["barycentric"]
+            .as_array()
+            .filter(|r| r.len() == 3)
+            .ok_or_else(|| side("a face without three barycentric rows"))?;
+        let mut m: [[Rational; 3]; 3] = Default::default();
+        for (i, row) in rows.iter().enumerate() {
+            let row = row
+                .as_array()
+                .filter(|r| r.len() == 3)
+                .ok_or_else(|| side("a barycentric row of other than three numbers"))?;
+            for (j, x) in row.iter().enumerate() {
+                let s = x
+                    .as_str()
+                    .ok_or_else(|| side("a barycentric coordinate that is not a decimal string"))?;
+                m[i][j] = parse_rational(s).map_err(|e| side(&e.to_string()))?;
+            }
+            let sum = Rational::from(&m[i][0] + &m[i][1]) + &m[i][2];
+            if sum != 1 {
+                broken.push(input);
+            }
+        }
+        let d = det3(&m);
+        if d.cmp0().is_le() {
+            report.input_folds.push(k);
+        }
+        *area.entry(input).or_default() += d;
+    }
+    let n_input = sidecar["input_faces"]
+        .as_u64()
+        .ok_or_else(|| side("no input_faces count"))?;
+    for f in 0..n_input {
+        area.entry(f).or_default();
+    }
+    report.untiled_faces = area
+        .into_iter()
+        .filter(|(_, a)| *a != 1)
+        .map(|(f, _)| f)
+        .chain(broken)
+        .collect();
+    report.untiled_faces.sort_unstable();
+    report.untiled_faces.dedup();
+    Ok(report)
+}
