@@ -143,12 +143,8 @@ pub fn certify_solution<T: Real>(
     for &v in &free {
         ubox[v] = ubox[v].clone() + &pad;
     }
-    let mut h = hessian(p, &ubox, &cos_phi);
     let lam_i = I::from_f64(lambda, prec);
-    for (i, row) in h.iter_mut().enumerate() {
-        row[i] -= &lam_i;
-    }
-    if !interval_cholesky_positive(&h) {
+    if !shifted_positive_definite(hessian(p, &ubox, &cos_phi), &lam_i) {
         return Err(format!(
             "H − {lambda:e}·I not proved positive definite on the box of half-width {radius:e}"
         ));
@@ -164,4 +160,14 @@ pub fn certify_solution<T: Real>(
         gradient_norm: gamma_up,
         bits,
     })
+}
+
+/// Whether `H − λI` is proved positive definite for every symmetric `H` in the interval
+/// matrix `h` (step 2 of the module docs, proofs/B94): `λ` subtracted on the diagonal, then
+/// the interval Cholesky factorisation ([`interval_cholesky_positive`]).
+pub fn shifted_positive_definite(mut h: Vec<Vec<I>>, lambda: &I) -> bool {
+    for (i, row) in h.iter_mut().enumerate() {
+        row[i] -= lambda;
+    }
+    interval_cholesky_positive(&h)
 }

@@ -297,6 +297,270 @@ fn b94_interval_cholesky_rejects_an_indefinite_hull() {
     assert!(!interval_cholesky_positive(&l(1.5)));
 }
 
+/// A certificate of T09's comparison (B94) with the given exact centre and half-width; the
+/// other fields do not enter `contains` or `disjoint_from`.
+fn b94_box(center: &[Rational], radius: f64) -> penner::circles::certify::Certificate {
+    penner::circles::certify::Certificate {
+        center: center.to_vec(),
+        radius,
+        lambda: 1.0,
+        gradient_norm: 0.0,
+        bits: 128,
+    }
+}
+
+/// B94 term "a box nested in another holds the same critical point": `|c − c'|∞ + ρ' ≤ ρ`,
+/// compared exactly. Centres `(3, 3)` and `(3, 3 + δ)`, `ρ = 1`, `ρ' = ½`: nested exactly
+/// when `δ + ½ ≤ 1` (closed form), so `δ = ½` (touching the wall from inside) nests and
+/// `δ = ½ + 2⁻⁴⁰` does not; the coordinate that moves is the second, the first is the same
+/// nonzero value in both boxes (a sum `c + c'` would be 6).
+#[test]
+fn term_b94_nested_boxes_compared_exactly() {
+    let big = b94_box(&[rat(3, 1), rat(3, 1)], 1.0);
+    let tiny = Rational::from((1, 1u64 << 40));
+    for (delta, nested) in [
+        (rat(1, 2), true),
+        (rat(1, 2) + &tiny, false),
+        (-rat(1, 2), true),
+        (-rat(1, 2) - &tiny, false),
+        (rat(0, 1), true),
+    ] {
+        let small = b94_box(&[rat(3, 1), rat(3, 1) + &delta], 0.5);
+        let closed_form = Rational::from(delta.abs_ref()) + rat(1, 2) <= 1;
+        assert_eq!(closed_form, nested);
+        assert_eq!(big.contains(&small), nested, "δ = {delta}");
+    }
+    // Negative control: the larger box is never nested in the smaller one.
+    let small = b94_box(&[rat(3, 1), rat(3, 1)], 0.5);
+    assert!(!small.contains(&big));
+    assert!(big.contains(&small));
+}
+
+/// B94 term "two disjoint boxes hold two different critical points": some `|c_k − c'_k| >
+/// ρ + ρ'`, compared exactly. Centres `(3, 3)` and `(3, 3 + δ)`, `ρ = 1`, `ρ' = ½`: disjoint
+/// exactly when `|δ| > 3/2` (closed form); at `δ = 3/2` the boxes share a side (not disjoint,
+/// the solution could lie on it), at `3/2 + 2⁻⁴⁰` they are apart.
+#[test]
+fn term_b94_disjoint_boxes_compared_exactly() {
+    let a = b94_box(&[rat(3, 1), rat(3, 1)], 1.0);
+    let tiny = Rational::from((1, 1u64 << 40));
+    for (delta, disjoint) in [
+        (rat(3, 2), false),
+        (rat(3, 2) + &tiny, true),
+        (-rat(3, 2), false),
+        (-rat(3, 2) - &tiny, true),
+        (rat(1, 2), false),
+        (rat(0, 1), false),
+    ] {
+        let b = b94_box(&[rat(3, 1), rat(3, 1) + &delta], 0.5);
+        let closed_form = Rational::from(delta.abs_ref()) > rat(3, 2);
+        assert_eq!(closed_form, disjoint);
+        assert_eq!(a.disjoint_from(&b), disjoint, "δ = {delta}");
+        assert_eq!(b.disjoint_from(&a), disjoint, "δ = {delta}, swapped");
+    }
+}
+
+/// `θ_v(u)` of the tangency pattern (`Φ = 0`) of the tetrahedron, independently of
+/// `penner::circles`: at each vertex the three angles of the triangles of sides `r_i + r_j`
+/// (`r = e^u`), by the law of cosines in `bits`-bit MPFR.
+fn tetrahedron_tangency_angles(u: &[rug::Float; 4], bits: u32) -> [rug::Float; 4] {
+    use rug::Float;
+    let r: Vec<Float> = u
+        .iter()
+        .map(|x| Float::with_val(bits, x.exp_ref()))
+        .collect();
+    let angle = |v: usize, x: usize, y: usize| {
+        let b = Float::with_val(bits, &r[v] + &r[x]);
+        let c = Float::with_val(bits, &r[v] + &r[y]);
+        let a = Float::with_val(bits, &r[x] + &r[y]);
+        let num = Float::with_val(bits, &b * &b) + Float::with_val(bits, &c * &c)
+            - Float::with_val(bits, &a * &a);
+        let den = Float::with_val(bits, &b * &c) * 2u32;
+        Float::with_val(bits, num / den).acos()
+    };
+    std::array::from_fn(|v| {
+        let o: Vec<usize> = (0..4).filter(|&w| w != v).collect();
+        angle(v, o[0], o[1]) + angle(v, o[1], o[2]) + angle(v, o[0], o[2])
+    })
+}
+
+/// Whether `H(u) − λI` is positive definite at `u` for the grounded Hessian `H = −∂θ/∂u`
+/// on the free vertices `1, 2, 3` of [`tetrahedron_tangency_angles`]: central differences
+/// of step `2⁻⁸⁰` at 512 bits (error far below `2⁻¹⁰⁰`), symmetrised, and Sylvester's
+/// criterion on the three leading minors.
+fn tetrahedron_hessian_above(u: [f64; 4], lambda: f64) -> bool {
+    use rug::Float;
+    let bits = 512;
+    let h = Float::with_val(bits, Float::i_exp(1, -80));
+    let mut m: [[Float; 3]; 3] = std::array::from_fn(|_| std::array::from_fn(|_| Float::new(bits)));
+    for b in 1..4 {
+        let at = |s: i32| {
+            let x: [Float; 4] = std::array::from_fn(|k| {
+                let mut x = Float::with_val(bits, u[k]);
+                if k == b {
+                    x += Float::with_val(bits, &h * s);
+                }
+                x
+            });
+            tetrahedron_tangency_angles(&x, bits)
+        };
+        let (plus, minus) = (at(1), at(-1));
+        for a in 1..4 {
+            let d = Float::with_val(bits, &minus[a] - &plus[a]) / Float::with_val(bits, &h * 2u32);
+            m[a - 1][b - 1] = d;
+        }
+    }
+    let s = |i: usize, j: usize| {
+        let mut x = Float::with_val(bits, &m[i][j] + &m[j][i]) / 2u32;
+        if i == j {
+            x -= lambda;
+        }
+        x
+    };
+    let d1 = s(0, 0);
+    let d2 = Float::with_val(bits, s(0, 0) * s(1, 1)) - Float::with_val(bits, s(0, 1) * s(0, 1));
+    let d3 = Float::with_val(
+        bits,
+        s(0, 0)
+            * (Float::with_val(bits, s(1, 1) * s(2, 2)) - Float::with_val(bits, s(1, 2) * s(1, 2))),
+    ) - Float::with_val(
+        bits,
+        s(0, 1)
+            * (Float::with_val(bits, s(0, 1) * s(2, 2)) - Float::with_val(bits, s(1, 2) * s(0, 2))),
+    ) + Float::with_val(
+        bits,
+        s(0, 2)
+            * (Float::with_val(bits, s(0, 1) * s(1, 2)) - Float::with_val(bits, s(1, 1) * s(0, 2))),
+    );
+    d1 > 0 && d2 > 0 && d3 > 0
+}
+
+/// The tangency pattern (`Φ = 0`) of the tetrahedron with every `Θ_v = π`: its solution
+/// is `u = 0` (by symmetry), grounded at `v0`.
+fn tetrahedron_tangency_pattern() -> CirclePattern {
+    let p = pattern(tetrahedron().mesh, &rat(0, 1), vec![rat(1, 1); 4]);
+    assert_eq!(p.free(), vec![1, 2, 3]);
+    p
+}
+
+/// Whether the claim of `c` about the Hessian, `H(u) − λI` positive definite on the box
+/// `ũ ± ρ`, holds at the box's eight corners ([`tetrahedron_hessian_above`]).
+fn b94_lambda_holds_at_the_corners(c: &penner::circles::certify::Certificate) -> bool {
+    let u: Vec<f64> = c.center.iter().map(Rational::to_f64).collect();
+    (0..8).all(|k| {
+        let mut x = [u[0], u[1], u[2], u[3]];
+        for b in 0..3 {
+            x[b + 1] += if k >> b & 1 == 1 { c.radius } else { -c.radius };
+        }
+        tetrahedron_hessian_above(x, c.lambda)
+    })
+}
+
+/// B94 term `γ ≥ ‖Θ − θ(ũ)‖₂`: at `ũ = (0, δ, 0, 0)` near the solution `u = 0` of
+/// [`tetrahedron_tangency_pattern`], the certificate's `γ` must bound the gradient on the
+/// free vertices, recomputed independently at 256 bits ([`tetrahedron_tangency_angles`]),
+/// and be tight (an enclosure's upper end); the box must hold the solution `0`, and its `λ`
+/// hold at the corners. The squares are `|g|·|g|` summed: a product of them (`γ = 0`), a
+/// sum of `|g|` or of ones gives another `γ`.
+#[test]
+fn term_b94_gradient_norm_bounds_the_independent_gradient() {
+    use rug::Float;
+    let bits = 256;
+    let p = tetrahedron_tangency_pattern();
+    let pi = Float::with_val(bits, rug::float::Constant::Pi);
+    for delta in [1.0 / 1048576.0, -1.0 / 4194304.0, 1.0 / 67108864.0] {
+        let u = [0.0, delta, 0.0, 0.0];
+        let theta = tetrahedron_tangency_angles(&u.map(|x| Float::with_val(bits, x)), bits);
+        let mut sq = Float::with_val(bits, 0);
+        for t in &theta[1..] {
+            let g = Float::with_val(bits, &pi - t);
+            sq += Float::with_val(bits, &g * &g);
+        }
+        let gamma = sq.sqrt().to_f64();
+        assert!(
+            gamma > 1e-9,
+            "δ = {delta}: the gradient is not small ({gamma})"
+        );
+        let c = penner::circles::certify::certify_solution(&p, &u, 128, 0.0)
+            .unwrap_or_else(|e| panic!("δ = {delta}: {e}"));
+        assert!(
+            c.gradient_norm >= gamma && c.gradient_norm <= gamma * (1.0 + 1e-12),
+            "δ = {delta}: γ = {} for ‖g‖₂ = {gamma}",
+            c.gradient_norm
+        );
+        let reach = Rational::from_f64(c.radius).unwrap();
+        for v in p.free() {
+            assert!(
+                Rational::from(c.center[v].abs_ref()) <= reach,
+                "δ = {delta}: v{v}"
+            );
+        }
+        assert!(b94_lambda_holds_at_the_corners(&c), "δ = {delta}");
+    }
+}
+
+/// B94 term "`H − λI` positive definite for every `u` in `U`": the Hessian is enclosed over
+/// the whole box `ũ ± ρ` (not at its centre or one corner) and shifted by `−λ`. Asked for a
+/// box of half-width `ρ ≥ 2` around `ũ = (0, 2⁻²⁰, 0, 0)`, where the independent Hessian
+/// ([`tetrahedron_hessian_above`]) has `λ_min < ¼` at a corner while the centre's is about
+/// `0.58` (the certifier's `λ` is half of it), a certificate is refused or its `λ` holds at
+/// every corner; a box of half-width `2⁻²⁰` is certified.
+#[test]
+fn term_b94_hessian_bound_holds_on_the_whole_box() {
+    let p = tetrahedron_tangency_pattern();
+    let u = [0.0, 1.0 / 1048576.0, 0.0, 0.0];
+    let small = penner::circles::certify::certify_solution(&p, &u, 128, 1.0 / 1048576.0)
+        .expect("a small box is certified");
+    assert!(b94_lambda_holds_at_the_corners(&small));
+    assert!(small.lambda > 0.25, "{}", small.lambda);
+    for rho in [2.0, 4.0] {
+        // The premise, from the oracle alone: some corner has λ_min(H) < ¼ < λ.
+        let low_corner = (0..8).any(|k| {
+            let mut x = u;
+            for b in 0..3 {
+                x[b + 1] += if k >> b & 1 == 1 { rho } else { -rho };
+            }
+            !tetrahedron_hessian_above(x, 0.25)
+        });
+        assert!(low_corner, "ρ = {rho}");
+        if let Ok(c) = penner::circles::certify::certify_solution(&p, &u, 128, rho) {
+            assert!(
+                b94_lambda_holds_at_the_corners(&c),
+                "ρ = {rho}: λ = {}",
+                c.lambda
+            );
+        }
+    }
+}
+
+/// B94 term "`H − λI` positive definite", the shift `−λ` on the diagonal: the hull of
+/// `[[1, b], [b, 1]]`, `b ∈ [0.4, 0.5]`, has eigenvalues `1 ± b` (closed form), smallest
+/// `½`. With `λ = 0.4` every `H − λI` is positive definite; with `λ = ½` one member is
+/// singular and with `λ = 0.6` indefinite, both refused (`H + λI` would be positive
+/// definite in all three).
+#[test]
+fn term_b94_lambda_is_subtracted_from_the_hessian() {
+    use penner::circles::certify::shifted_positive_definite;
+    use penner::scalar::Interval;
+    let p = Precision::new(128).unwrap();
+    let iv = |lo: f64, hi: f64| Interval::new(Mpfr::from_f64(lo, p), Mpfr::from_f64(hi, p));
+    let hull = || {
+        vec![
+            vec![iv(1.0, 1.0), iv(0.4, 0.5)],
+            vec![iv(0.4, 0.5), iv(1.0, 1.0)],
+        ]
+    };
+    for (lambda, pd) in [(0.4, true), (0.5, false), (0.6, false), (0.0, true)] {
+        let closed_form = 1.0 - 0.5 - lambda > 0.0;
+        assert_eq!(closed_form, pd);
+        assert_eq!(
+            shifted_positive_definite(hull(), &iv(lambda, lambda)),
+            pd,
+            "λ = {lambda}"
+        );
+    }
+}
+
 /// A simplicial sphere (icosahedron) or torus (3×4 or 4×4 grid) with 1–3 random faces split
 /// (vertex insertion keeps it simplicial).
 fn simplicial_surface(case: usize, rng: &mut ChaCha8Rng) -> Mesh {

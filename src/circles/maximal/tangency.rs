@@ -364,4 +364,77 @@ mod terms {
         let (mesh, circles) = wheel(4, 1);
         assert!(orientation_violations(&mesh, &circles).is_empty());
     }
+
+    /// One triangle `(v0, v1, v2)`, scaled by `s`: `c1 = (−1, 0)`, `c2 = (1, 0)` of radius 1
+    /// and `c0 = (0, 10⁻³)` of radius `r0`. Its defects are `|d₁₂ − 2| = 0` and
+    /// `|√(1 + 10⁻⁶) − 1 − r0|` (closed form), below `ε = 10⁻⁶·s` for `0 ≤ r0 ≤ 10⁻⁶`.
+    fn needle(r0: Rational, s: &Rational) -> (Mesh, Vec<ExactCircle>) {
+        let mesh = Mesh::from_faces(3, &[[0, 1, 2]]).expect("a triangle");
+        let c = |x: Rational, y: Rational, r: Rational| ExactCircle {
+            centre: [x * s, y * s],
+            radius: r * s,
+        };
+        let circles = vec![
+            c(Rational::new(), Rational::from((1, 1000)), r0),
+            c(Rational::from(-1), Rational::new(), Rational::from(1)),
+            c(Rational::from(1), Rational::new(), Rational::from(1)),
+        ];
+        (mesh, circles)
+    }
+
+    /// B95 term "every radius positive": a circle of radius 0 whose tangencies hold within
+    /// `ε = 10⁻⁶` (the defect `√(1 + 10⁻⁶) − 1 ≈ 5·10⁻⁷`, closed form) and whose face is
+    /// positively oriented fails on its radius alone; the radius `4·10⁻⁷` holds.
+    #[test]
+    fn term_b95_radius_must_be_positive() {
+        let one = Rational::from(1);
+        let eps = Rational::from((1, 1_000_000));
+        let (mesh, circles) = needle(Rational::new(), &one);
+        match check_packing(&mesh, &circles, &eps, 128, None) {
+            PackingVerdict::Fails(w) => {
+                assert_eq!(w.len(), 1, "{w:?}");
+                assert!(w[0].contains("v0: radius 0 is not positive"), "{w:?}");
+            }
+            v => panic!("{v:?}"),
+        }
+        let (mesh, circles) = needle(Rational::from((4, 10_000_000)), &one);
+        assert!(matches!(
+            check_packing(&mesh, &circles, &eps, 128, None),
+            PackingVerdict::Holds { .. }
+        ));
+    }
+
+    /// B95 term "the unmarked circles lie inside the unit disk" (`‖c‖ + ρ < 1` on
+    /// enclosures): the triangle of [`needle`] (radius `r0 = 4·10⁻⁷`) scaled by 1 leaves the
+    /// disk (`‖c₁‖ + ρ₁ = 2`, closed form) and fails; scaled by ½ it touches the unit circle
+    /// from inside (`= 1` exactly), not proved inside, undecided; scaled by ¼ it holds.
+    #[test]
+    fn term_b95_unmarked_circles_inside_the_unit_disk() {
+        let r0 = Rational::from((4, 10_000_000));
+        let marks = [false; 3];
+        for (s, expect) in [(1, "fails"), (2, "undecided"), (4, "holds")] {
+            let s = Rational::from((1, s));
+            let eps = Rational::from((1, 1_000_000)) * &s;
+            let (mesh, circles) = needle(r0.clone(), &s);
+            let v = check_packing(&mesh, &circles, &eps, 128, Some(&marks));
+            let got = match &v {
+                PackingVerdict::Fails(w) => {
+                    assert!(
+                        w.iter().all(|w| w.contains("leaves the unit disk")),
+                        "{w:?}"
+                    );
+                    "fails"
+                }
+                PackingVerdict::Undecided(w) => {
+                    assert!(
+                        w.iter().all(|w| w.contains("inside the unit disk")),
+                        "{w:?}"
+                    );
+                    "undecided"
+                }
+                PackingVerdict::Holds { .. } => "holds",
+            };
+            assert_eq!(got, expect, "scale {s}: {v:?}");
+        }
+    }
 }
