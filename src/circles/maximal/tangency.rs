@@ -365,6 +365,52 @@ mod terms {
         assert!(orientation_violations(&mesh, &circles).is_empty());
     }
 
+    /// B95 term "every face positively oriented", strictly: centres on one line
+    /// (`cross = 0`, a degenerate face) are a violation, whatever the tangencies; the same
+    /// triangle with its apex lifted by 2⁻¹⁰⁰ is not (exact rationals, no tolerance).
+    #[test]
+    fn term_b95_collinear_centres_are_not_positively_oriented() {
+        let mesh = Mesh::from_faces(3, &[[0, 1, 2]]).expect("a triangle");
+        let circle = |x: i32, y: Rational| ExactCircle {
+            centre: [Rational::from(x), y],
+            radius: Rational::from((1, 2)),
+        };
+        let flat = vec![
+            circle(0, Rational::new()),
+            circle(1, Rational::new()),
+            circle(2, Rational::new()),
+        ];
+        let v = orientation_violations(&mesh, &flat);
+        assert_eq!(v.len(), 1, "{v:?}");
+        assert_eq!(v[0].element, "face f0 (v0, v1, v2)");
+        let lifted = vec![
+            circle(0, Rational::new()),
+            circle(1, Rational::new()),
+            circle(2, Rational::from(Rational::from(1) >> 100u32)),
+        ];
+        assert!(orientation_violations(&mesh, &lifted).is_empty());
+    }
+
+    /// B95 term "the neighbours wind once", measured around the vertex's own centre: the
+    /// once-around wheel translated to `(10, 7)` still winds once (directions `p − c`, not
+    /// positions), and the twice-around wheel translated there still winds twice.
+    #[test]
+    fn term_b95_winding_is_measured_around_the_vertex_centre() {
+        let shift = |(mesh, mut circles): (Mesh, Vec<ExactCircle>)| {
+            for c in &mut circles {
+                c.centre[0] += 10;
+                c.centre[1] += 7;
+            }
+            (mesh, circles)
+        };
+        let (mesh, circles) = shift(wheel(4, 1));
+        assert!(orientation_violations(&mesh, &circles).is_empty());
+        let (mesh, circles) = shift(wheel(8, 2));
+        let v = orientation_violations(&mesh, &circles);
+        assert_eq!(v.len(), 1, "{v:?}");
+        assert!(v[0].detail.contains("wind 2 times"), "{}", v[0].detail);
+    }
+
     /// One triangle `(v0, v1, v2)`, scaled by `s`: `c1 = (−1, 0)`, `c2 = (1, 0)` of radius 1
     /// and `c0 = (0, 10⁻³)` of radius `r0`. Its defects are `|d₁₂ − 2| = 0` and
     /// `|√(1 + 10⁻⁶) − 1 − r0|` (closed form), below `ε = 10⁻⁶·s` for `0 ≤ r0 ≤ 10⁻⁶`.
