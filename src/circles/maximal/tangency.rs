@@ -386,7 +386,7 @@ mod terms {
         let lifted = vec![
             circle(0, Rational::new()),
             circle(1, Rational::new()),
-            circle(2, Rational::from(Rational::from(1) >> 100u32)),
+            circle(2, Rational::from(1) >> 100u32),
         ];
         assert!(orientation_violations(&mesh, &lifted).is_empty());
     }
