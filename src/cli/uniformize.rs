@@ -92,6 +92,9 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
             "{shown}: --uv is for closed surfaces (flat or cone targets) only, for now"
         )));
     }
+    if let Some(path) = o.extra.uv.as_deref() {
+        super::uniformize_uv::refuse_existing(path)?;
+    }
     if o.extra.hyperbolic {
         let targets = targets_of(o, n, true, || Targets::flat(n), "")?;
         let outcome = uniformize_hyperbolic(&surface, targets.as_ref(), &options)

@@ -21,6 +21,21 @@ fn sidecar_path(path: &Path) -> PathBuf {
     PathBuf::from(s)
 }
 
+/// Refuse `--uv OUT.obj` before the solve when OUT.obj or OUT.obj.json exists (exit 4, as
+/// the file creation would refuse after it); the creation still refuses a file made since.
+pub fn refuse_existing(path: &Path) -> Result<(), CliError> {
+    for p in [path.to_path_buf(), sidecar_path(path)] {
+        if p.exists() {
+            return Err(CliError::Write {
+                path: p,
+                reason: "the file exists (penner never overwrites a file; choose another name)"
+                    .to_string(),
+            });
+        }
+    }
+    Ok(())
+}
+
 fn write_all(path: &Path, mut f: std::fs::File, bytes: &[u8]) -> Result<(), CliError> {
     f.write_all(bytes)
         .and_then(|()| f.flush())

@@ -95,6 +95,10 @@ pub enum Assertion {
     /// within `radius` (sup norm) of the given `u`, and `‖Θ − θ_hyp(u)‖₂ ≤ residual_bound`
     /// (notes Thm 11; `uniformization::hyperbolic_claim`, B39, B87, B89).
     HyperbolicUniformization(crate::uniformization::hyperbolic_claim::HyperbolicClaim),
+    /// `parametrization`: the embedded UV OBJ and its sidecar are a parametrization of the
+    /// surface: no UV fold, every input face tiled exactly, and, when asked, seams that
+    /// are rotations by multiples of π/2 within ε ([`crate::overlay::claim`], B109, B110).
+    Parametrization(crate::overlay::claim::ParametrizationClaim),
     /// `circle_packing`: the circles (plane) or caps (sphere) realize the surface's
     /// triangulation as a tangency packing within `epsilon`: every edge's tangency defect
     /// is at most ε, every face's centres are positively oriented and every interior
@@ -134,6 +138,7 @@ impl Assertion {
             Assertion::Uniformization(_) => "uniformization",
             Assertion::SphereUniformization(_) => "sphere_uniformization",
             Assertion::HyperbolicUniformization(_) => "hyperbolic_uniformization",
+            Assertion::Parametrization(_) => "parametrization",
             Assertion::CirclePacking { .. } => "circle_packing",
             Assertion::CirclePattern { .. } => "circle_pattern",
         }

@@ -166,10 +166,41 @@ pub fn certify(claim: &Claim) -> Result<Answer, Unsupported> {
                 .map_err(|e| e.to_string()),
         )),
         Assertion::HyperbolicUniformization(h) => Ok(super::certify_hyperbolic::answer(claim, h)),
+        Assertion::Parametrization(p) => Ok(parametrization(claim, p)),
         Assertion::CirclePacking { .. } | Assertion::CirclePattern { .. } => {
             super::certify_circles::answer(claim).ok_or(Unsupported(claim.assertion.kind()))
         }
     }
+}
+
+/// `parametrization`: the exact re-check of [`crate::overlay::claim::recheck`] (B109,
+/// B110). `holds` or `refuted` (every failure a witness), both certified; files that
+/// cannot be read are refused before ([`crate::oracle::claim::parse`] reads them).
+fn parametrization(claim: &Claim, p: &crate::overlay::claim::ParametrizationClaim) -> Answer {
+    use crate::overlay::claim::{recheck, ParametrizationVerdict};
+    let (verdict, witnesses) = match recheck(&claim.surface, p) {
+        Ok(ParametrizationVerdict::Holds { .. }) => (ClaimVerdict::Holds, Vec::new()),
+        Ok(ParametrizationVerdict::Refuted(failures)) => (
+            ClaimVerdict::Refuted,
+            failures
+                .into_iter()
+                .map(|f| Witness {
+                    element: f.element,
+                    detail: f.detail,
+                    value: f64::NAN,
+                })
+                .collect(),
+        ),
+        Err(e) => (
+            ClaimVerdict::Undecided,
+            vec![Witness {
+                element: "files".into(),
+                detail: e.to_string(),
+                value: f64::NAN,
+            }],
+        ),
+    };
+    super::answer::decided_answer(claim, verdict, 0, None, witnesses)
 }
 
 /// `uniformization`: the re-check of `uniformization::claim_form::recheck` (B71) at the

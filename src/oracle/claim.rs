@@ -43,7 +43,7 @@ const COMMON_FIELDS: [&str; 5] = ["penner_claim", "id", "kind", "surface", "max_
 
 /// The claim kinds and the fields each may carry besides [`COMMON_FIELDS`]
 /// (`schema/claim-v1.schema.json`).
-const KIND_FIELDS: [(&str, &[&str]); 12] = [
+const KIND_FIELDS: [(&str, &[&str]); 13] = [
     ("intrinsic_delaunay", &[]),
     ("delaunay_flip", &["flips", "result", "epsilon"]),
     ("cone_angles", &["angles", "epsilon"]),
@@ -80,6 +80,7 @@ const KIND_FIELDS: [(&str, &[&str]); 12] = [
         &["targets", "flips", "u", "radius", "residual_bound"],
     ),
     ("circle_packing", &["centres", "radii", "caps", "epsilon"]),
+    ("parametrization", &["obj", "sidecar", "seam_epsilon"]),
     (
         "circle_pattern",
         &["radii", "phi_over_pi", "angles", "epsilon"],
@@ -217,7 +218,7 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
     let kind = v
         .get("kind")
         .and_then(Value::as_str)
-        .ok_or_else(|| err("kind: required, one of intrinsic_delaunay, delaunay_flip, cone_angles, cotan_laplacian, conformal_equivalence, energy, lobachevsky, uniformization, sphere_uniformization, hyperbolic_uniformization, circle_packing, circle_pattern"))?;
+        .ok_or_else(|| err("kind: required, one of intrinsic_delaunay, delaunay_flip, cone_angles, cotan_laplacian, conformal_equivalence, energy, lobachevsky, uniformization, sphere_uniformization, hyperbolic_uniformization, circle_packing, circle_pattern, parametrization"))?;
     let Some((_, own)) = KIND_FIELDS.iter().find(|(k, _)| *k == kind) else {
         return Err(err(format!("kind: unknown claim kind {kind:?}")));
     };
@@ -282,6 +283,7 @@ pub fn parse_value(v: &Value) -> Result<Claim, ClaimError> {
             super::claim_hyperbolic::parse(v, &surface).map(Assertion::HyperbolicUniformization)?
         }
         "energy" => parse_energy(v, surface.mesh.n_vertices())?,
+        "parametrization" => parametrization_claim(v, &surface)?,
         other => return Err(err(format!("kind: unknown claim kind {other:?}"))),
     };
     Ok(Claim {
@@ -368,4 +370,39 @@ fn uniformization_claim(v: &Value, surface: &Surface) -> Result<Assertion, Claim
     };
     crate::uniformization::claim_form::validate(surface, &claim).map_err(|e| err(e.to_string()))?;
     Ok(Assertion::Uniformization(claim))
+}
+
+/// The fields of a `parametrization` claim: `obj` (the OBJ text), `sidecar` (its JSON),
+/// and the optional `seam_epsilon` (a relative tolerance ≥ 0; present: the seams are
+/// claimed too). Files that cannot be read, or do not fit the surface, are refused here,
+/// naming the OBJ line or the sidecar element.
+fn parametrization_claim(v: &Value, surface: &Surface) -> Result<Assertion, ClaimError> {
+    let obj = v
+        .get("obj")
+        .ok_or_else(|| err("obj: required, the text of the UV OBJ file"))?
+        .as_str()
+        .ok_or_else(|| err("obj: expected a string, the text of the UV OBJ file"))?
+        .to_string();
+    let sidecar = v
+        .get("sidecar")
+        .filter(|s| s.is_object())
+        .ok_or_else(|| err("sidecar: required, the JSON object of the OBJ's sidecar"))?
+        .clone();
+    let seam_epsilon = match v.get("seam_epsilon") {
+        None => None,
+        Some(x) => {
+            let e = exact_number(x, "seam_epsilon")?;
+            if e.cmp0() == std::cmp::Ordering::Less {
+                return Err(err(format!("seam_epsilon: must be ≥ 0, found {e}")));
+            }
+            Some(e)
+        }
+    };
+    let claim = crate::overlay::claim::ParametrizationClaim {
+        obj,
+        sidecar,
+        seam_epsilon,
+    };
+    crate::overlay::claim::validate(surface, &claim).map_err(|e| err(e.to_string()))?;
+    Ok(Assertion::Parametrization(claim))
 }

@@ -112,7 +112,11 @@ pub fn check_parametrization(
         .as_array()
         .ok_or_else(|| side("no faces array"))?;
     if faces.len() != tris.len() {
-        return Err(side("not one sidecar face per f line"));
+        return Err(ParametrizationError::Sidecar(format!(
+            "faces: {} entries, but the OBJ has {} f lines",
+            faces.len(),
+            tris.len()
+        )));
     }
     let mut report = ParametrizationReport {
         triangles: tris.len(),

@@ -14,11 +14,13 @@
 //!   positions and barycentric coordinates, and the OBJ and sidecar texts (B109).
 //! - [`check`]: the exact checks of written files: no fold, each input face tiled (B109).
 //! - [`seams`]: the exact seam check: rotations by multiples of π/2 within `ε` (B110).
+//! - [`claim`]: the claim kind `parametrization`, answered by those checks.
 //!
 //! Not computed yet: positions after Ptolemy flips whose quadrilateral is not convex in
 //! the input metric (the projective maps of the flips), surfaces with boundary.
 
 pub mod check;
+pub mod claim;
 pub mod normal_coordinates;
 pub mod refinement;
 pub mod seams;

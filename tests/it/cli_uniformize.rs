@@ -321,6 +321,22 @@ fn b109_cli_uniformize_uv_writes_new_files_that_check() {
     let out = penner(&args);
     assert_eq!(out.status.code(), Some(4), "{}", text(&out.stderr));
     assert_eq!(std::fs::read_to_string(&uv).unwrap(), obj);
+    // Refused before the solve: nothing reported.
+    assert_eq!(text(&out.stdout), "", "{}", text(&out.stdout));
+    // The sidecar alone existing is refused too, before the solve.
+    let other = d.join("other.obj");
+    std::fs::write(d.join("other.obj.json"), "{}").unwrap();
+    let mut args2 = args;
+    let other_s = other.to_str().unwrap().to_string();
+    args2[5] = &other_s;
+    let out = penner(&args2);
+    assert_eq!(out.status.code(), Some(4), "{}", text(&out.stderr));
+    assert!(
+        text(&out.stderr).contains("other.obj.json"),
+        "{}",
+        text(&out.stderr)
+    );
+    assert!(!other.exists() && text(&out.stdout).is_empty());
     // A disk: one triangle with boundary.
     let disk = d.join("disk.off");
     std::fs::write(&disk, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n").unwrap();

@@ -16,6 +16,7 @@ mod claims_circles;
 mod claims_energy;
 mod claims_hyperbolic;
 mod claims_lobachevsky;
+mod claims_parametrization;
 mod cli;
 mod cli_controls;
 mod cli_delaunay;
