@@ -201,3 +201,81 @@ pub fn hyperbolic_face_error(
         + 4.0 * eps * PI * sum_dot;
     finish(first, n * eps * (1.0 + rho.max(slack_condition(l))))
 }
+
+/// B88 items 1–4 for one face of the one-pass kernels (`variational::fast_f64`, and
+/// `fast_mpfr` by B29 with `u = 2⁻ᵖ`): first-order bounds on each computed angle, each
+/// cotangent and the face's term `2f − (π/2)Σx`, from the `f64` approximations of the
+/// logarithmic lengths `x` and angles `α` and the unit roundoff `unit` (every term is linear
+/// in `unit`, so `ε·2ˢ/16` in place of `2⁻ᵖ` gives the bound times `2ˢ`). Also the size
+/// `S_F` of the face's energy term (it bounds `|F|`). Without [`SAFETY`]: B88's factor 2
+/// is applied by the caller.
+// proof: B88
+pub fn one_pass_face_bound(x: [f64; 3], alpha: [f64; 3], proper: bool, unit: f64) -> OnePassBound {
+    let s = (0..3).max_by(|&a, &b| x[a].total_cmp(&x[b])).unwrap_or(0);
+    let d = x.map(|v| v - x[s]);
+    let xs = x[s].abs();
+    if !proper {
+        // Degenerate: the angles 0 and the rounded π; F = Σ(α − π/2)d − (π/2)x_s.
+        let size = d.iter().map(|v| 0.5 * PI * v.abs()).sum::<f64>() + 0.5 * PI * xs;
+        let energy = d.iter().map(|v| v.abs() * 12.0 * unit).sum::<f64>()
+            + 7.0 * unit * size
+            + PI * unit * xs;
+        return OnePassBound {
+            angle: 4.0 * unit,
+            cot: [0.0; 3],
+            energy,
+            size,
+        };
+    }
+    let l = d.map(|v| (0.5 * v).exp());
+    let sigma = l[0] + l[1] + l[2];
+    let kappa = [0, 1, 2].map(|m| sigma / (l[(m + 1) % 3] + l[(m + 2) % 3] - l[m]));
+    let k_sum: f64 = kappa.iter().sum();
+    let k_max = kappa.iter().copied().fold(0.0, f64::max);
+    let cot = alpha.map(|a| a.tan().recip());
+    let c_sum: f64 = cot.iter().copied().map(f64::abs).sum();
+    let rho = d
+        .iter()
+        .map(|v| unit * v.abs() / 2.0 + 4.0 * unit)
+        .fold(0.0, f64::max);
+    let small = unit * (k_sum / 2.0 + k_max + 17.0) + 2.0 * rho * c_sum;
+    let angle = 2.0 * small + 10.0 * unit;
+    let lob = alpha.map(|a| crate::special::lobachevsky(&a));
+    let dl = alpha.map(|a| (2.0 * a.sin()).ln().abs() * angle + 4.1 * unit);
+    let size: f64 = (0..3)
+        .map(|m| ((alpha[m] - 0.5 * PI) * d[m]).abs() + 2.0 * lob[m].abs())
+        .sum::<f64>()
+        + 0.5 * PI * xs;
+    let energy = d
+        .iter()
+        .map(|v| v.abs() * (angle + 8.0 * unit))
+        .sum::<f64>()
+        + 2.0 * dl.iter().sum::<f64>()
+        + 7.0 * unit * size
+        + PI * unit * xs;
+    let cot = cot.map(|c| {
+        2.0 * unit * c_sum
+            + c.abs() * unit * (k_sum / 2.0 + 7.0)
+            + (1.0 + c * c) * 2.0 * rho * c_sum
+    });
+    let bad = |v: f64| if v.is_finite() { v } else { f64::INFINITY };
+    OnePassBound {
+        angle: bad(angle),
+        cot: cot.map(bad),
+        energy: bad(energy),
+        size,
+    }
+}
+
+/// [`one_pass_face_bound`]'s answer (proofs/B88 items 1, 3, 4).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OnePassBound {
+    /// Bound on each computed angle.
+    pub angle: f64,
+    /// Bound on each computed `cot α_m` (0 for a degenerate face: it has none).
+    pub cot: [f64; 3],
+    /// Bound on the face's term `2f − (π/2)Σx`.
+    pub energy: f64,
+    /// `S_F = Σ(|(α_m − π/2)d_m| + 2|Л(α_m)|) + (π/2)|x_s|`, at least `|F|`.
+    pub size: f64,
+}

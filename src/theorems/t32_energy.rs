@@ -9,21 +9,30 @@
 //! - `pub fn verify_hessian<T: Real>(input: &EnergyInput<'_, T>, hessian: &SparseMatrix<T>, directions: &[Vec<T>], settings: &Settings) -> Verdict`
 //! - `pub fn check_convexity<T: Real>(input: &EnergyInput<'_, T>, directions: &[Vec<T>], settings: &Settings) -> Verdict`
 //! - `pub fn verify_convexity<T: Real>(input: &EnergyInput<'_, T>, directions: &[Vec<T>], hessian: &dyn Fn(&Mesh, &[T]) -> SparseMatrix<T>, settings: &Settings) -> Verdict`
+//! - `pub fn verify_one_pass<T: Real>(input: &EnergyInput<'_, T>, one_pass: &EnergyParts<T>, settings: &Settings) -> Verdict`
+//! - `pub trait OnePass: Real` (the one-pass kernel of a backend: `f64`, MPFR; none for `Dd`)
 //! - `pub fn check_tie<T: Real>(a: &EnergyInput<'_, T>, b: &EnergyInput<'_, T>, settings: &Settings) -> Verdict`
 
 use super::bounds::{cot_error, eps, eps_shift, sum_error, SAFETY};
-use super::energy_bounds::{face_angle_error, face_energy_error, schlafli_error, slack_condition};
+use super::energy_bounds::{
+    face_angle_error, face_energy_error, one_pass_face_bound, schlafli_error, slack_condition,
+};
 use super::report::{check_lengths, lengths_out_of_range, Tally};
 use super::t32_difference::{derivative_enclosure, distance_outside, support, touched_faces};
 use super::verdict::{Settings, Verdict, Witness};
 use crate::geometry::laplacian::SparseMatrix;
 use crate::mesh::{Face, HalfEdge, Mesh};
 use crate::predicates::tolerance::sign_beyond;
-use crate::scalar::{Dual, Real, Sign};
+use crate::scalar::{Dd, Dual, Mpfr, Real, Sign};
 use crate::variational::energy::{
-    face_energy_sum, gradient, hessian, hessian_at, log_lengths, scaled_log_lengths,
+    energy_gradient_hessian_with, face_energy_sum, gradient, hessian, hessian_at, log_lengths,
+    scaled_log_lengths, EnergyParts,
 };
+use crate::variational::fast_f64::energy_gradient_hessian_f64;
+use crate::variational::fast_mpfr::energy_gradient_hessian_mpfr;
+use crate::variational::pattern::HessianPattern;
 use crate::variational::triangle::{angles_from_log_lengths, shape, shifted_lengths, Shape};
+use std::collections::HashMap;
 
 /// The data of `E` on a fixed triangulation: the mesh, its lengths `ℓ` (`λ = 2 log ℓ`),
 /// the log scale factors `u` and the target angles `Θ`.
@@ -152,8 +161,11 @@ fn combine(parts: Vec<Verdict>) -> Verdict {
 }
 
 /// T32 on one input: [`verify_gradient`] against `Θ − θ`, [`verify_hessian`] against the
-/// assembled cotan Laplacian, and [`check_convexity`] along every direction.
-pub fn check_energy<T: Real>(
+/// assembled cotan Laplacian, [`check_convexity`] along every direction, and, where the
+/// backend has a one-pass kernel ([`OnePass`]: `f64` and MPFR, not `Dd`),
+/// [`verify_one_pass`]: `E`, `∇E` and the Hessian by that second formula against the
+/// generic evaluation.
+pub fn check_energy<T: OnePass>(
     input: &EnergyInput<'_, T>,
     directions: &[Vec<T>],
     settings: &Settings,
@@ -164,11 +176,177 @@ pub fn check_energy<T: Real>(
     let lambda = input.lambda();
     let g = gradient(input.mesh, &lambda, input.u, input.targets);
     let h = hessian(input.mesh, &lambda, input.u);
-    combine(vec![
+    let mut parts = vec![
         verify_gradient(input, &g, directions, settings),
         verify_hessian(input, &h, directions, settings),
         check_convexity(input, directions, settings),
-    ])
+    ];
+    let lt = scaled_log_lengths(input.mesh, &lambda, input.u);
+    let pattern = HessianPattern::new(input.mesh);
+    if let Some(p) = T::one_pass(&pattern, input.mesh, &lt, input.u, input.targets) {
+        parts.push(verify_one_pass(input, &p, settings));
+    }
+    combine(parts)
+}
+
+/// A backend's one-pass evaluation of `E`, `∇E` and the Hessian (half-angle `atan`, the
+/// face term rewritten about the longest side, cotangents from Heron's `r`; proofs/B88),
+/// a second formula beside the generic one of `variational::energy`.
+pub trait OnePass: Real {
+    /// `E`, `∇E = Θ − θ` and the Hessian at the scaled logarithmic lengths `lt`, `u` and
+    /// the targets, by the backend's one-pass kernel; `None` where the backend has none.
+    fn one_pass(
+        pattern: &HessianPattern,
+        mesh: &Mesh,
+        lt: &[Self],
+        u: &[Self],
+        targets: &[Self],
+    ) -> Option<EnergyParts<Self>>;
+}
+
+/// `variational::fast_f64` (proofs/B88).
+impl OnePass for f64 {
+    fn one_pass(
+        pattern: &HessianPattern,
+        mesh: &Mesh,
+        lt: &[f64],
+        u: &[f64],
+        targets: &[f64],
+    ) -> Option<EnergyParts<f64>> {
+        Some(energy_gradient_hessian_f64(pattern, mesh, lt, u, targets))
+    }
+}
+
+/// `variational::fast_mpfr` (proofs/B29, B100, B101).
+impl OnePass for Mpfr {
+    fn one_pass(
+        pattern: &HessianPattern,
+        mesh: &Mesh,
+        lt: &[Mpfr],
+        u: &[Mpfr],
+        targets: &[Mpfr],
+    ) -> Option<EnergyParts<Mpfr>> {
+        Some(energy_gradient_hessian_mpfr(pattern, mesh, lt, u, targets))
+    }
+}
+
+/// Double-double has no one-pass kernel: T32 at `Dd` runs without that component.
+impl OnePass for Dd {
+    fn one_pass(
+        _: &HessianPattern,
+        _: &Mesh,
+        _: &[Dd],
+        _: &[Dd],
+        _: &[Dd],
+    ) -> Option<EnergyParts<Dd>> {
+        None
+    }
+}
+
+/// The smallest slack `e_m = ℓ_{m+1} + ℓ_{m+2} − ℓ_m` relative to the perimeter, from the
+/// `f64` shifted sides, below which a face the generic path calls degenerate is not
+/// compared: the one-pass kernel decides the shape on its own computed slacks, which may
+/// disagree there (proofs/B88, Limits).
+const SHAPE_MARGIN: f64 = 1e-9;
+
+/// `E`, `∇E` and the Hessian of a one-pass kernel (`one_pass`, as [`OnePass`] gives it)
+/// against the generic evaluation at the same precision
+/// ([`energy_gradient_hessian_with`]): each difference must lie within the one-pass
+/// kernel's bound (proofs/B88 items 1–5, read with `u = 2⁻ᵖ` at MPFR by B29, `Л` by B100,
+/// the table `atan` by B101; times B88's safety factor 2) plus the generic evaluation's own
+/// bound (proofs/B57: B40 per angle, B44 per cotangent, B57 per face term, B41 for the
+/// sums, as [`check_tie`] uses them). Witnesses `one-pass:E`, `one-pass:v{i}` and
+/// `one-pass:H[{i},{j}]`. Numerical: a first-order bound. A face the generic path calls
+/// degenerate with a slack within `10⁻⁹` of 0 leaves its vertices and entries undecided.
+pub fn verify_one_pass<T: Real>(
+    input: &EnergyInput<'_, T>,
+    one_pass: &EnergyParts<T>,
+    settings: &Settings,
+) -> Verdict {
+    if let Some(v) = input.validate() {
+        return v;
+    }
+    let mesh = input.mesh;
+    let n = mesh.n_vertices();
+    if one_pass.gradient.len() != n || one_pass.hessian.dim() != n {
+        return Verdict::NotApplicable {
+            reason: format!("one-pass gradient and Hessian need dimension {n}"),
+        };
+    }
+    let ctx = input.lengths[0].ctx();
+    let (e, bits) = (eps::<T>(ctx), T::precision_bits(ctx));
+    // The unit roundoff scaled as ε (bounds linear in it, proofs/B40 "Range").
+    let unit = e / 16.0;
+    let lambda = input.lambda();
+    let lt = scaled_log_lengths(mesh, &lambda, input.u);
+    let generic = energy_gradient_hessian_with(
+        &HessianPattern::new(mesh),
+        mesh,
+        &lt,
+        input.u,
+        input.targets,
+    );
+    let OnePassBounds {
+        e_fast,
+        e_gen,
+        e_size,
+        th,
+        hb,
+    } = one_pass_bounds(mesh, &lt, unit, e, bits);
+    let mut tally = Tally::new(false, bits);
+    if let (Some(a), Some(g)) = (&one_pass.energy, &generic.energy) {
+        // Σ_faces + Σ Θ_i u_i, recursive summation on both sides (B88 item 5, B41).
+        let tu: Vec<f64> = input
+            .targets
+            .iter()
+            .zip(input.u)
+            .map(|(t, x)| t.approx_f64() * x.approx_f64())
+            .collect();
+        let tu_abs: f64 = tu.iter().copied().map(f64::abs).sum();
+        let terms = (mesh.n_faces() + n) as f64;
+        let fast = e_fast + terms * unit * (e_size + tu_abs) + unit * tu_abs;
+        let generic_b = e_gen + SAFETY * terms * e * (e_size + tu_abs);
+        let tol = settings.slack * (SAFETY * fast + generic_b);
+        tally.within("one-pass:E", "E one-pass − generic", &(a.clone() - g), tol);
+    }
+    for (i, (a, g)) in one_pass.gradient.iter().zip(&generic.gradient).enumerate() {
+        let (fast, generic_b, theta, c) = th[i];
+        let gi = g.approx_f64().abs();
+        let fast = fast + c * unit * theta + unit * gi;
+        let generic_b = generic_b + SAFETY * c * e * theta + e * gi;
+        let tol = settings.slack * (SAFETY * fast + generic_b);
+        tally.within(
+            format!("one-pass:v{i}"),
+            "∇E one-pass − generic",
+            &(a.clone() - g),
+            tol,
+        );
+    }
+    let zero = input.lengths[0].zero_like();
+    let entry = |i: usize, j: usize, a: &T, g: &T, tally: &mut Tally| {
+        let (fast, generic_b, abs, c) = hb.get(&(i, j)).copied().unwrap_or_default();
+        let tol =
+            settings.slack * (SAFETY * (fast + c * unit * abs) + generic_b + SAFETY * c * e * abs);
+        tally.within(
+            format!("one-pass:H[{i},{j}]"),
+            "Hessian entry one-pass − generic",
+            &(a.clone() - g),
+            tol,
+        );
+    };
+    for i in 0..n {
+        for (j, a) in one_pass.hessian.row(i) {
+            let g = generic.hessian.get(i, j).unwrap_or(&zero);
+            entry(i, j, a, g, &mut tally);
+        }
+        // Entries the generic evaluation stores and the one-pass result does not.
+        for (j, g) in generic.hessian.row(i) {
+            if one_pass.hessian.get(i, j).is_none() {
+                entry(i, j, &zero, g, &mut tally);
+            }
+        }
+    }
+    tally.verdict()
 }
 
 /// `∇E = g` against claimed `g` (one per vertex), along each direction `d`:
@@ -436,6 +614,97 @@ pub fn verify_convexity<T: Real>(
         }
     }
     tally.verdict()
+}
+
+/// The per-element bounds of [`verify_one_pass`], accumulated over the faces.
+struct OnePassBounds {
+    /// `E`: Σ of the one-pass face bounds (B88 item 3), of the generic ones (B57), of the
+    /// face terms' sizes `S_F`.
+    e_fast: f64,
+    e_gen: f64,
+    e_size: f64,
+    /// Per vertex: one-pass bound, generic bound, Σ angles, corners.
+    th: Vec<(f64, f64, f64, f64)>,
+    /// Per Hessian entry: one-pass bound, generic bound, Σ|½ cot|, contributions.
+    hb: HashMap<(usize, usize), (f64, f64, f64, f64)>,
+}
+
+/// [`OnePassBounds`] on the scaled logarithmic lengths `lt`, with the unit roundoff `unit`
+/// and `ε` both scaled as [`eps`] (proofs/B88, B57).
+fn one_pass_bounds(mesh: &Mesh, lt: &[impl Real], unit: f64, e: f64, bits: u32) -> OnePassBounds {
+    let n = mesh.n_vertices();
+    let mut th = vec![(0.0, 0.0, 0.0, 0.0); n];
+    let mut hb: HashMap<(usize, usize), (f64, f64, f64, f64)> = HashMap::new();
+    let (mut e_fast, mut e_gen, mut e_size) = (0.0, 0.0, 0.0);
+    for f in mesh.faces() {
+        let fd = face_data(mesh, f, lt);
+        let b = one_pass_face_bound(fd.x, fd.alpha, fd.proper, unit);
+        e_fast += b.energy;
+        e_size += b.size;
+        let near = !fd.proper && {
+            let sigma: f64 = fd.l.iter().sum();
+            (0..3).any(|m| {
+                let slack = fd.l[(m + 1) % 3] + fd.l[(m + 2) % 3] - fd.l[m];
+                slack.abs().partial_cmp(&(SHAPE_MARGIN * sigma))
+                    != Some(std::cmp::Ordering::Greater)
+            })
+        };
+        let corners = fd.hs.map(|h| mesh.tail(h).idx());
+        if near {
+            e_fast = f64::INFINITY;
+            for m in 0..3 {
+                th[corners[m]].0 = f64::INFINITY;
+                let (i, j) = (corners[m], mesh.tip(fd.hs[m]).idx());
+                for key in [(i, i), (j, j), (i, j), (j, i)] {
+                    hb.entry(key).or_default().0 = f64::INFINITY;
+                }
+            }
+            continue;
+        }
+        if !fd.proper {
+            // f = ½πx_m exactly, angles the constants (π, 0, 0): π's rounding.
+            e_gen += SAFETY
+                * 4.0
+                * e
+                * std::f64::consts::PI
+                * fd.x.iter().copied().map(f64::abs).sum::<f64>();
+            for m in 0..3 {
+                let v = mesh.tail(fd.hs[(m + 2) % 3]).idx();
+                th[v].0 += b.angle;
+                th[v].1 += e * std::f64::consts::PI;
+                th[v].2 += fd.alpha[m];
+                th[v].3 += 1.0;
+            }
+            continue;
+        }
+        e_gen += 2.0 * face_energy_error(fd.x, fd.l, fd.alpha, bits, e);
+        let da = face_angle_error(fd.l, e);
+        for (m, dam) in da.iter().enumerate() {
+            let v = mesh.tail(fd.hs[(m + 2) % 3]).idx();
+            th[v].0 += b.angle;
+            th[v].1 += dam + 4.0 * e;
+            th[v].2 += fd.alpha[m];
+            th[v].3 += 1.0;
+            let (i, j) = (mesh.tail(fd.hs[m]).idx(), mesh.tip(fd.hs[m]).idx());
+            let (p, r) = ((m + 1) % 3, (m + 2) % 3);
+            let generic_b = SAFETY * (0.5 * cot_error(fd.l[m], fd.l[p], fd.l[r], e) + e);
+            let half_cot = 0.5 * fd.alpha[m].tan().recip().abs();
+            for key in [(i, i), (j, j), (i, j), (j, i)] {
+                let x = hb.entry(key).or_default();
+                x.0 += 0.5 * b.cot[m];
+                x.1 += generic_b;
+                x.2 += half_cot;
+                x.3 += 1.0;
+            }
+        }
+    }
+    OnePassBounds {
+        e_fast,
+        e_gen,
+        e_size,
+        th,
+        hb,
+    }
 }
 
 /// C² across Penner cells: `a` and `b` are the same metric on two triangulations of one

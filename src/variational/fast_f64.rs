@@ -17,6 +17,10 @@
 //! from [`energy_gradient_hessian_with`](super::energy::energy_gradient_hessian_with) at
 //! `f64` by rounding, within the first-order bound of proofs/B88.
 //!
+//! Consumer: T32 (`theorems::t32_energy::verify_one_pass`, through the `OnePass` impl for
+//! `f64`) checks this pass against the generic evaluation within that bound, as a second
+//! formula inside `penner check`.
+//!
 //! ```
 //! use penner::mesh::Mesh;
 //! use penner::variational::fast_f64::energy_gradient_hessian_f64;

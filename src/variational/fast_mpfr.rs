@@ -20,6 +20,10 @@
 //! [`energy_gradient_hessian_with`](super::energy::energy_gradient_hessian_with) at MPFR-p by
 //! rounding, within B88's first-order bound read with `u = 2⁻ᵖ` (B29).
 //!
+//! Consumer: T32 (`theorems::t32_energy::verify_one_pass`, through the `OnePass` impl for
+//! [`Mpfr`]) checks this pass against the generic evaluation within that bound, as a second
+//! formula inside `penner check`.
+//!
 //! ```
 //! use penner::mesh::Mesh;
 //! use penner::scalar::{Mpfr, Precision, Real};

@@ -14,7 +14,7 @@ use penner::theorems::t06_cotan_weights_metric::{
 use penner::theorems::t31_schlafli::{check_schlafli, half_angles, verify_schlafli};
 use penner::theorems::t32_energy::{
     check_convexity, check_energy, check_tie, verify_convexity, verify_gradient, verify_hessian,
-    EnergyInput,
+    verify_one_pass, EnergyInput, OnePass,
 };
 use penner::theorems::t33_hyperbolic::{
     check_hyperbolic, check_hyperbolic_angles, verify_hyperbolic_gradient,
@@ -24,6 +24,7 @@ use penner::variational::energy::{
     at_delaunay, energy, gradient, hessian, hessian_at, log_lengths, scaled_log_lengths,
 };
 use penner::variational::hyperbolic;
+use penner::variational::pattern::HessianPattern;
 use penner::variational::triangle::{angles_from_log_lengths, triangle_energy};
 use penner::variational::weights::metric_from_weights;
 use rand::{Rng, SeedableRng};
@@ -132,8 +133,10 @@ fn energy_data(seed: u64, n: usize, scale: f64) -> (Vec<f64>, Vec<f64>, Vec<Vec<
 /// T32 holds (gradient by dual numbers and by a central difference at twice the
 /// precision, Hessian by dual numbers of the gradient, convexity along lines); a gradient
 /// with ∂E/∂u₀ raised by 10⁻⁶ and a Hessian with one diagonal entry raised by 10⁻⁶ are
-/// rejected.
-fn energy_case<T: Real>(m: &Mesh, l: &[f64], seed: u64, ctx: T::Ctx) {
+/// rejected. Where the backend has a one-pass kernel (`f64`, MPFR), its `E`, `∇E` and
+/// Hessian agree with the generic evaluation within B88 (B29 at MPFR), and the same result
+/// with `∂E/∂u₀` moved, or with `H₀₀` moved, is rejected by the same comparison.
+fn energy_case<T: OnePass>(m: &Mesh, l: &[f64], seed: u64, ctx: T::Ctx) {
     let n = m.n_vertices();
     let (u, t, d) = energy_data(seed, n, 0.05);
     let (l, u, t) = (to::<T>(l, ctx), to::<T>(&u, ctx), to::<T>(&t, ctx));
@@ -158,6 +161,37 @@ fn energy_case<T: Real>(m: &Mesh, l: &[f64], seed: u64, ctx: T::Ctx) {
     *h.get_mut(0, 0).unwrap() += &bump;
     let nc = verify_hessian(&input, &h, &d[..1], &s);
     assert!(nc.fails(), "Hessian control, {bits} bits: {nc:?}");
+    let lt = scaled_log_lengths(m, &lambda, &u);
+    let Some(one) = T::one_pass(&HessianPattern::new(m), m, &lt, &u, &t) else {
+        assert_eq!(bits, 106, "only Dd has no one-pass kernel");
+        return;
+    };
+    let v = verify_one_pass(&input, &one, &s);
+    assert!(v.holds(), "one pass, seed {seed}, {bits} bits: {v:?}");
+    // Negative controls: moves of 10⁻⁶ and, at MPFR, of 10⁻³⁰ (the bound there is
+    // about 10⁻⁴⁴; at f64 about 10⁻¹³).
+    let moves: &[f64] = if bits > 53 { &[1e-6, 1e-30] } else { &[1e-6] };
+    for &mv in moves {
+        let bump = g[0].lit(mv);
+        let named = |v: &Verdict, name: &str| match v {
+            Verdict::Fails { witnesses, .. } => witnesses.iter().any(|w| w.element == name),
+            _ => false,
+        };
+        let mut moved = one.clone();
+        moved.gradient[0] += &bump;
+        let nc = verify_one_pass(&input, &moved, &s);
+        assert!(
+            named(&nc, "one-pass:v0"),
+            "one-pass ∇E control {mv}, {bits} bits: {nc:?}"
+        );
+        let mut moved = one.clone();
+        *moved.hessian.get_mut(0, 0).unwrap() += &bump;
+        let nc = verify_one_pass(&input, &moved, &s);
+        assert!(
+            named(&nc, "one-pass:H[0,0]"),
+            "one-pass H control {mv}, {bits} bits: {nc:?}"
+        );
+    }
 }
 
 #[test]
