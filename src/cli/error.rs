@@ -1,5 +1,6 @@
 //! Errors of the binary and the exit codes they map to.
 
+use penner::uniformization::pipeline::PipelineError;
 use std::path::PathBuf;
 
 /// Exit codes (README.md, docs/oracle.md).
@@ -54,5 +55,15 @@ impl CliError {
             CliError::Write { .. } => code::OUTPUT,
             CliError::NotConverged(_) => code::UNDECIDED,
         }
+    }
+}
+
+/// A pipeline error as the CLI reports it: the input's fault (bad input, exit 3) or a
+/// computation of penner's own that did not go through (undecided, exit 2).
+pub(crate) fn pipeline_error(shown: &str, e: &PipelineError) -> CliError {
+    if e.is_bad_input() {
+        CliError::Input(format!("{shown}: {e}"))
+    } else {
+        CliError::NotConverged(format!("{shown}: {e}"))
     }
 }

@@ -2,7 +2,7 @@
 //! discrete uniformization with Ptolemy flips (T24), refined and certified (B71); the
 //! certificate is written as a `uniformization` claim that `penner certify` re-checks.
 
-use super::error::{code, CliError};
+use super::error::{code, pipeline_error, CliError};
 use super::files::read_text;
 use super::input::{load_flip_case, FlipCase};
 use super::uniformize_options::numerical_line;
@@ -11,7 +11,7 @@ use penner::io::json::exact_number;
 use penner::uniformization::boundary::flat_with_even_boundary;
 use penner::uniformization::pipeline::{
     uniformize_boundary, uniformize_closed, uniformize_hyperbolic, uniformize_sphere,
-    CertifiedMetric, ClosedOutcome, Options as ClosedOptions, PipelineError, Precision,
+    CertifiedMetric, ClosedOutcome, Options as ClosedOptions, Precision,
 };
 use penner::uniformization::Targets;
 use std::fmt::Write as _;
@@ -61,16 +61,6 @@ fn targets_of(
         (None, true) => Ok(Some(flat())),
         (None, false) if optional => Ok(None),
         (None, false) => Err(CliError::Input(required.into())),
-    }
-}
-
-/// A pipeline error as the CLI reports it: the input's fault (bad input, exit 3) or a
-/// computation of penner's own that did not go through (undecided, exit 2).
-pub(super) fn pipeline_error(shown: &str, e: &PipelineError) -> CliError {
-    if e.is_bad_input() {
-        CliError::Input(format!("{shown}: {e}"))
-    } else {
-        CliError::NotConverged(format!("{shown}: {e}"))
     }
 }
 

@@ -3,9 +3,8 @@
 //! (`uniformization::pipeline::uv_closed`), written with its sidecar `OUT.obj.json`, both
 //! new files; the exact checks (`overlay::check_parametrization`) run on the written text.
 
-use super::error::CliError;
+use super::error::{pipeline_error, CliError};
 use super::files::create_new;
-use super::uniformize::pipeline_error;
 use penner::io::Surface;
 use penner::overlay::{check_parametrization, check_seams};
 use penner::uniformization::pipeline::{uv_closed, ClosedOutcome};
