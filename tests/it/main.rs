@@ -5,6 +5,7 @@ mod circles;
 mod circles_flow;
 mod circles_harmonic;
 mod circles_maximal;
+mod circles_maximal_residual;
 mod circles_pack;
 mod circles_rivin_angles;
 mod circles_rodin_sullivan;

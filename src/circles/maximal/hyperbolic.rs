@@ -66,6 +66,50 @@ pub fn angle_sums<T: Real>(mesh: &Mesh, t: &[T]) -> Vec<T> {
     theta
 }
 
+/// The residuals `2π − θ_v` on the interior vertices (interior order) from the product of
+/// the corners' rotations around each vertex, `P_v = Π e^{iα}` ([`corner_rotation`], no
+/// trigonometric function per corner), and one `atan2` per vertex (proofs/B112):
+///
+/// `2π − θ_v = 2π m_v − atan2(Im P_v, Re P_v)`, `m_v = round((g_v + atan2(Im P_v, Re P_v)) / 2π)`,
+///
+/// where `guide` holds an estimate `g_v` of `2π − θ_v` (one per interior vertex, in
+/// interior order; the `f64` residual) within `π/2` of it; it fixes only the integer
+/// `m_v`. Four multiplications and two additions per corner replace [`angle_sums`]'
+/// `atan2` and second square root, the cost of a residual at MPFR precision. The vertices
+/// are independent and run on rayon's thread pool (each vertex's corners in the order of
+/// [`Mesh::outgoing`], so the result does not depend on the number of threads). The mesh
+/// must be simplicial around the interior vertices (as the maximal packing requires).
+pub fn residual_by_rotations<T: Real>(
+    mesh: &Mesh,
+    t: &[T],
+    interior: &[bool],
+    guide: &[f64],
+) -> Vec<T> {
+    use rayon::prelude::*;
+    let Some(zero) = t.first().map(Real::zero_like) else {
+        return Vec::new();
+    };
+    let two_pi = T::pi(zero.ctx()) * &zero.lit(2.0);
+    let vertices: Vec<usize> = (0..interior.len()).filter(|&v| interior[v]).collect();
+    vertices
+        .par_iter()
+        .zip(guide.par_iter())
+        .map(|(&v, &g)| {
+            let (mut re, mut im) = (zero.one_like(), zero.clone());
+            for h in mesh.outgoing(Vertex(v as u32)) {
+                let (y, z) = (mesh.tip(h).idx(), mesh.tip(mesh.next(h)).idx());
+                let (cos, sin) = corner_rotation(&t[v], &t[y], &t[z]);
+                let next_re = re.clone() * &cos - &(im.clone() * &sin);
+                im = re * &sin + &(im * &cos);
+                re = next_re;
+            }
+            let arg = im.atan2(&re);
+            let m = ((g + arg.approx_f64()) / std::f64::consts::TAU).round();
+            two_pi.clone() * &zero.lit(m) - &arg
+        })
+        .collect()
+}
+
 /// The entries of `∂θ/∂u` in `f64`: `(i, j, value)` triplets, repeated pairs to be summed
 /// (module docs). Entries for horocycles (`t = 1`) are zero and left out.
 pub fn angle_jacobian_triplets(
@@ -74,6 +118,19 @@ pub fn angle_jacobian_triplets(
     interior: &[bool],
 ) -> Vec<(usize, usize, f64)> {
     let mut out = Vec::with_capacity(9 * mesh.n_faces());
+    for_each_angle_jacobian_entry(mesh, t, interior, |i, j, v| out.push((i, j, v)));
+    out
+}
+
+/// The entries of [`angle_jacobian_triplets`], in the same order and with the same values,
+/// passed to `visit(i, j, ∂θ_i/∂u_j)` one by one instead of collected (no allocation, for
+/// filling a fixed sparsity pattern).
+pub fn for_each_angle_jacobian_entry(
+    mesh: &Mesh,
+    t: &[f64],
+    interior: &[bool],
+    mut visit: impl FnMut(usize, usize, f64),
+) {
     for f in mesh.faces() {
         let [a, b, c] = mesh.face_vertices(f).map(Vertex::idx);
         for (x, y, z) in [(a, b, c), (b, c, a), (c, a, b)] {
@@ -90,16 +147,15 @@ pub fn angle_jacobian_triplets(
                     + 1.0 / (t0 + t2)
                     + t1 / (1.0 + t0 * t1)
                     + t2 / (1.0 + t0 * t2));
-            out.push((x, x, tan_half * d_self));
+            visit(x, x, tan_half * d_self);
             if interior[y] {
-                out.push((x, y, tan_half * d_other(t1)));
+                visit(x, y, tan_half * d_other(t1));
             }
             if interior[z] {
-                out.push((x, z, tan_half * d_other(t2)));
+                visit(x, z, tan_half * d_other(t2));
             }
         }
     }
-    out
 }
 
 /// `t = e^u` per vertex, `1` (a horocycle) where `interior` is false.

@@ -178,7 +178,10 @@ pub fn maximal_disk<T: Real>(
     };
     let n = mesh.n_vertices();
     let default_u = 0.5_f64.tanh().ln();
-    let start = opts.start.clone().unwrap_or_else(|| vec![default_u; n]);
+    let start = opts
+        .start
+        .clone()
+        .unwrap_or_else(|| vec![solve::common_scale_start(mesh, &interior, default_u); n]);
     let tol64 = 64.0 * n as f64 * f64::EPSILON / 2.0;
     let sol = newton_f64(mesh, &interior, &start, tol64.max(1e-13), 100)?;
     let floor = 64.0 * n as f64 * T::unit_roundoff(ctx);

@@ -8,7 +8,10 @@
 //! The stopping rules read `approx_f64` (heuristics): the packing is certified afterwards,
 //! on its circles ([`super::tangency`]).
 
-use super::hyperbolic::{angle_jacobian_triplets, angle_sums, radii_from_u};
+use super::hyperbolic::{
+    angle_jacobian_triplets, angle_sums, for_each_angle_jacobian_entry, radii_from_u,
+    residual_by_rotations,
+};
 use crate::mesh::Mesh;
 use crate::scalar::Real;
 use faer::linalg::solvers::Solve;
@@ -97,19 +100,22 @@ impl Assembly {
         })
     }
 
-    /// The values of `H` at radii `t` in the pattern's column-major order.
+    /// The values of `H` at radii `t` in the pattern's column-major order, each entry of
+    /// [`for_each_angle_jacobian_entry`] added to its slot in the triplets' order (so the
+    /// same sums, in the same order, as a fill from [`angle_jacobian_triplets`]).
     fn values(&self, mesh: &Mesh, t: &[f64], interior: &[bool]) -> Option<Vec<f64>> {
-        let triplets = angle_jacobian_triplets(mesh, t, interior);
-        if triplets.len() != self.slots.len() {
-            return None;
-        }
         let mut values = vec![0.0; self.pattern.symbolic().row_idx().len()];
-        for ((_, _, v), slot) in triplets.into_iter().zip(&self.slots) {
-            if let Some(k) = *slot {
-                values[k] -= v;
+        let mut k = 0usize;
+        let mut in_range = true;
+        for_each_angle_jacobian_entry(mesh, t, interior, |_, _, v| {
+            match self.slots.get(k) {
+                Some(Some(slot)) => values[*slot] -= v,
+                Some(None) => {}
+                None => in_range = false,
             }
-        }
-        Some(values)
+            k += 1;
+        });
+        (in_range && k == self.slots.len()).then_some(values)
     }
 }
 
@@ -161,6 +167,15 @@ pub fn residual<T: Real>(mesh: &Mesh, u: &[T], interior: &[bool]) -> Vec<T> {
         .collect()
 }
 
+/// `2π − θ_v` on the interior vertices in `T` for the refinement: the rotation products of
+/// [`residual_by_rotations`], guided by the `f64` residual at `u` rounded to `f64`.
+fn refinement_residual<T: Real>(mesh: &Mesh, u: &[T], interior: &[bool]) -> Vec<T> {
+    let u64: Vec<f64> = u.iter().map(Real::approx_f64).collect();
+    let guide = residual(mesh, &u64, interior);
+    let t = radii_from_u(u, interior);
+    residual_by_rotations(mesh, &t, interior, &guide)
+}
+
 fn max_abs<T: Real>(g: &[T]) -> f64 {
     g.iter().map(|x| x.approx_f64().abs()).fold(0.0, f64::max)
 }
@@ -198,9 +213,74 @@ pub fn interior_index(interior: &[bool]) -> Vec<usize> {
         .collect()
 }
 
+/// The common value `c` of `u` on the interior vertices at which the residuals sum to zero,
+/// `S(c) = Σ_v (2π − θ_v(c)) = 0`, a starting point for [`newton_f64`] that has the
+/// packing's overall scale (its radii shrink like `n^{−1/2}`, so a fixed start costs several
+/// Newton iterations at large `n`).
+///
+/// `S` is increasing: `S′(c) = 𝟙ᵀH𝟙 > 0` with `H = −∂θ/∂u` positive definite on the
+/// interior ([`super::hyperbolic`]). As `c → 0⁻` every angle tends to `0` and
+/// `S → 2π·V_int > 0`; as `c → −∞` every face's angles tend to a Euclidean triangle's
+/// (a horocycle's corner to `0`), so `Σ θ → πF` and `S → 2πV_int − πF = −π(V_∂ − 2)`
+/// (`F = 2V_int + V_∂ − 2` on a disk), negative when the boundary has more than two
+/// vertices. The root is bracketed from `hi` (the given start, returned when `S(hi) ≤ 0`)
+/// downwards in steps of `ln 4` and located by the Illinois variant of regula falsi to
+/// within `0.05` in `c`: a heuristic start, not a bound (Newton decides convergence).
+pub fn common_scale_start(mesh: &Mesh, interior: &[bool], hi: f64) -> f64 {
+    let s = |c: f64| -> f64 {
+        let u: Vec<f64> = interior.iter().map(|&i| if i { c } else { 0.0 }).collect();
+        residual(mesh, &u, interior).iter().sum()
+    };
+    let (mut b, mut sb) = (hi, s(hi));
+    if sb.is_nan() || sb <= 0.0 {
+        return hi;
+    }
+    let (mut a, mut sa) = (hi, sb);
+    for _ in 0..40 {
+        a -= 4f64.ln();
+        sa = s(a);
+        if sa < 0.0 {
+            break;
+        }
+        (b, sb) = (a, sa);
+    }
+    if sa.is_nan() || sa >= 0.0 {
+        return hi;
+    }
+    // Illinois: a < root < b, S(a) < 0 < S(b).
+    let mut last_side = 0i8;
+    for _ in 0..30 {
+        if b - a <= 0.05 {
+            break;
+        }
+        let c = (a * sb - b * sa) / (sb - sa);
+        let sc = s(c);
+        if !sc.is_finite() {
+            break;
+        }
+        if sc < 0.0 {
+            (a, sa) = (c, sc);
+            if last_side == -1 {
+                sb *= 0.5;
+            }
+            last_side = -1;
+        } else {
+            (b, sb) = (c, sc);
+            if last_side == 1 {
+                sa *= 0.5;
+            }
+            last_side = 1;
+        }
+    }
+    0.5 * (a + b)
+}
+
 /// Newton's method in `f64` from `start` (`u = ln tanh(r/2) < 0` per vertex, read on the
 /// interior vertices) until `max |2π − θ| ≤ tol`; the step is halved until the residual's
-/// 2-norm decreases and every `u` stays negative (`t < 1`).
+/// 2-norm decreases and every `u` stays negative (`t < 1`). A residual below `tol` but above
+/// `tol/10³` that the last step still contracted more than `10³`-fold (Newton's quadratic
+/// phase, not yet at the rounding floor) gets one more step: it costs an `f64` iteration and
+/// saves a refinement step in the slower backend.
 pub fn newton_f64(
     mesh: &Mesh,
     interior: &[bool],
@@ -216,11 +296,13 @@ pub fn newton_f64(
         .collect();
     let mut assembly = None;
     let mut g = residual(mesh, &u, interior);
+    let mut previous = f64::INFINITY;
     for it in 0..=max_iter {
         let res = max_abs(&g);
         let f = factor(mesh, &u, interior, &index, &mut assembly)
             .ok_or(MaximalSolveError::Singular(it))?;
-        if res <= tol {
+        let at_floor = res <= 1e-3 * tol || res * 1e3 > previous;
+        if res <= tol && (at_floor || it == max_iter) {
             return Ok(F64Solution {
                 u,
                 factor: f,
@@ -231,6 +313,7 @@ pub fn newton_f64(
         if it == max_iter {
             break;
         }
+        previous = res;
         let neg: Vec<f64> = g.iter().map(|x| -x).collect();
         let d = f.solve(&neg);
         let g_norm = norm2(&g);
@@ -255,6 +338,14 @@ pub fn newton_f64(
             step *= 0.5;
         }
         let Some((trial, gt)) = accepted else {
+            if res <= tol {
+                return Ok(F64Solution {
+                    u,
+                    factor: f,
+                    iterations: it,
+                    residual: res,
+                });
+            }
             return Err(MaximalSolveError::Stalled {
                 iteration: it,
                 residual: res,
@@ -296,7 +387,7 @@ pub fn refine_from<T: Real>(
     max_iter: usize,
 ) -> Result<(Vec<T>, usize), MaximalSolveError> {
     let index = interior_index(interior);
-    let mut g = residual(mesh, &u, interior);
+    let mut g = refinement_residual(mesh, &u, interior);
     for it in 0..max_iter {
         let res = max_abs(&g);
         if res <= tol {
@@ -309,7 +400,7 @@ pub fn refine_from<T: Real>(
                 *x += &T::from_f64(d[index[v]], ctx);
             }
         }
-        g = residual(mesh, &u, interior);
+        g = refinement_residual(mesh, &u, interior);
     }
     let res = max_abs(&g);
     if res <= tol {
