@@ -45,12 +45,21 @@ pub fn low_precisions() -> Vec<Prec> {
         .collect()
 }
 
-/// MPFR 1080 and 4096.
-pub fn high_precisions() -> Vec<Prec> {
+/// Every precision but MPFR 4096 outside the long mode (`PENNER_LONG`): the default run's
+/// sweeps over whole corpora. 4096 bits costs about eight times 1080 bits per row and finds
+/// nothing 1080 does not (both lie past the `f64` exponent range, B40 "Range", B65), so the
+/// default run keeps it for the corpus and a sample of each family
+/// ([`deep_precision_sample`]) and the long mode for everything.
+pub fn default_run_precisions() -> Vec<Prec> {
     all_precisions()
         .into_iter()
-        .filter(|p| matches!(p, Prec::Mpfr(b) if b.bits() > 256))
+        .filter(|p| crate::support::long_mode() || !matches!(p, Prec::Mpfr(b) if b.bits() == 4096))
         .collect()
+}
+
+/// MPFR 4096 bits.
+pub fn deepest_precision() -> Prec {
+    Prec::Mpfr(Precision::new(4096).unwrap())
 }
 
 /// A `fails` (or crash) on valid input: where and how to reproduce it.
@@ -473,7 +482,7 @@ fn never_fails_report_corpus_report_precisions() {
 
 #[test]
 fn never_fails_report_corpus_every_precision() {
-    assert_report_has_no_fails(&all_precisions());
+    assert_report_has_no_fails(&default_run_precisions());
 }
 
 #[test]
@@ -618,6 +627,37 @@ fn never_fails_scaled_extreme_failing_checks() {
 }
 
 /// A sample of every family for the precisions 1080 and 4096.
+/// The cases of [`high_precision_sample`] that run at 4096 bits: all of them in the long
+/// mode; else the standard corpus and every fourth case of the families.
+fn deep_precision_sample() -> Vec<Surface> {
+    let all = high_precision_sample();
+    if crate::support::long_mode() {
+        return all;
+    }
+    let corpus = corpus::standard().len();
+    let mut cases: Vec<Surface> = all[..corpus].to_vec();
+    cases.extend(all[corpus..].iter().step_by(4).cloned());
+    cases
+}
+
+/// The high-precision rows of `keep`'s checks: MPFR 1080 on [`high_precision_sample`],
+/// MPFR 4096 on [`deep_precision_sample`].
+fn run_high_precision(keep: impl Fn(&str) -> bool + Copy) {
+    let p1080 = Prec::Mpfr(Precision::new(1080).unwrap());
+    run_family_checks(
+        "high precision (1080 bits)",
+        &high_precision_sample(),
+        &[p1080],
+        keep,
+    );
+    run_family_checks(
+        "high precision (4096 bits)",
+        &deep_precision_sample(),
+        &[deepest_precision()],
+        keep,
+    );
+}
+
 fn high_precision_sample() -> Vec<Surface> {
     let mut cases: Vec<Surface> = corpus::standard();
     cases.extend(cocircular_family().into_iter().step_by(5));
@@ -633,32 +673,17 @@ fn high_precision_sample() -> Vec<Surface> {
 
 #[test]
 fn never_fails_high_precision_other_checks() {
-    run_family_checks(
-        "high precision",
-        &high_precision_sample(),
-        &high_precisions(),
-        |id| !has_f64_tolerance(id) && !is_delaunay_tie_check(id),
-    );
+    run_high_precision(|id| !has_f64_tolerance(id) && !is_delaunay_tie_check(id));
 }
 
 #[test]
 fn never_fails_high_precision_tolerance_checks() {
-    run_family_checks(
-        "high precision",
-        &high_precision_sample(),
-        &high_precisions(),
-        has_f64_tolerance,
-    );
+    run_high_precision(has_f64_tolerance);
 }
 
 #[test]
 fn never_fails_high_precision_delaunay_checks() {
-    run_family_checks(
-        "high precision",
-        &high_precision_sample(),
-        &high_precisions(),
-        is_delaunay_tie_check,
-    );
+    run_high_precision(is_delaunay_tie_check);
 }
 
 #[test]

@@ -69,15 +69,25 @@ fn failures(case: &Surface, precs: &[Prec]) -> Vec<String> {
 
 #[test]
 fn b40_tolerances_at_high_precision_and_extreme_scales() {
-    let precs = all_precisions();
-    let mut scales: Vec<Rational> = [0, 80, -80, 300, -300, 1000, -1000]
+    // MPFR 2048 and 4096 at the unit scale and 2^±1000 only, outside the long mode (1080
+    // bits, past the f64 exponent range like both, runs at every scale;
+    // never_fails::default_run_precisions).
+    let deep = |k: i32| crate::support::long_mode() || matches!(k, 0 | 1000 | -1000);
+    let mut scales: Vec<(Rational, bool)> = [0, 80, -80, 300, -300, 1000, -1000]
         .into_iter()
-        .map(pow2)
+        .map(|k| (pow2(k), deep(k)))
         .collect();
     let ten = |k: u32| Rational::from(rug::Integer::from(10).pow(k));
-    scales.extend([ten(78), ten(80).recip(), ten(76).recip(), ten(400).recip()]);
+    scales.extend(
+        [ten(78), ten(80).recip(), ten(76).recip(), ten(400).recip()]
+            .map(|s| (s, crate::support::long_mode())),
+    );
     let mut bad = Vec::new();
-    for s in &scales {
+    for (s, deep) in &scales {
+        let precs: Vec<Prec> = all_precisions()
+            .into_iter()
+            .filter(|p| *deep || !matches!(p, Prec::Mpfr(b) if b.bits() > 1080))
+            .collect();
         bad.extend(failures(&tetrahedron(s), &precs));
         // A cap and a needle pair, scaled.
         let s2 = Rational::from(s * s);
@@ -185,7 +195,12 @@ fn b65_corpus_past_the_f64_exponent_range_has_no_false_refutation() {
     // Past 1074 bits 2^-p underflows in f64: tolerances (B40 "Range") and the nudge of the
     // flip driver (B65) must not. The cube with split square faces has exact cocircular ties
     // whose rounded diagonals need the nudge.
-    let precs = [mpfr(1080), mpfr(4096)];
+    // 4096 bits in the long mode: never_fails::never_fails_high_precision_* run every check
+    // on this corpus at 1080 and 4096 bits in the default run.
+    let mut precs = vec![mpfr(1080)];
+    if crate::support::long_mode() {
+        precs.push(mpfr(4096));
+    }
     let mut bad = Vec::new();
     for case in penner::oracle::corpus::standard() {
         bad.extend(failures(&case, &precs));
