@@ -56,6 +56,7 @@ mod meshgen;
 mod never_fails;
 mod oracle;
 mod overlay;
+mod overlay_klein;
 mod planar_gen;
 mod predicates_planar;
 mod progress;
