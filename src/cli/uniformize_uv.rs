@@ -128,7 +128,7 @@ fn seams_line(obj: &str, outcome: &ClosedOutcome) -> Result<String, CliError> {
         )
     } else {
         format!(
-            "seams: {} of {} cut segments are not rotations by multiples of π/2 within relative ε = 1e-9 (first at f{}; on genus ≥ 1 the handles' holonomy is not fixed by the cone angles)\n",
+            "seams: {} of {} cut segments are not rotations by multiples of π/2 within relative ε = 1e-9 (first at f{}; on genus ≥ 1 the handles' holonomy is not fixed by the cone angles; segments far shorter than the layout are below the resolution of its binary64 coordinates)\n",
             r.broken.len(),
             r.seam_segments,
             r.broken[0]
