@@ -46,7 +46,7 @@ fn write_all(path: &Path, mut f: std::fs::File, bytes: &[u8]) -> Result<(), CliE
 
 /// Compute, write and check the UV mesh of `outcome` (of the input `surface`); the lines
 /// to report and whether the files were written. Bad input is an error; a UV mesh penner
-/// could not compute (e.g. a Ptolemy flip not convex in the input metric) is a line, so the
+/// could not compute (e.g. a Klein crossing lost to rounding, B111) is a line, so the
 /// solve and its certificate are still reported (the command then exits 2).
 pub fn write(
     path: &Path,

@@ -346,7 +346,8 @@ impl TrackedOverlay {
             }
             // g is the diagonal ij itself: one run from corner to corner.
             let (ca, cb) = if a == h0 { (I, J) } else { (J, I) };
-            let (ya, y) = q.cross_kl((Place::Corner(ca), 0.0), None, (Place::Corner(cb), 1.0), 0)?;
+            let (ya, y) =
+                q.cross_kl((Place::Corner(ca), 0.0), None, (Place::Corner(cb), 1.0), 0)?;
             out.crossings = vec![y];
             out.along = None;
             out.start = q.corner_in(ca, ya);

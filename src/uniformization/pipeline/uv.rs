@@ -16,9 +16,9 @@
 use super::{ClosedOutcome, PipelineError};
 use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
 use crate::io::Surface;
+use crate::overlay::tracking::track_euclidean_then_ptolemy;
 use crate::overlay::tracking::TrackError;
 use crate::overlay::uv::UvError;
-use crate::overlay::tracking::track_euclidean_then_ptolemy;
 use crate::overlay::{common_refinement, replay_normal_coordinates, uv_mesh, UvMesh};
 use crate::uniformization::svg::scaled_lengths_f64;
 
