@@ -14,9 +14,11 @@
 //! Y = A + μ (B − A) = K + τ (L − K),             s_Y = s_A + μ (s_B − s_A),
 //! ```
 //!
-//! with `s` the parameter along `g` (affine along a straight segment). `μ, τ ∈ (0, 1)` is
-//! checked; a value outside says the quadrilateral is not convex in the input metric: the
-//! typed error [`TrackError::NotStraight`].
+//! with `s` the parameter along `g` (affine along a straight segment). *Which* pieces cross
+//! `kl` is combinatorial (their ends lie on opposite sides of `kl`: `{ki, i, il}` against
+//! `{lj, j, jk}`, B105), never decided by rounding; `μ, τ ∈ (0, 1)` is then checked, and a
+//! value outside says the quadrilateral is not convex in the input metric: the typed error
+//! [`TrackError::NotStraight`].
 //!
 //! **Ptolemy flips** ([`TrackedOverlay::flip_ptolemy`]). The lengths are then the base
 //! metric `λ` (Penner coordinates), carried by `λ_kl = (λ_ki λ_lj + λ_jk λ_il)/λ_ij`, and a
@@ -243,9 +245,13 @@ impl TrackedOverlay {
     /// Move every crossing from the base metric `λ` to the conformally equivalent metric
     /// `e^{(u_i+u_j)/2} λ_ij` (the same point of the hyperbolic surface, B111 part 2): on a
     /// half-edge `a → b`, `t/(1 − t)` is multiplied by `e^{u_a − u_b}`; the lengths are
-    /// scaled. `u` has one entry per vertex of `T`.
-    pub fn rescale(&mut self, u: &[f64]) {
+    /// scaled. `u` must have one finite entry per vertex of `T`, else
+    /// [`TrackError::ScaleFactors`] and nothing changes.
+    pub fn rescale(&mut self, u: &[f64]) -> Result<(), TrackError> {
         let m = &self.mesh;
+        if u.len() != m.n_vertices() || u.iter().any(|x| !x.is_finite()) {
+            return Err(TrackError::ScaleFactors);
+        }
         for p in &mut self.paths {
             for c in &mut p.crossings {
                 c.t = rescaled_parameter(c.t, u[m.tail(c.h).idx()] - u[m.tip(c.h).idx()]);
@@ -255,6 +261,7 @@ impl TrackedOverlay {
             let h = e.side(0);
             self.lengths[e.idx()] *= (0.5 * (u[m.tail(h).idx()] + u[m.tip(h).idx()])).exp();
         }
+        Ok(())
     }
 
     /// Flip `e` of `T` by a flip of `kind`, keeping every input edge's crossings.
@@ -704,10 +711,7 @@ pub fn track_euclidean_then_ptolemy(
         o.flip_ptolemy(e)?;
     }
     if let Some(u) = u {
-        if u.len() != o.mesh.n_vertices() || u.iter().any(|x| !x.is_finite()) {
-            return Err(TrackError::ScaleFactors);
-        }
-        o.rescale(u);
+        o.rescale(u)?;
     }
     Ok(o)
 }

@@ -175,6 +175,9 @@ fn b111_rescaled_crossings_follow_a_mobius_transformation() {
         let (moved, u): (Vec<Q2>, Vec<f64>) = pos.iter().map(|z| mobius(&a, z)).unzip();
         let o = track_euclidean_then_ptolemy(&t_in, &l0, &[], &flips, Some(&u)).unwrap();
         let plain = track_euclidean_then_ptolemy(&t_in, &l0, &[], &flips, None).unwrap();
+        let mut short = plain.clone();
+        assert_eq!(short.rescale(&u[1..]), Err(TrackError::ScaleFactors));
+        assert_eq!(short.paths, plain.paths);
         for e in o.mesh.edges() {
             let (x, y) = ends(&o.mesh, e);
             let chord = dist(&moved[x], &moved[y]);
