@@ -46,7 +46,7 @@ fn write_all(path: &Path, mut f: std::fs::File, bytes: &[u8]) -> Result<(), CliE
 
 /// Compute, write and check the UV mesh of `outcome` (of the input `surface`); the lines
 /// to report and whether the files were written. Bad input is an error; a UV mesh penner
-/// could not compute (e.g. a Ptolemy flip not convex in the input metric) is a line, so the
+/// could not compute (e.g. a Klein crossing lost to rounding, B111) is a line, so the
 /// solve and its certificate are still reported (the command then exits 2).
 pub fn write(
     path: &Path,
@@ -128,7 +128,7 @@ fn seams_line(obj: &str, outcome: &ClosedOutcome) -> Result<String, CliError> {
         )
     } else {
         format!(
-            "seams: {} of {} cut segments are not rotations by multiples of π/2 within relative ε = 1e-9 (first at f{}; on genus ≥ 1 the handles' holonomy is not fixed by the cone angles)\n",
+            "seams: {} of {} cut segments are not rotations by multiples of π/2 within relative ε = 1e-9 (first at f{}; on genus ≥ 1 the handles' holonomy is not fixed by the cone angles; segments far shorter than the layout are below the resolution of its binary64 coordinates)\n",
             r.broken.len(),
             r.seam_segments,
             r.broken[0]

@@ -5,9 +5,9 @@
 //!   relative to the current triangulation `T`, kept through flips by a purely
 //!   combinatorial update (proof: B105). The update holds for Euclidean and Ptolemy flips
 //!   alike, since the flipped edge is the same isotopy class of arc either way.
-//! - [`tracking`]: the crossing positions, tracked through flips whose quadrilaterals are
-//!   strictly convex in the input metric (every edge of `T` then a geodesic of the input
-//!   metric; B108); the first flip that is not is a typed error.
+//! - [`tracking`]: the crossing positions, tracked through the Euclidean flips in the
+//!   input metric (every edge of `T` then a geodesic of the input metric; B108) and through
+//!   the Ptolemy flips in the Klein picture of the base metric (B111).
 //! - [`refinement`]: the refinement as a triangle mesh, each triangle knowing its face of
 //!   `T` and of `T_in` (B108).
 //! - [`uv`]: texture coordinates from a layout of `T` with its final lengths, 3-D
@@ -16,8 +16,8 @@
 //! - [`seams`]: the exact seam check: rotations by multiples of π/2 within `ε` (B110).
 //! - [`claim`]: the claim kind `parametrization`, answered by those checks.
 //!
-//! Not computed yet: positions after Ptolemy flips whose quadrilateral is not convex in
-//! the input metric (the projective maps of the flips), surfaces with boundary.
+//! Not computed yet: surfaces with boundary. Along an input edge, positions made by
+//! Ptolemy flips are a parametrization choice (B111), not the flat arc length.
 
 pub mod check;
 pub mod claim;
@@ -31,5 +31,5 @@ pub use check::{check_parametrization, ParametrizationReport};
 pub use normal_coordinates::{replay_normal_coordinates, NormalCoordinates, NormalError};
 pub use refinement::{common_refinement, Refinement, RefinementError};
 pub use seams::{check_seams, SeamReport};
-pub use tracking::{track_flips, TrackError, TrackedOverlay};
+pub use tracking::{track_euclidean_then_ptolemy, track_flips, TrackError, TrackedOverlay};
 pub use uv::{uv_mesh, UvError, UvMesh};

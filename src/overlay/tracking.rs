@@ -1,12 +1,13 @@
 //! The crossings of the input edges with the current triangulation `T`, tracked through
-//! flips in the **input metric** (proof: B108).
+//! Euclidean flips in the **input metric** (proof: B108) and through Ptolemy flips in the
+//! **hyperbolic (Klein) picture** of the base metric (proof: B111).
 //!
-//! Every edge `g` of `T_in` is a geodesic of the input's flat cone metric. A flip of `ij`
-//! (faces `ijk`, `jil`) whose quadrilateral is strictly convex in the input metric replaces
-//! `ij` by the straight diagonal `kl`, again a geodesic. Inside the quadrilateral laid out
-//! in the plane (`i = (0, 0)`, `j = (ℓ_ij, 0)`, `k` above, `l` below) each piece of `g` is
-//! the straight segment `AB` between its ends (corners or points of the four sides), so the
-//! new crossing with `kl` is
+//! **Euclidean flips.** Every edge `g` of `T_in` is a geodesic of the input's flat cone
+//! metric. A flip of `ij` (faces `ijk`, `jil`) whose quadrilateral is strictly convex in the
+//! input metric replaces `ij` by the straight diagonal `kl`, again a geodesic. Inside the
+//! quadrilateral laid out in the plane (`i = (0, 0)`, `j = (ℓ_ij, 0)`, `k` above, `l` below)
+//! each piece of `g` is the straight segment `AB` between its ends (corners or points of the
+//! four sides), so the new crossing with `kl` is
 //!
 //! ```text
 //! μ = (K − A) × (L − K) / ((B − A) × (L − K)),   τ = (K − A) × (B − A) / ((B − A) × (L − K)),
@@ -16,10 +17,34 @@
 //! with `s` the parameter along `g` (affine along a straight segment). *Which* pieces cross
 //! `kl` is combinatorial (their ends lie on opposite sides of `kl`: `{ki, i, il}` against
 //! `{lj, j, jk}`, B105), never decided by rounding; `μ, τ ∈ (0, 1)` is then checked, and a
-//! value outside says the quadrilateral is not convex in the input metric (a Ptolemy flip
-//! whose diagonal is no geodesic of the input metric): a typed error, the slice's limit.
-//! Positions are binary64; the written output is checked exactly afterwards (B109).
+//! value outside says the quadrilateral is not convex in the input metric: the typed error
+//! [`TrackError::NotStraight`].
+//!
+//! **Ptolemy flips** ([`TrackedOverlay::flip_ptolemy`]). The lengths are then the base
+//! metric `λ` (Penner coordinates), carried by `λ_kl = (λ_ki λ_lj + λ_jk λ_il)/λ_ij`, and a
+//! crossing is stored at its Euclidean parameter in the base metric of its edge. Each
+//! Euclidean triangle, seen in its circumdisk as a Klein model, is an ideal hyperbolic
+//! triangle; the quadrilateral is laid out on the unit circle (`i = (−1, 0)`, `j = (1, 0)`,
+//! `k = (0, 1)`, `l = (cos φ, −sin φ)`, `tan(φ/2) = e^σ`, `σ = log(λ_ki λ_lj/(λ_jk λ_il))`),
+//! where it is always strictly convex and the Ptolemy flip is the chord `kl`. A point of
+//! barycentric coordinates `β` in a triangle of the base metric goes to the point of
+//! barycentric coordinates `∝ w_a β_a`, `w_a = (μ_a/λ_a)²` (`μ_a, λ_a` the Klein and base
+//! lengths of the side opposite corner `a`): the projective map of the triangle onto its
+//! Klein picture, which matches the symmedian feet (the feet of the hyperbolic
+//! perpendiculars). A run of pieces is a polyline `A, [Y on ij], B` there, straight in each
+//! old triangle; its crossing with `kl` is mapped back to the base metric of the new
+//! triangles the same way. Which runs cross `kl` stays combinatorial (B105). The position
+//! `s` along the input edge is affine in the base metric of the old triangle holding the
+//! crossed piece: the input's flat arc length while that piece is still a piece of the
+//! input edge in the input metric (every piece at `T₀`), a **parametrization choice**
+//! afterwards, since each new piece is the straight chord between its ends (isotopic to
+//! the bent polyline with its ends fixed). [`TrackedOverlay::rescale`] finally moves every
+//! crossing to the conformally scaled metric `e^{(u_i+u_j)/2} λ_ij` (same hyperbolic point:
+//! `t/(1 − t)` times `e^{u_tail − u_tip}`).
+//!
+//! Positions are binary64; the written output is checked exactly afterwards (B109, B110).
 
+use crate::algorithms::flips::FlipKind;
 use crate::geometry::unfold::third_corner;
 use crate::mesh::{Edge, Face, FlipError, HalfEdge, Mesh};
 
@@ -60,10 +85,15 @@ pub enum TrackError {
     /// The lengths are not one positive finite number per edge.
     #[error("the input metric needs one positive finite length per edge")]
     Lengths,
-    /// The new diagonal is not a straight segment of the input metric across its
-    /// quadrilateral (the quadrilateral is not strictly convex in the input metric, as
-    /// after a Ptolemy flip far from a Euclidean one): positions are not computed (B108).
-    #[error("flip {flip} (edge {edge}): the new diagonal is not a geodesic of the input metric (its quadrilateral is not convex there); crossing positions after Ptolemy flips of this kind are not computed yet")]
+    /// The log scale factors are not one finite number per vertex.
+    #[error("the log scale factors need one finite number per vertex")]
+    ScaleFactors,
+    /// A Euclidean flip whose new diagonal is not a straight segment of the input metric
+    /// across its quadrilateral (the quadrilateral is not strictly convex in the input
+    /// metric, or rounding at a near-degenerate one): positions are not computed (B108).
+    /// Ptolemy flips never give it: their quadrilateral is convex in the Klein picture
+    /// (B111).
+    #[error("flip {flip} (edge {edge}): the new diagonal is not a geodesic of the input metric (its quadrilateral is not convex there)")]
     NotStraight {
         /// The flip's index in the sequence.
         flip: usize,
@@ -87,7 +117,9 @@ pub enum TrackError {
 pub struct TrackedOverlay {
     /// The current triangulation `T`.
     pub mesh: Mesh,
-    /// The input-metric lengths of `T`'s edges.
+    /// The lengths of `T`'s edges in the metric the crossings' parameters `t` refer to: the
+    /// input metric through Euclidean flips, the base metric `λ` carried by Ptolemy flips
+    /// after them, the scaled metric after [`TrackedOverlay::rescale`].
     pub lengths: Vec<f64>,
     /// Per input edge, its path through `T`.
     pub paths: Vec<InputEdgePath>,
@@ -197,10 +229,44 @@ impl TrackedOverlay {
         }
     }
 
-    /// Flip `e` of `T`, keeping every input edge's crossings (module documentation). On
-    /// error nothing changes.
+    /// Flip `e` of `T` by a Euclidean flip, keeping every input edge's crossings (module
+    /// documentation; B108). On error nothing changes.
     pub fn flip(&mut self, e: Edge) -> Result<(), TrackError> {
-        let q = self.quad(e)?;
+        self.flip_of_kind(e, FlipKind::Euclidean)
+    }
+
+    /// Flip `e` of `T` by a Ptolemy flip of the base metric, keeping every input edge's
+    /// crossings through the Klein picture (module documentation; B111). On error nothing
+    /// changes.
+    pub fn flip_ptolemy(&mut self, e: Edge) -> Result<(), TrackError> {
+        self.flip_of_kind(e, FlipKind::Ptolemy)
+    }
+
+    /// Move every crossing from the base metric `λ` to the conformally equivalent metric
+    /// `e^{(u_i+u_j)/2} λ_ij` (the same point of the hyperbolic surface, B111 part 2): on a
+    /// half-edge `a → b`, `t/(1 − t)` is multiplied by `e^{u_a − u_b}`; the lengths are
+    /// scaled. `u` must have one finite entry per vertex of `T`, else
+    /// [`TrackError::ScaleFactors`] and nothing changes.
+    pub fn rescale(&mut self, u: &[f64]) -> Result<(), TrackError> {
+        let m = &self.mesh;
+        if u.len() != m.n_vertices() || u.iter().any(|x| !x.is_finite()) {
+            return Err(TrackError::ScaleFactors);
+        }
+        for p in &mut self.paths {
+            for c in &mut p.crossings {
+                c.t = rescaled_parameter(c.t, u[m.tail(c.h).idx()] - u[m.tip(c.h).idx()]);
+            }
+        }
+        for e in m.edges() {
+            let h = e.side(0);
+            self.lengths[e.idx()] *= (0.5 * (u[m.tail(h).idx()] + u[m.tip(h).idx()])).exp();
+        }
+        Ok(())
+    }
+
+    /// Flip `e` of `T` by a flip of `kind`, keeping every input edge's crossings.
+    fn flip_of_kind(&mut self, e: Edge, kind: FlipKind) -> Result<(), TrackError> {
+        let q = self.quad(e, kind)?;
         let sides = q.side_he.map(HalfEdge::edge);
         let mut touched: Vec<u32> = std::iter::once(e)
             .chain(sides)
@@ -224,8 +290,16 @@ impl TrackedOverlay {
             rebuilt.push((g, r.path));
         }
         self.mesh.flip(e)?;
-        let (pk, pl) = (q.pos[K], q.pos[L]);
-        self.lengths[e.idx()] = (pk[0] - pl[0]).hypot(pk[1] - pl[1]);
+        self.lengths[e.idx()] = match kind {
+            FlipKind::Euclidean => {
+                let (pk, pl) = (q.pos[K], q.pos[L]);
+                (pk[0] - pl[0]).hypot(pk[1] - pl[1])
+            }
+            FlipKind::Ptolemy => {
+                let [ij, jk, ki, il, lj] = q.lam;
+                ki * (lj / ij) + il * (jk / ij)
+            }
+        };
         for (g, path) in rebuilt {
             self.paths[g as usize] = path;
         }
@@ -235,8 +309,9 @@ impl TrackedOverlay {
         Ok(())
     }
 
-    /// The quadrilateral of `e`, laid out with the input-metric lengths.
-    fn quad(&self, e: Edge) -> Result<Quad, TrackError> {
+    /// The quadrilateral of `e`, laid out with the current lengths, and for a Ptolemy flip
+    /// its Klein picture.
+    fn quad(&self, e: Edge, kind: FlipKind) -> Result<Quad, TrackError> {
         let m = &self.mesh;
         if e.idx() >= m.n_edges() {
             return Err(FlipError::OutOfRange(e).into());
@@ -254,12 +329,15 @@ impl TrackedOverlay {
         let pj = [len(h0), 0.0];
         let pk = third_corner(pi, pj, len(h_ki), len(h_jk));
         let pl = third_corner(pj, pi, len(t_lj), len(t_il));
+        let lam = [h0, h_jk, h_ki, t_il, t_lj].map(len);
         Ok(Quad {
             e,
             flip: self.flips,
             faces: [f0, f1],
             side_he: [h_jk, h_ki, t_il, t_lj],
             pos: [pi, pj, pk, pl],
+            lam,
+            klein: (kind == FlipKind::Ptolemy).then(|| Klein::of(lam)),
         })
     }
 
@@ -275,7 +353,8 @@ impl TrackedOverlay {
             }
             // g is the diagonal ij itself: one run from corner to corner.
             let (ca, cb) = if a == h0 { (I, J) } else { (J, I) };
-            let (ya, y) = q.cross_kl((Place::Corner(ca), 0.0), (Place::Corner(cb), 1.0))?;
+            let (ya, y) =
+                q.cross_kl((Place::Corner(ca), 0.0), None, (Place::Corner(cb), 1.0), 0)?;
             out.crossings = vec![y];
             out.along = None;
             out.start = q.corner_in(ca, ya);
@@ -329,7 +408,15 @@ impl TrackedOverlay {
             };
             let (sa, sb) = (a.0.side_of_kl(), b.0.side_of_kl());
             let (ta, tb) = if sa * sb < 0 {
-                let (ya, y) = q.cross_kl(a, b)?;
+                // The crossing of ij inside the run (parameter from i, s), and the old face
+                // holding the run's first piece.
+                let y = (end > p).then(|| {
+                    let x = path.crossings[p];
+                    let t = if x.h == h0 { x.t } else { 1.0 - x.t };
+                    (t, x.s)
+                });
+                let first = usize::from(self.piece_face(g as usize, p) != Some(q.faces[0]));
+                let (ya, y) = q.cross_kl(a, y, b, first)?;
                 crossings.push(y);
                 r.crosses_kl = true;
                 (ya, -ya)
@@ -360,13 +447,83 @@ impl TrackedOverlay {
 }
 
 /// The quadrilateral of a flip: the flipped edge, the flip's index, its two faces, the
-/// half-edges of its sides `jk, ki, il, lj` facing inward, and the layout of `i, j, k, l`.
+/// half-edges of its sides `jk, ki, il, lj` facing inward, the layout of `i, j, k, l` in
+/// the current metric, the current lengths of `ij, jk, ki, il, lj`, and for a Ptolemy flip
+/// the Klein picture.
 struct Quad {
     e: Edge,
     flip: usize,
     faces: [Face; 2],
     side_he: [HalfEdge; 4],
     pos: [[f64; 2]; 4],
+    lam: [f64; 5],
+    klein: Option<Klein>,
+}
+
+/// The Klein picture of a quadrilateral (B111): the corners `i, j, k, l` on the unit
+/// circle, and per old face (`ijk`, `jil`) the weights `w_a = (μ_a/λ_a)²` of its corners
+/// (`μ_a`, `λ_a`: the Klein and base lengths of the side opposite `a`; `0` for the corner
+/// not in the face), and the same ratio for the new diagonal's ends in face `kil`:
+/// `w_k/w_l = (μ_il/λ_il)²/(μ_ki/λ_ki)²`.
+struct Klein {
+    pos: [[f64; 2]; 4],
+    w: [[f64; 4]; 2],
+    w_kl: f64,
+}
+
+impl Klein {
+    /// The Klein picture of a quadrilateral with base lengths `ij, jk, ki, il, lj`:
+    /// `tan(φ/2) = ρ = e^σ = λ_ki λ_lj / (λ_jk λ_il)`, so `cos φ = (1 − ρ²)/(1 + ρ²)`,
+    /// `sin φ = 2ρ/(1 + ρ²)`, and the chords `μ_ij = 2`, `μ_jk = μ_ki = √2`,
+    /// `μ_il² = 4/(1 + ρ²)`, `μ_lj² = 4ρ²/(1 + ρ²)`.
+    fn of([ij, jk, ki, il, lj]: [f64; 5]) -> Klein {
+        let rho = (ki / jk) * (lj / il);
+        let d = 1.0 + rho * rho;
+        let pos = [
+            [-1.0, 0.0],
+            [1.0, 0.0],
+            [0.0, 1.0],
+            [(1.0 - rho * rho) / d, -2.0 * rho / d],
+        ];
+        let (m_ij, m_side) = (4.0, 2.0);
+        let (m_il, m_lj) = (4.0 / d, 4.0 * rho * rho / d);
+        let sq = |x: f64| x * x;
+        let w = [
+            [m_side / sq(jk), m_side / sq(ki), m_ij / sq(ij), 0.0],
+            [m_lj / sq(lj), m_il / sq(il), 0.0, m_ij / sq(ij)],
+        ];
+        let w_kl = (m_il / sq(il)) / (m_side / sq(ki));
+        Klein { pos, w, w_kl }
+    }
+
+    /// The Klein point and the normalizer `W = Σ w_a β_a` of the point of barycentric
+    /// coordinates `β` (pairs of corner and coordinate) in old face `face`.
+    fn point(&self, face: usize, beta: [(usize, f64); 2]) -> ([f64; 2], f64) {
+        let w = &self.w[face];
+        let big_w: f64 = beta.iter().map(|&(c, b)| w[c] * b).sum();
+        let mut p = [0.0; 2];
+        for &(c, b) in &beta {
+            p[0] += w[c] * b * self.pos[c][0];
+            p[1] += w[c] * b * self.pos[c][1];
+        }
+        ([p[0] / big_w, p[1] / big_w], big_w)
+    }
+}
+
+/// `t` on a half-edge `a → b` moved to the metric scaled by `e^{(u_a+u_b)/2}` on every
+/// edge: `t/(1 − t)` times `e^{d}`, `d = u_a − u_b` (B111 part 2).
+pub fn rescaled_parameter(t: f64, d: f64) -> f64 {
+    let x = d.exp();
+    t * x / ((1.0 - t) + t * x)
+}
+
+/// The barycentric coordinates of a place of the quadrilateral (pairs of corner and
+/// coordinate).
+fn barycentric(p: Place) -> [(usize, f64); 2] {
+    match p {
+        Place::Corner(c) => [(c, 1.0), (c, 0.0)],
+        Place::Side(s, t) => [(SIDES[s].0, 1.0 - t), (SIDES[s].1, t)],
+    }
 }
 
 /// An input edge's path rebuilt by a flip.
@@ -419,27 +576,23 @@ impl Quad {
         }
     }
 
-    /// The crossing of the straight segment from `a` to `b` (places with their parameters
-    /// along the input edge) with `kl`, and which side of `kl` `a` lies on (`−1`: the side
-    /// of `i`, face A after the flip).
-    fn cross_kl(&self, a: (Place, f64), b: (Place, f64)) -> Result<(i32, Crossing), TrackError> {
-        let pos = self.pos;
-        let at = |p: Place| match p {
-            Place::Corner(c) => pos[c],
-            Place::Side(s, t) => lerp(pos[SIDES[s].0], pos[SIDES[s].1], t),
+    /// The crossing with `kl` of the run from `a` to `b` (places with their parameters along
+    /// the input edge) through `y` (its crossing of `ij`: parameter from `i` and along the
+    /// input edge), whose first piece lies in old face `first` (`0`: `ijk`), and which side
+    /// of `kl` `a` lies on (`−1`: the side of `i`, face A after the flip). A Euclidean flip
+    /// takes the straight segment `ab` of the input metric (B108), a Ptolemy flip the
+    /// polyline in the Klein picture (B111).
+    fn cross_kl(
+        &self,
+        a: (Place, f64),
+        y: Option<(f64, f64)>,
+        b: (Place, f64),
+        first: usize,
+    ) -> Result<(i32, Crossing), TrackError> {
+        let (tau, s) = match &self.klein {
+            None => self.cross_kl_flat(a, b)?,
+            Some(k) => self.cross_kl_klein(k, a, y, b, first)?,
         };
-        let (pa, pb) = (at(a.0), at(b.0));
-        let (d, kl) = (sub(pb, pa), sub(pos[L], pos[K]));
-        let den = cross(d, kl);
-        let mu = cross(sub(pos[K], pa), kl) / den;
-        let tau = cross(sub(pos[K], pa), d) / den;
-        if !(mu > 0.0 && mu < 1.0 && tau > 0.0 && tau < 1.0) {
-            return Err(TrackError::NotStraight {
-                flip: self.flip,
-                edge: self.e,
-            });
-        }
-        let s = a.1 + mu * (b.1 - a.1);
         let side = a.0.side_of_kl();
         // The piece after the crossing lies towards b: face B (k→l) when a is on i's side,
         // face A (l→k) otherwise.
@@ -458,9 +611,77 @@ impl Quad {
         };
         Ok((side, y))
     }
+
+    /// The crossing with `kl` (parameter from `k`, parameter along the input edge) in the
+    /// Klein picture: the piece of the polyline `a, y, b` whose ends lie on both sides of
+    /// `kl` (`y`'s side computed, `a`'s and `b`'s combinatorial), intersected with the
+    /// chord `kl`, mapped back to the base metric of face `kil` (B111 part 4). `s` is affine
+    /// along the piece in the base metric of its old face.
+    fn cross_kl_klein(
+        &self,
+        kl: &Klein,
+        a: (Place, f64),
+        y: Option<(f64, f64)>,
+        b: (Place, f64),
+        first: usize,
+    ) -> Result<(f64, f64), TrackError> {
+        let (kk, ll) = (kl.pos[K], kl.pos[L]);
+        let dir = sub(ll, kk);
+        let ((pb, ps), (qb, qs), face) = match y {
+            None => ((barycentric(a.0), a.1), (barycentric(b.0), b.1), first),
+            Some((ty, sy)) => {
+                let yb = [(I, 1.0 - ty), (J, ty)];
+                let (yk, _) = kl.point(first, yb);
+                let side_y = cross(dir, sub(yk, kk));
+                let side_i = cross(dir, sub(kl.pos[I], kk));
+                let a_side = f64::from(a.0.side_of_kl());
+                // `y` strictly on `a`'s side of kl: the second piece crosses it.
+                if side_y * side_i * -a_side > 0.0 {
+                    ((yb, sy), (barycentric(b.0), b.1), 1 - first)
+                } else {
+                    ((barycentric(a.0), a.1), (yb, sy), first)
+                }
+            }
+        };
+        let (p, wp) = kl.point(face, pb);
+        let (q, wq) = kl.point(face, qb);
+        let d = sub(q, p);
+        let den = cross(d, dir);
+        let mu = (cross(sub(kk, p), dir) / den).clamp(0.0, 1.0);
+        let tau = cross(sub(kk, p), d) / den;
+        if !(tau > 0.0 && tau < 1.0) {
+            return Err(self.bad("the crossing with the new diagonal fell outside it in the Klein picture (rounding)"));
+        }
+        // Back to the base metric: along the piece (old face), and along kl (face kil).
+        let mu_base = mu * wp / ((1.0 - mu) * wq + mu * wp);
+        let tau_base = tau * kl.w_kl / ((1.0 - tau) + tau * kl.w_kl);
+        Ok((tau_base, ps + mu_base * (qs - ps)))
+    }
+
+    /// The crossing with `kl` (parameter from `k`, parameter along the input edge) of the
+    /// straight segment from `a` to `b` in the input metric (B108).
+    fn cross_kl_flat(&self, a: (Place, f64), b: (Place, f64)) -> Result<(f64, f64), TrackError> {
+        let pos = self.pos;
+        let at = |p: Place| match p {
+            Place::Corner(c) => pos[c],
+            Place::Side(s, t) => lerp(pos[SIDES[s].0], pos[SIDES[s].1], t),
+        };
+        let (pa, pb) = (at(a.0), at(b.0));
+        let (d, kl) = (sub(pb, pa), sub(pos[L], pos[K]));
+        let den = cross(d, kl);
+        let mu = cross(sub(pos[K], pa), kl) / den;
+        let tau = cross(sub(pos[K], pa), d) / den;
+        if !(mu > 0.0 && mu < 1.0 && tau > 0.0 && tau < 1.0) {
+            return Err(TrackError::NotStraight {
+                flip: self.flip,
+                edge: self.e,
+            });
+        }
+        Ok((tau, a.1 + mu * (b.1 - a.1)))
+    }
 }
 
-/// Track the input edges of `input` (input-metric `lengths`) through `flips`
+/// Track the input edges of `input` (input-metric `lengths`) through the Euclidean `flips`
 /// ([`TrackedOverlay::flip`]).
 pub fn track_flips(
     input: &Mesh,
@@ -470,6 +691,27 @@ pub fn track_flips(
     let mut o = TrackedOverlay::of_input(input, lengths)?;
     for &e in flips {
         o.flip(e)?;
+    }
+    Ok(o)
+}
+
+/// Track the input edges of `input` (input-metric `lengths`) through the Euclidean flips
+/// `euclidean` (to `T₀`, B108), then the Ptolemy flips `ptolemy` of the base metric (B111),
+/// and move the crossings to the metric scaled by `e^{(u_i+u_j)/2}` when `u` is given
+/// ([`TrackedOverlay::rescale`]). Flip indices in errors count both phases.
+pub fn track_euclidean_then_ptolemy(
+    input: &Mesh,
+    lengths: &[f64],
+    euclidean: &[Edge],
+    ptolemy: &[Edge],
+    u: Option<&[f64]>,
+) -> Result<TrackedOverlay, TrackError> {
+    let mut o = track_flips(input, lengths, euclidean)?;
+    for &e in ptolemy {
+        o.flip_ptolemy(e)?;
+    }
+    if let Some(u) = u {
+        o.rescale(u)?;
     }
     Ok(o)
 }

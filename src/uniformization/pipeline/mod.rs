@@ -7,7 +7,7 @@
 //! | with boundary (B79) | [`uniformize_boundary`] | B71 on the double, for the input's exact metric pulled back | `uniformization` (the double) |
 //! | the sphere (B74–B76) | [`uniformize_sphere`] | B76 on the disk, for the input's exact metric | `sphere_uniformization` |
 //! | hyperbolic (B38, B39, B87) | [`uniformize_hyperbolic`] | B39 on the binary64 lengths | `hyperbolic_uniformization` |
-//! | UVs on the input mesh (flat or cones, closed; B108, B109) | [`uv_closed`] after [`uniformize_closed`] | exact fold and tiling checks of the written files | — |
+//! | UVs on the input mesh (flat or cones, closed; B108, B109, B111) | [`uv_closed`] after [`uniformize_closed`] | exact fold and tiling checks of the written files | — |
 //!
 //! Each takes a [`Surface`](crate::io::Surface) and typed options (a [`Precision`], whether
 //! to certify) and returns an outcome holding the solve (`u`, the final triangulation and

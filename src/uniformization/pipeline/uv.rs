@@ -4,26 +4,29 @@
 //! (issue 29; proofs: B105, B108, B109).
 //!
 //! The Euclidean flips to `T₀` are recomputed (the solve's deterministic run) and
-//! followed by the solve's Ptolemy flips; the input edges are tracked through all of them
-//! in the input metric ([`track_flips`]), which needs every flipped quadrilateral strictly
-//! convex in the input metric (true of the Euclidean flips; of a Ptolemy flip when its
-//! diagonal is also a geodesic of the input metric). The crossing counts are compared with
-//! the normal coordinates replayed independently (B105). `T_F` is laid out with the final
-//! lengths `e^{(u_i+u_j)/2} ℓ_ij` (binary64); the map is affine on each face of `T_F`.
+//! followed by the solve's Ptolemy flips; the input edges are tracked through the first in
+//! the input metric (B108) and through the second in the Klein picture of the base metric
+//! (B111), then moved to the final metric ([`track_euclidean_then_ptolemy`]). The crossing
+//! counts are compared with the normal coordinates replayed independently (B105). `T_F` is
+//! laid out with the final lengths `e^{(u_i+u_j)/2} ℓ_ij` (binary64); the map is affine on
+//! each face of `T_F`. Along an input edge, the position of a crossing made by a Ptolemy
+//! flip is a parametrization choice (B111), not the flat arc length; the properties claimed
+//! (no fold, each input face tiled, seams) are checked on the written output (B109, B110).
 
 use super::{ClosedOutcome, PipelineError};
 use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
 use crate::io::Surface;
+use crate::overlay::tracking::track_euclidean_then_ptolemy;
 use crate::overlay::tracking::TrackError;
 use crate::overlay::uv::UvError;
-use crate::overlay::{common_refinement, replay_normal_coordinates, track_flips, uv_mesh, UvMesh};
+use crate::overlay::{common_refinement, replay_normal_coordinates, uv_mesh, UvMesh};
 use crate::uniformization::svg::scaled_lengths_f64;
 
 /// The UV mesh of a converged closed-surface outcome of `input` (the surface as given,
 /// whose 3-D positions are written): module documentation. Bad input (no positions, an
 /// input face with a repeated corner) is [`PipelineError::Unsupported`]; a flip sequence
-/// the slice cannot follow (a Ptolemy flip whose diagonal is no geodesic of the input
-/// metric) or a disagreement of the checks is [`PipelineError::NotComputed`].
+/// that cannot be followed (a Euclidean flip refused by rounding, a Klein crossing outside
+/// its diagonal) or a disagreement of the checks is [`PipelineError::NotComputed`].
 pub fn uv_closed(input: &Surface, outcome: &ClosedOutcome) -> Result<UvMesh, PipelineError> {
     let not = |m: String| PipelineError::NotComputed(format!("UV not computed: {m}"));
     let sol = &outcome.solution;
@@ -52,15 +55,23 @@ pub fn uv_closed(input: &Surface, outcome: &ClosedOutcome) -> Result<UvMesh, Pip
             "the Euclidean flips do not reproduce the solve's T₀".into()
         ));
     }
-    let mut flips = rep.sequence;
-    flips.extend_from_slice(&sol.flip_sequence);
-    let tracked = track_flips(&surface.mesh, &lengths, &flips).map_err(|e| match e {
-        TrackError::NotStraight { flip, edge } if flip >= flips.len() - sol.flip_sequence.len() => not(format!(
-            "Ptolemy flip {} (edge {edge}) has a quadrilateral that is not convex in the input metric; positions through such flips (the projective maps) are not computed yet",
-            flip + sol.flip_sequence.len() - flips.len()
+    let n_euclidean = rep.sequence.len();
+    let tracked = track_euclidean_then_ptolemy(
+        &surface.mesh,
+        &lengths,
+        &rep.sequence,
+        &sol.flip_sequence,
+        Some(&sol.u),
+    )
+    .map_err(|e| match e {
+        TrackError::Inconsistent { flip, edge, reason } if flip >= n_euclidean => not(format!(
+            "Ptolemy flip {} (edge {edge}): {reason}",
+            flip - n_euclidean
         )),
         other => not(other.to_string()),
     })?;
+    let mut flips = rep.sequence;
+    flips.extend_from_slice(&sol.flip_sequence);
     if tracked.mesh != sol.mesh {
         return Err(not(
             "the flips do not reproduce the solve's final triangulation".into(),
