@@ -194,6 +194,10 @@ pub struct UniformizeExtra {
     /// the input faces are checked exactly on the written decimals.
     #[arg(long, value_name = "FILE", conflicts_with_all = ["sphere", "hyperbolic"])]
     pub uv: Option<PathBuf>,
+    /// With `--uv`: draw the UV layout of the refinement as SVG to this new file, the pieces
+    /// of the input edges in orange, of the final triangulation's edges in blue, cones red.
+    #[arg(long, value_name = "FILE", requires = "uv")]
+    pub uv_svg: Option<PathBuf>,
     /// Solve in f64 only and skip the refinement and the certificate: the result is
     /// numerical and says so (exit 2, no claim to write).
     #[arg(long, conflicts_with = "output")]

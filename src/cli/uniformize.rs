@@ -83,7 +83,7 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         )));
     }
     if let Some(path) = o.extra.uv.as_deref() {
-        super::uniformize_uv::refuse_existing(path)?;
+        super::uniformize_uv::refuse_existing(path, o.extra.uv_svg.as_deref())?;
     }
     if o.extra.hyperbolic {
         let targets = targets_of(o, n, true, || Targets::flat(n), "")?;
@@ -175,7 +175,8 @@ fn report_closed(
     }
     let mut uv_missing = false;
     if let Some(path) = o.extra.uv.as_deref() {
-        let (line, written) = super::uniformize_uv::write(path, shown, surface, outcome)?;
+        let svg = o.extra.uv_svg.as_deref();
+        let (line, written) = super::uniformize_uv::write(path, svg, shown, surface, outcome)?;
         out.push_str(&line);
         uv_missing = !written;
     }

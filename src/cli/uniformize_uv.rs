@@ -6,7 +6,7 @@
 use super::error::{pipeline_error, CliError};
 use super::files::create_new;
 use penner::io::Surface;
-use penner::overlay::{check_parametrization, check_seams};
+use penner::overlay::{check_parametrization, check_seams, render_uv_svg};
 use penner::uniformization::pipeline::{uv_closed, ClosedOutcome};
 use rug::Rational;
 use std::fmt::Write as _;
@@ -20,10 +20,13 @@ fn sidecar_path(path: &Path) -> PathBuf {
     PathBuf::from(s)
 }
 
-/// Refuse `--uv OUT.obj` before the solve when OUT.obj or OUT.obj.json exists (exit 4, as
-/// the file creation would refuse after it); the creation still refuses a file made since.
-pub fn refuse_existing(path: &Path) -> Result<(), CliError> {
-    for p in [path.to_path_buf(), sidecar_path(path)] {
+/// Refuse `--uv OUT.obj [--uv-svg PIC.svg]` before the solve when OUT.obj, OUT.obj.json or
+/// PIC.svg exists (exit 4, as the file creation would refuse after it); the creation still
+/// refuses a file made since.
+pub fn refuse_existing(path: &Path, svg: Option<&Path>) -> Result<(), CliError> {
+    let mut paths = vec![path.to_path_buf(), sidecar_path(path)];
+    paths.extend(svg.map(Path::to_path_buf));
+    for p in paths {
         if p.exists() {
             return Err(CliError::Write {
                 path: p,
@@ -50,6 +53,7 @@ fn write_all(path: &Path, mut f: std::fs::File, bytes: &[u8]) -> Result<(), CliE
 /// solve and its certificate are still reported (the command then exits 2).
 pub fn write(
     path: &Path,
+    svg: Option<&Path>,
     shown: &str,
     surface: &Surface,
     outcome: &ClosedOutcome,
@@ -105,6 +109,18 @@ pub fn write(
         );
     }
     out.push_str(&seams_line(&obj, outcome)?);
+    if let Some(svg) = svg {
+        let two = Rational::from(2);
+        let cones: Vec<bool> = outcome
+            .solution
+            .targets
+            .over_pi()
+            .iter()
+            .map(|t| *t != two)
+            .collect();
+        super::files::write_new(svg, render_uv_svg(&uv, &cones).as_bytes())?;
+        let _ = writeln!(out, "UV layout drawn to {}", svg.display());
+    }
     Ok((out, true))
 }
 

@@ -24,6 +24,7 @@ pub mod claim;
 pub mod normal_coordinates;
 pub mod refinement;
 pub mod seams;
+pub mod svg;
 pub mod tracking;
 pub mod uv;
 
@@ -31,5 +32,6 @@ pub use check::{check_parametrization, ParametrizationReport};
 pub use normal_coordinates::{replay_normal_coordinates, NormalCoordinates, NormalError};
 pub use refinement::{common_refinement, Refinement, RefinementError};
 pub use seams::{check_seams, SeamReport};
+pub use svg::render_uv_svg;
 pub use tracking::{track_euclidean_then_ptolemy, track_flips, TrackError, TrackedOverlay};
 pub use uv::{uv_mesh, UvError, UvMesh};

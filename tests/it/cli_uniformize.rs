@@ -282,6 +282,70 @@ fn uniformize_no_certify_is_numerical_and_says_so() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stdout));
 }
 
+/// `--uv-svg` draws the refinement's UV layout: the input edges' pieces (orange) and the
+/// final triangulation's (blue) as lines, each of the four cones marked at least once; a
+/// second run refuses the existing picture before the solve (exit 4), and `--uv-svg`
+/// without `--uv` is a usage error.
+#[test]
+fn cli_uniformize_uv_svg_draws_both_edge_sets_and_the_cones() {
+    let d = scratch("uniformize-uv-svg");
+    let surf = octahedron_off(&d, "octahedron", 1.0);
+    let tf = d.join("cones.json");
+    std::fs::write(&tf, "[\"1\", \"1\", \"1\", \"1\", \"2\", \"2\"]").unwrap();
+    let (uv, svg) = (d.join("uv.obj"), d.join("uv.svg"));
+    let args = [
+        "uniformize",
+        &surf,
+        "--targets",
+        tf.to_str().unwrap(),
+        "--uv",
+        uv.to_str().unwrap(),
+        "--uv-svg",
+        svg.to_str().unwrap(),
+    ];
+    let out = penner(&args);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}{}",
+        text(&out.stdout),
+        text(&out.stderr)
+    );
+    let pic = std::fs::read_to_string(&svg).unwrap();
+    let group = |colour: &str| {
+        let start = pic
+            .find(&format!("stroke=\"{colour}\""))
+            .expect("the group");
+        let end = start + pic[start..].find("</g>").unwrap();
+        pic[start..end].matches("<line ").count()
+    };
+    assert!(group("#d07020") > 0 && group("#2050a0") > 0, "{pic}");
+    assert!(pic.matches("<circle ").count() >= 4, "{pic}");
+    // Only the picture exists this time: still refused before the solve.
+    let uv2 = d.join("uv2.obj");
+    let mut args2 = args;
+    let uv2_s = uv2.to_str().unwrap().to_string();
+    args2[5] = &uv2_s;
+    let out = penner(&args2);
+    assert_eq!(out.status.code(), Some(4), "{}", text(&out.stderr));
+    assert!(
+        text(&out.stderr).contains("uv.svg"),
+        "{}",
+        text(&out.stderr)
+    );
+    assert!(text(&out.stdout).is_empty() && !uv2.exists());
+    assert_eq!(std::fs::read_to_string(&svg).unwrap(), pic);
+    let out = penner(&[
+        "uniformize",
+        &surf,
+        "--flat",
+        "--uv-svg",
+        d.join("x.svg").to_str().unwrap(),
+    ]);
+    assert_ne!(out.status.code(), Some(0));
+    assert!(!d.join("x.svg").exists());
+}
+
 /// B109 through the binary: `--uv` writes the refinement and its sidecar as new files, the
 /// exact checks hold on them when re-read, a second run refuses to overwrite (exit 4), and
 /// a surface with boundary is refused as bad input (exit 3).
