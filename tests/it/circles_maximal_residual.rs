@@ -3,7 +3,7 @@
 //! the common-scale starting point of the `f64` Newton solve.
 
 use penner::circles::maximal::hyperbolic::{angle_sums, half_angle_sin_sq, residual_by_rotations};
-use penner::circles::maximal::solve::{common_scale_start, newton_f64, residual};
+use penner::circles::maximal::solve::{common_scale_start, newton_f64, residual, residual_f64};
 use penner::mesh::builders::random_planar;
 use penner::mesh::{Mesh, Vertex};
 use penner::scalar::{Mpfr, Precision, Real};
@@ -183,5 +183,40 @@ fn common_scale_start_brackets_the_root_of_the_summed_residual() {
         sol.residual <= 1e-3 * tol,
         "residual {:e} vs tol {tol:e}",
         sol.residual
+    );
+}
+
+/// The per-vertex parallel `f64` residual sums the same corner angles as the per-face
+/// [`residual`] in another order: B41 bounds the difference of two orders of a sum of `k`
+/// terms by `2(k − 1)·u·Σ|terms|`, here `k = deg + 1` terms (the corners and `2π`) with
+/// `Σ|terms| ≤ 4π`. The control: one interior `u` moved by `10⁻⁹` moves that vertex's
+/// residual far beyond the bound.
+#[test]
+fn b41_parallel_f64_residual_sums_the_same_corner_angles() {
+    let mesh = random_planar(3000, 8).unwrap().mesh;
+    let interior = interior_of(&mesh);
+    let t = radii(&mesh, &interior, 4);
+    let u: Vec<f64> = t.iter().map(|x: &f64| f64::ln(*x)).collect();
+    let (a, b) = (
+        residual_f64(&mesh, &u, &interior),
+        residual(&mesh, &u, &interior),
+    );
+    let verts: Vec<usize> = (0..mesh.n_vertices()).filter(|&v| interior[v]).collect();
+    let unit = f64::EPSILON / 2.0;
+    let bound = |v: usize| {
+        let k = mesh.outgoing(Vertex(v as u32)).count() + 1;
+        2.0 * (k - 1) as f64 * unit * 4.0 * std::f64::consts::PI
+    };
+    for ((&v, x), y) in verts.iter().zip(&a).zip(&b) {
+        assert!((x - y).abs() <= bound(v), "vertex {v}: {x} vs {y}");
+    }
+    let v = verts[verts.len() / 3];
+    let mut moved = u.clone();
+    moved[v] += 1e-9;
+    let c = residual_f64(&mesh, &moved, &interior);
+    let k = verts.iter().position(|&w| w == v).unwrap();
+    assert!(
+        (c[k] - b[k]).abs() > 1e3 * bound(v),
+        "a moved u went unnoticed"
     );
 }

@@ -9,10 +9,10 @@
 //! on its circles ([`super::tangency`]).
 
 use super::hyperbolic::{
-    angle_jacobian_triplets, angle_sums, for_each_angle_jacobian_entry, radii_from_u,
+    angle_jacobian_triplets, angle_sums, corner_angle, for_each_angle_jacobian_entry, radii_from_u,
     residual_by_rotations,
 };
-use crate::mesh::Mesh;
+use crate::mesh::{Mesh, Vertex};
 use crate::scalar::Real;
 use faer::linalg::solvers::Solve;
 use faer::sparse::linalg::solvers::{Llt, SymbolicLlt};
@@ -171,9 +171,33 @@ pub fn residual<T: Real>(mesh: &Mesh, u: &[T], interior: &[bool]) -> Vec<T> {
 /// [`residual_by_rotations`], guided by the `f64` residual at `u` rounded to `f64`.
 fn refinement_residual<T: Real>(mesh: &Mesh, u: &[T], interior: &[bool]) -> Vec<T> {
     let u64: Vec<f64> = u.iter().map(Real::approx_f64).collect();
-    let guide = residual(mesh, &u64, interior);
+    let guide = residual_f64(mesh, &u64, interior);
     let t = radii_from_u(u, interior);
     residual_by_rotations(mesh, &t, interior, &guide)
+}
+
+/// [`residual`] in `f64`, one interior vertex at a time on rayon's thread pool: `2π` minus
+/// the sum of [`corner_angle`] over the vertex's corners in the order of
+/// [`Mesh::outgoing`] (the same terms as [`residual`], summed per vertex instead of per
+/// face; the result does not depend on the number of threads). Needs a simplicial mesh
+/// around the interior vertices, as the maximal packing does.
+pub fn residual_f64(mesh: &Mesh, u: &[f64], interior: &[bool]) -> Vec<f64> {
+    use rayon::prelude::*;
+    let t = radii_from_u(u, interior);
+    let vertices: Vec<usize> = (0..interior.len()).filter(|&v| interior[v]).collect();
+    vertices
+        .par_iter()
+        .map(|&v| {
+            let theta: f64 = mesh
+                .outgoing(Vertex(v as u32))
+                .map(|h| {
+                    let (y, z) = (mesh.tip(h).idx(), mesh.tip(mesh.next(h)).idx());
+                    corner_angle(&t[v], &t[y], &t[z])
+                })
+                .sum();
+            std::f64::consts::TAU - theta
+        })
+        .collect()
 }
 
 fn max_abs<T: Real>(g: &[T]) -> f64 {
@@ -229,7 +253,7 @@ pub fn interior_index(interior: &[bool]) -> Vec<usize> {
 pub fn common_scale_start(mesh: &Mesh, interior: &[bool], hi: f64) -> f64 {
     let s = |c: f64| -> f64 {
         let u: Vec<f64> = interior.iter().map(|&i| if i { c } else { 0.0 }).collect();
-        residual(mesh, &u, interior).iter().sum()
+        residual_f64(mesh, &u, interior).iter().sum()
     };
     let (mut b, mut sb) = (hi, s(hi));
     if sb.is_nan() || sb <= 0.0 {
@@ -295,7 +319,7 @@ pub fn newton_f64(
         .map(|(&x, &i)| if i { x } else { 0.0 })
         .collect();
     let mut assembly = None;
-    let mut g = residual(mesh, &u, interior);
+    let mut g = residual_f64(mesh, &u, interior);
     let mut previous = f64::INFINITY;
     for it in 0..=max_iter {
         let res = max_abs(&g);
@@ -329,7 +353,7 @@ pub fn newton_f64(
                 }
             }
             if ok {
-                let gt = residual(mesh, &trial, interior);
+                let gt = residual_f64(mesh, &trial, interior);
                 if norm2(&gt) < g_norm {
                     accepted = Some((trial, gt));
                     break;
