@@ -26,6 +26,7 @@ pub mod repair;
 pub mod soup;
 pub mod strict_json;
 pub mod surface;
+pub mod svg;
 mod text;
 pub mod write;
 

@@ -13,6 +13,7 @@
 
 use super::refinement::FacePlace;
 use super::uv::UvMesh;
+use crate::io::svg::SvgFrame;
 use std::collections::HashSet;
 use std::fmt::Write as _;
 
@@ -59,31 +60,11 @@ fn close(out: &mut String, input_pieces: &str, final_pieces: &str, marks: &str, 
 /// `y` up; `cones[v]` marks input vertex `v` as a cone (an input vertex is refinement
 /// vertex `v`, the input vertices coming first).
 pub fn render_uv_svg(uv: &UvMesh, cones: &[bool]) -> String {
-    let (mut x0, mut y0, mut x1, mut y1) = (f64::MAX, f64::MAX, f64::MIN, f64::MIN);
-    for p in uv.uv.iter().flatten() {
-        x0 = x0.min(p[0]);
-        y0 = y0.min(p[1]);
-        x1 = x1.max(p[0]);
-        y1 = y1.max(p[1]);
-    }
-    if x0 > x1 || !(x1 - x0).is_finite() || !(y1 - y0).is_finite() {
-        (x0, y0, x1, y1) = (0.0, 0.0, 1.0, 1.0);
-    }
-    let span = (x1 - x0).max(y1 - y0).max(f64::MIN_POSITIVE);
-    let s = 760.0 / span;
-    let (w, h) = (s * (x1 - x0) + 40.0, s * (y1 - y0) + 40.0);
-    let tx = |p: [f64; 2]| (20.0 + s * (p[0] - x0), h - 20.0 - s * (p[1] - y0));
+    let frame = SvgFrame::of(uv.uv.iter().flatten());
+    let tx = |p: [f64; 2]| frame.px(p);
     let n = uv.refinement.triangles.len().max(1) as f64;
     let stroke = 0.6f64.min(150.0 / n.sqrt());
-    let mut out = String::new();
-    let _ = writeln!(
-        out,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w:.0}" height="{h:.0}" viewBox="0 0 {w:.2} {h:.2}">"#
-    );
-    let _ = writeln!(
-        out,
-        r##"<rect width="100%" height="100%" fill="#ffffff"/>"##
-    );
+    let mut out = frame.header();
     let mut input_pieces = String::new();
     let mut final_pieces = String::new();
     let mut marks = String::new();

@@ -4,6 +4,7 @@
 //! edges in blue.
 
 use super::layout::{unproved_faces, Layout};
+use crate::io::svg::SvgFrame;
 use crate::mesh::Mesh;
 use std::fmt::Write as _;
 
@@ -25,30 +26,11 @@ pub fn scaled_lengths_f64(mesh: &Mesh, base: &[f64], u: &[f64]) -> Vec<f64> {
 pub fn render_layout_svg(mesh: &Mesh, layout: &Layout) -> String {
     let folded: std::collections::HashSet<u32> =
         unproved_faces(mesh, layout).iter().map(|f| f.0).collect();
-    let (mut x0, mut y0, mut x1, mut y1) = (f64::MAX, f64::MAX, f64::MIN, f64::MIN);
-    for p in layout.corner.iter().flatten() {
-        x0 = x0.min(p[0]);
-        y0 = y0.min(p[1]);
-        x1 = x1.max(p[0]);
-        y1 = y1.max(p[1]);
-    }
-    if x0 > x1 || !(x1 - x0).is_finite() || !(y1 - y0).is_finite() {
-        (x0, y0, x1, y1) = (0.0, 0.0, 1.0, 1.0);
-    }
-    let span = (x1 - x0).max(y1 - y0).max(f64::MIN_POSITIVE);
-    let s = 760.0 / span;
-    let (w, h) = (s * (x1 - x0) + 40.0, s * (y1 - y0) + 40.0);
-    let tx = |p: [f64; 2]| (20.0 + s * (p[0] - x0), h - 20.0 - s * (p[1] - y0));
+    let frame = SvgFrame::of(layout.corner.iter().flatten());
+    let span = frame.span;
+    let tx = |p: [f64; 2]| frame.px(p);
     let stroke = (0.5f64).min(200.0 / (mesh.n_faces().max(1) as f64).sqrt());
-    let mut out = String::new();
-    let _ = writeln!(
-        out,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w:.0}" height="{h:.0}" viewBox="0 0 {w:.2} {h:.2}">"#
-    );
-    let _ = writeln!(
-        out,
-        r##"<rect width="100%" height="100%" fill="#ffffff"/>"##
-    );
+    let mut out = frame.header();
     for f in mesh.faces() {
         let Some(c) = layout.face_corners(mesh, f) else {
             continue;
