@@ -83,3 +83,31 @@ pub fn sign_beyond<T: Real>(x: &T, tol: f64, shift: u32) -> Option<Sign> {
         Sign::Zero
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{abs_at_most, sign_beyond};
+    use crate::scalar::Sign;
+
+    /// The contract of [`sign_beyond`] on its tolerance: a negative, NaN or infinite `tol`
+    /// decides nothing (`None`). A negative tolerance accepted would call `0` positive
+    /// against `−1`: a sign claimed without the margin the caller's bound needs.
+    #[test]
+    fn sign_beyond_refuses_tolerances_that_are_not_finite_and_nonnegative() {
+        assert_eq!(sign_beyond(&0.0_f64, -1.0, 0), None);
+        assert_eq!(sign_beyond(&0.0_f64, f64::NAN, 0), None);
+        assert_eq!(sign_beyond(&0.0_f64, f64::INFINITY, 0), None);
+        assert_eq!(sign_beyond(&0.0_f64, 1.0, 0), Some(Sign::Zero));
+        assert_eq!(sign_beyond(&2.0_f64, 1.0, 0), Some(Sign::Positive));
+        assert_eq!(sign_beyond(&-2.0_f64, 1.0, 1), Some(Sign::Negative));
+    }
+
+    /// [`abs_at_most`] decides both ways, and at the tolerance itself (`|x| = tol`) it holds.
+    #[test]
+    fn abs_at_most_decides_both_ways_and_holds_at_the_tolerance() {
+        assert_eq!(abs_at_most(&-0.5_f64, 0.5), Some(true));
+        assert_eq!(abs_at_most(&0.75_f64, 0.5), Some(false));
+        assert_eq!(abs_at_most(&0.0_f64, 0.0), Some(true));
+        assert_eq!(abs_at_most(&f64::INFINITY, 1.0), None);
+    }
+}
