@@ -102,6 +102,16 @@ mod tests {
         assert_eq!(sign_beyond(&-2.0_f64, 1.0, 1), Some(Sign::Negative));
     }
 
+    /// At `|x| = tol·2⁻ˢ` exactly the sign is not decided: the computed value may be `tol`
+    /// away from an exact zero. Deciding it there would claim a sign the bound does not give.
+    #[test]
+    fn sign_beyond_leaves_the_ties_at_the_tolerance_undecided() {
+        assert_eq!(sign_beyond(&1.0_f64, 1.0, 0), Some(Sign::Zero));
+        assert_eq!(sign_beyond(&-1.0_f64, 1.0, 0), Some(Sign::Zero));
+        assert_eq!(sign_beyond(&0.25_f64, 1.0, 2), Some(Sign::Zero));
+        assert_eq!(sign_beyond(&0.5_f64, 1.0, 2), Some(Sign::Positive));
+    }
+
     /// [`abs_at_most`] decides both ways, and at the tolerance itself (`|x| = tol`) it holds.
     #[test]
     fn abs_at_most_decides_both_ways_and_holds_at_the_tolerance() {
