@@ -234,3 +234,53 @@ fn b67_bad_scale_factors_are_typed_errors() {
         DelaunayError::LengthCount { .. }
     ));
 }
+
+/// B67, rung by rung: on exponent-apart lengths (`e^{±700}` and `e^{1.5}` at every vertex,
+/// shapes well away from a tie), the `f64` filter on the shifted images, the MPFR-256
+/// enclosure and the exact rung each decide, and each gives malachite's sign of `P` on
+/// the exact lengths (a second exact backend). A rung that answered `None` would let the
+/// ladder fall through unnoticed; a shift by a wrong exponent would leave the filter's
+/// range at `e^{±700}`. The control: the oracle tells the thin rhombus (negative) from the
+/// fat one (positive), so the three answers are not one constant.
+#[test]
+fn b67_each_rung_of_the_exponent_apart_predicate_agrees_with_malachite() {
+    use crate::delaunay::oracle;
+    use penner::predicates::delaunay::Quad;
+    use penner::predicates::delaunay_exp::ExpQuad;
+    use penner::predicates::ladder::SignPredicate;
+    use penner::scalar::{Precision, Sign};
+    let shapes: [[f64; 5]; 3] = [
+        [1.9, 1.0, 1.0, 1.0, 1.0],
+        [1.0, 1.0, 1.0, 1.0, 1.0],
+        [1.2, 1.0, 0.9, 1.1, 0.8],
+    ];
+    let mut seen = Vec::new();
+    for x in shapes {
+        for (ui, uj) in [(700.0, 700.0), (-700.0, -650.0), (0.0, 3.0)] {
+            let l: Vec<ExpLength> = x
+                .iter()
+                .map(|&v| ExpLength::scaled(v, ui, uj).unwrap())
+                .collect();
+            let q = Quad {
+                ij: l[0].clone(),
+                jk: l[1].clone(),
+                ki: l[2].clone(),
+                il: l[3].clone(),
+                lj: l[4].clone(),
+            };
+            let m = exact_of(&l);
+            let want = oracle([&m[0], &m[1], &m[2], &m[3], &m[4]]);
+            let p = ExpQuad(q.as_refs());
+            let what = format!("{x:?} scaled by ({ui}, {uj})");
+            assert_eq!(p.exact_sign(), Some(want), "exact rung, {what}");
+            let prec = Precision::new(256).unwrap();
+            assert_eq!(p.enclosure_sign(prec), Some(want), "enclosure rung, {what}");
+            assert_eq!(p.filter(), Some(want), "filter rung, {what}");
+            seen.push(want);
+        }
+    }
+    assert!(
+        seen.contains(&Sign::Negative) && seen.contains(&Sign::Positive),
+        "{seen:?}"
+    );
+}
