@@ -262,11 +262,11 @@ fn b67_each_rung_of_the_exponent_apart_predicate_agrees_with_malachite() {
                 .map(|&v| ExpLength::scaled(v, ui, uj).unwrap())
                 .collect();
             let q = Quad {
-                ij: l[0].clone(),
-                jk: l[1].clone(),
-                ki: l[2].clone(),
-                il: l[3].clone(),
-                lj: l[4].clone(),
+                ij: l[0],
+                jk: l[1],
+                ki: l[2],
+                il: l[3],
+                lj: l[4],
             };
             let m = exact_of(&l);
             let want = oracle([&m[0], &m[1], &m[2], &m[3], &m[4]]);
