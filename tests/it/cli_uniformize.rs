@@ -282,6 +282,14 @@ fn uniformize_no_certify_is_numerical_and_says_so() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stdout));
 }
 
+/// The octahedron as OFF in `d` and a targets file with four cones of π (vertices 0–3).
+fn octahedron_with_four_cones(d: &std::path::Path) -> (String, std::path::PathBuf) {
+    let surf = octahedron_off(d, "octahedron", 1.0);
+    let tf = d.join("cones.json");
+    std::fs::write(&tf, "[\"1\", \"1\", \"1\", \"1\", \"2\", \"2\"]").unwrap();
+    (surf, tf)
+}
+
 /// `--uv-svg` draws the refinement's UV layout: the input edges' pieces (orange) and the
 /// final triangulation's (blue) as lines, each of the four cones marked at least once; a
 /// second run refuses the existing picture before the solve (exit 4), and `--uv-svg`
@@ -289,9 +297,7 @@ fn uniformize_no_certify_is_numerical_and_says_so() {
 #[test]
 fn cli_uniformize_uv_svg_draws_both_edge_sets_and_the_cones() {
     let d = scratch("uniformize-uv-svg");
-    let surf = octahedron_off(&d, "octahedron", 1.0);
-    let tf = d.join("cones.json");
-    std::fs::write(&tf, "[\"1\", \"1\", \"1\", \"1\", \"2\", \"2\"]").unwrap();
+    let (surf, tf) = octahedron_with_four_cones(&d);
     let (uv, svg) = (d.join("uv.obj"), d.join("uv.svg"));
     let args = [
         "uniformize",
@@ -352,9 +358,7 @@ fn cli_uniformize_uv_svg_draws_both_edge_sets_and_the_cones() {
 #[test]
 fn b109_cli_uniformize_uv_writes_new_files_that_check() {
     let d = scratch("uniformize-uv");
-    let surf = octahedron_off(&d, "octahedron", 1.0);
-    let tf = d.join("cones.json");
-    std::fs::write(&tf, "[\"1\", \"1\", \"1\", \"1\", \"2\", \"2\"]").unwrap();
+    let (surf, tf) = octahedron_with_four_cones(&d);
     let uv = d.join("uv.obj");
     let args = [
         "uniformize",
