@@ -77,9 +77,9 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
     let shown = o.path.display().to_string();
     let surface = into_surface(load_flip_case(o.path)?);
     let n = surface.mesh.n_vertices();
-    if o.extra.uv.is_some() && !surface.mesh.is_closed() {
+    if o.extra.uv.is_some() && (o.extra.sphere || o.extra.hyperbolic) {
         return Err(CliError::Input(format!(
-            "{shown}: --uv is for closed surfaces (flat or cone targets) only, for now"
+            "{shown}: --uv is for flat or cone targets (closed or with boundary), not --sphere or --hyperbolic"
         )));
     }
     if let Some(path) = o.extra.uv.as_deref() {
@@ -100,7 +100,7 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
         let targets = targets_of(o, n, false, || flat_with_even_boundary(&surface.mesh), "the target angles are required: --targets FILE (a JSON array: Θ_v/π at interior vertices, φ_v/π at boundary vertices) or --flat")?;
         let outcome = uniformize_boundary(&surface, targets.as_ref(), &options)
             .map_err(|e| pipeline_error(&shown, &e))?;
-        return super::uniformize_boundary::report(&shown, &outcome, o);
+        return super::uniformize_boundary::report(&shown, &surface, &outcome, o);
     }
     let targets = targets_of(
         o,
@@ -176,7 +176,8 @@ fn report_closed(
     let mut uv_missing = false;
     if let Some(path) = o.extra.uv.as_deref() {
         let svg = o.extra.uv_svg.as_deref();
-        let (line, written) = super::uniformize_uv::write(path, svg, shown, surface, outcome)?;
+        let source = super::uniformize_uv::closed(surface, outcome);
+        let (line, written) = super::uniformize_uv::write(path, svg, shown, source)?;
         out.push_str(&line);
         uv_missing = !written;
     }

@@ -14,6 +14,7 @@ use std::path::Path;
 /// where asked.
 pub fn report(
     shown: &str,
+    surface: &penner::io::Surface,
     outcome: &BoundaryOutcome,
     o: &super::uniformize_options::Options<'_>,
 ) -> Result<u8, CliError> {
@@ -63,6 +64,14 @@ pub fn report(
     if let Some(path) = o.extra.svg.as_deref() {
         out.push_str(&write_svg(path, outcome)?);
     }
+    let mut uv_missing = false;
+    if let Some(path) = o.extra.uv.as_deref() {
+        let source = super::uniformize_uv::boundary(surface, outcome);
+        let svg = o.extra.uv_svg.as_deref();
+        let (line, written) = super::uniformize_uv::write(path, svg, shown, source)?;
+        out.push_str(&line);
+        uv_missing = !written;
+    }
     let Some(c) = &outcome.certification else {
         out.push_str(&super::uniformize_options::numerical_line(sol.residual_max));
         super::files::emit(&out)?;
@@ -96,7 +105,11 @@ pub fn report(
         },
     )?;
     super::files::emit(&out)?;
-    Ok(status)
+    Ok(if uv_missing {
+        status.max(code::UNDECIDED)
+    } else {
+        status
+    })
 }
 
 /// The seam lines of the report: intact or flipped, symmetric triangulation, and the

@@ -1,13 +1,18 @@
-//! `penner uniformize … --uv OUT.obj` for closed flat and cone targets: the common
-//! refinement of the input mesh and the final triangulation with texture coordinates
-//! (`uniformization::pipeline::uv_closed`), written with its sidecar `OUT.obj.json`, both
+//! `penner uniformize … --uv OUT.obj` for flat and cone targets: the common refinement of
+//! the input mesh and the final triangulation with texture coordinates
+//! (`uniformization::pipeline::uv_closed`, or `uv_boundary` on copy 1 of the double of a
+//! surface with boundary), written with its sidecar `OUT.obj.json`, both
 //! new files; the exact checks (`overlay::check_parametrization`) run on the written text.
 
 use super::error::{pipeline_error, CliError};
 use super::files::create_new;
 use penner::io::Surface;
+use penner::mesh::double::Sheet;
+use penner::overlay::UvMesh;
 use penner::overlay::{check_parametrization, check_seams, render_uv_svg};
-use penner::uniformization::pipeline::{uv_closed, ClosedOutcome};
+use penner::uniformization::pipeline::{
+    uv_boundary, uv_closed, BoundaryOutcome, ClosedOutcome, PipelineError,
+};
 use rug::Rational;
 use std::fmt::Write as _;
 use std::io::Write as _;
@@ -47,18 +52,59 @@ fn write_all(path: &Path, mut f: std::fs::File, bytes: &[u8]) -> Result<(), CliE
         })
 }
 
-/// Compute, write and check the UV mesh of `outcome` (of the input `surface`); the lines
-/// to report and whether the files were written. Bad input is an error; a UV mesh penner
-/// could not compute (e.g. a Klein crossing lost to rounding, B111) is a line, so the
-/// solve and its certificate are still reported (the command then exits 2).
+/// What the CLI needs besides the UV mesh: which input vertices to mark as cones, and
+/// whether the seam check applies (every cone angle around which the layout may be cut is
+/// a multiple of π/2).
+pub struct UvSource {
+    /// The UV mesh, or why the pipeline did not compute it.
+    pub uv: Result<UvMesh, PipelineError>,
+    /// Per input vertex: drawn as a cone.
+    pub cones: Vec<bool>,
+    /// Whether the seams are checked (B110).
+    pub quarter: bool,
+}
+
+/// The UV source of a closed-surface outcome ([`uv_closed`]).
+pub fn closed(surface: &Surface, outcome: &ClosedOutcome) -> UvSource {
+    let t = outcome.solution.targets.over_pi();
+    UvSource {
+        uv: uv_closed(surface, outcome),
+        cones: t.iter().map(|t| *t != 2).collect(),
+        quarter: t.iter().all(|t| Rational::from(t * 2u32).is_integer()),
+    }
+}
+
+/// The UV source of a surface with boundary ([`uv_boundary`], copy 1 of the double): the
+/// cones are the input's vertices whose angle on the double is not 2π (interior cones and
+/// boundary corners); the seams are checked when every interior cone angle, and, if a seam
+/// edge was flipped, every boundary one, is a multiple of π/2.
+pub fn boundary(surface: &Surface, outcome: &BoundaryOutcome) -> UvSource {
+    let b = &outcome.boundary;
+    let t = b.solution.targets.over_pi();
+    let n = outcome.surface.mesh.n_vertices();
+    let flipped = !b.seam_flips.is_empty();
+    UvSource {
+        uv: uv_boundary(surface, outcome),
+        cones: t.iter().take(n).map(|t| *t != 2).collect(),
+        quarter: t
+            .iter()
+            .zip(&b.double.vertex_sheet)
+            .filter(|(_, s)| **s == Sheet::Original || flipped)
+            .all(|(t, _)| Rational::from(t * 2u32).is_integer()),
+    }
+}
+
+/// Write and check the UV mesh of `source`; the lines to report and whether the files were
+/// written. Bad input is an error; a UV mesh penner could not compute (e.g. a Klein
+/// crossing lost to rounding, B111) is a line, so the solve and its certificate are still
+/// reported (the command then exits 2).
 pub fn write(
     path: &Path,
     svg: Option<&Path>,
     shown: &str,
-    surface: &Surface,
-    outcome: &ClosedOutcome,
+    source: UvSource,
 ) -> Result<(String, bool), CliError> {
-    let uv = match uv_closed(surface, outcome) {
+    let uv = match source.uv {
         Ok(uv) => uv,
         Err(e) if e.is_bad_input() => return Err(pipeline_error(shown, &e)),
         Err(e) => return Ok((format!("{shown}: {e}; no UV mesh written\n"), false)),
@@ -108,30 +154,16 @@ pub fn write(
             report.untiled_faces.len()
         );
     }
-    out.push_str(&seams_line(&obj, outcome)?);
+    out.push_str(&seams_line(&obj, source.quarter)?);
     if let Some(svg) = svg {
-        let two = Rational::from(2);
-        let cones: Vec<bool> = outcome
-            .solution
-            .targets
-            .over_pi()
-            .iter()
-            .map(|t| *t != two)
-            .collect();
-        super::files::write_new(svg, render_uv_svg(&uv, &cones).as_bytes())?;
+        super::files::write_new(svg, render_uv_svg(&uv, &source.cones).as_bytes())?;
         let _ = writeln!(out, "UV layout drawn to {}", svg.display());
     }
     Ok((out, true))
 }
 
-/// The seam check's line (B110) when every cone angle is a multiple of π/2.
-fn seams_line(obj: &str, outcome: &ClosedOutcome) -> Result<String, CliError> {
-    let quarter = outcome
-        .solution
-        .targets
-        .over_pi()
-        .iter()
-        .all(|t| Rational::from(t * 2u32).is_integer());
+/// The seam check's line (B110) when every cone angle is a multiple of π/2 (`quarter`).
+fn seams_line(obj: &str, quarter: bool) -> Result<String, CliError> {
     if !quarter {
         return Ok("seams not checked: not every cone angle is a multiple of π/2\n".into());
     }

@@ -16,7 +16,8 @@
 //! - [`seams`]: the exact seam check: rotations by multiples of π/2 within `ε` (B110).
 //! - [`claim`]: the claim kind `parametrization`, answered by those checks.
 //!
-//! Not computed yet: surfaces with boundary. Along an input edge, positions made by
+//! A surface with boundary is refined on its double and restricted to copy 1
+//! ([`Refinement::restricted_to_input_faces`]). Along an input edge, positions made by
 //! Ptolemy flips are a parametrization choice (B111), not the flat arc length.
 
 pub mod check;

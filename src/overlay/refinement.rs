@@ -153,6 +153,54 @@ pub fn common_refinement(
     })
 }
 
+impl Refinement {
+    /// The part of the refinement lying in the input faces `0..n_faces`, with its vertices
+    /// renumbered: the input vertices `0..n_vertices` keep their ids, then come the
+    /// crossings that a kept triangle uses, in their order here. On the double of a
+    /// surface with boundary (B78: copy 1 keeps the ids of `M`) this is the refinement of
+    /// `M`, since a face of copy 1 has only vertices `< V` and edges `< E` of `M`.
+    /// `None` when a kept triangle uses an input vertex `≥ n_vertices`.
+    pub fn restricted_to_input_faces(&self, n_faces: usize, n_vertices: usize) -> Option<Self> {
+        let kept: Vec<RefinedTriangle> = self
+            .triangles
+            .iter()
+            .filter(|t| t.input_face.idx() < n_faces)
+            .copied()
+            .collect();
+        let mut used = vec![false; self.vertices.len()];
+        for t in &kept {
+            for v in t.vertices {
+                used[v as usize] = true;
+            }
+        }
+        let mut new_id = vec![u32::MAX; self.vertices.len()];
+        let mut vertices = Vec::new();
+        for (k, v) in self.vertices.iter().enumerate() {
+            let keep = match v {
+                RefinedVertex::Input(w) if w.idx() < n_vertices => true,
+                RefinedVertex::Input(_) if used[k] => return None,
+                RefinedVertex::Input(_) => false,
+                RefinedVertex::Crossing { .. } => used[k],
+            };
+            if keep {
+                new_id[k] = vertices.len() as u32;
+                vertices.push(*v);
+            }
+        }
+        let triangles = kept
+            .into_iter()
+            .map(|t| RefinedTriangle {
+                vertices: t.vertices.map(|v| new_id[v as usize]),
+                ..t
+            })
+            .collect();
+        Some(Self {
+            vertices,
+            triangles,
+        })
+    }
+}
+
 /// The triangles of face `f` of `T_F`, appended to `out`.
 fn face_cells(
     input: &Mesh,

@@ -1,8 +1,10 @@
 //! Texture coordinates on the refinement and the files that carry them (proof: B109).
 //!
-//! `T_F` is laid out with its final lengths by unfolding along a dual spanning tree: the
-//! surface is cut along the edges outside the tree, a cut graph through every vertex and
-//! so through every cone, and each face gets its own three corners. A refinement vertex
+//! `T_F` is laid out with its final lengths by unfolding along a dual spanning tree of the
+//! faces that hold a triangle of the refinement (all of them, or those a part such as copy
+//! 1 of a double meets): the surface is cut along the edges outside the tree, a cut graph
+//! through every vertex and so through every cone, and each face gets its own three
+//! corners. A refinement vertex
 //! in a face of `T_F` gets the point of that face's layout at its place, linearly:
 //! a corner `p_r`, or `(1 − τ) p_r + τ p_{r+1}` on side `c_r`. The map is affine on each
 //! face of `T_F` (exact for the final flat metric there) and, since every cell is convex
@@ -72,7 +74,21 @@ pub fn uv_mesh(
     if input_positions.len() != input.n_vertices() {
         return Err(UvError::NoPositions);
     }
-    let lay = unfold_faces(final_mesh, final_lengths, Face(0), |_| true);
+    // The faces of `T_F` holding a triangle (all of them for a whole refinement; for a
+    // restricted one, e.g. copy 1 of a double, those it meets), unfolded from `f0` when it
+    // is one of them, else from the first triangle's face.
+    let mut held = vec![false; final_mesh.n_faces()];
+    for t in &refinement.triangles {
+        if let Some(h) = held.get_mut(t.final_face.idx()) {
+            *h = true;
+        }
+    }
+    let root = match refinement.triangles.first() {
+        Some(_) if held.first() == Some(&true) => Face(0),
+        Some(t) => t.final_face,
+        None => Face(0),
+    };
+    let lay = unfold_faces(final_mesh, final_lengths, root, |f| held[f.idx()]);
     let mut uv = Vec::with_capacity(refinement.triangles.len());
     let mut barycentric = Vec::with_capacity(refinement.triangles.len());
     for tri in &refinement.triangles {

@@ -353,8 +353,9 @@ fn cli_uniformize_uv_svg_draws_both_edge_sets_and_the_cones() {
 }
 
 /// B109 through the binary: `--uv` writes the refinement and its sidecar as new files, the
-/// exact checks hold on them when re-read, a second run refuses to overwrite (exit 4), and
-/// a surface with boundary is refused as bad input (exit 3).
+/// exact checks hold on them when re-read, a second run refuses to overwrite (exit 4), a
+/// surface with boundary gets the UVs of copy 1 of its double, and `--uv` with `--sphere`
+/// is refused as bad input (exit 3).
 #[test]
 fn b109_cli_uniformize_uv_writes_new_files_that_check() {
     let d = scratch("uniformize-uv");
@@ -405,16 +406,40 @@ fn b109_cli_uniformize_uv_writes_new_files_that_check() {
         text(&out.stderr)
     );
     assert!(!other.exists() && text(&out.stdout).is_empty());
-    // A disk: one triangle with boundary.
+    // A disk, one triangle with boundary: UVs of copy 1 of its double, checked on the
+    // written files (the triangle's own shape, flat with its three corners as boundary
+    // corners).
     let disk = d.join("disk.off");
     std::fs::write(&disk, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n").unwrap();
+    let disk_uv = d.join("disk.obj");
     let out = penner(&[
         "uniformize",
         disk.to_str().unwrap(),
         "--flat",
         "--uv",
-        d.join("disk.obj").to_str().unwrap(),
+        disk_uv.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}{}",
+        text(&out.stdout),
+        text(&out.stderr)
+    );
+    let obj = std::fs::read_to_string(&disk_uv).unwrap();
+    let side: Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("disk.obj.json")).unwrap()).unwrap();
+    let report = penner::overlay::check_parametrization(&obj, &side).unwrap();
+    assert!(report.holds() && report.triangles == 1, "{report:?}");
+    // --uv with the sphere target is a usage error (exit 3), before any file is made.
+    let out = penner(&[
+        "uniformize",
+        &surf,
+        "--sphere",
+        "--uv",
+        d.join("sphere.obj").to_str().unwrap(),
     ]);
     assert_eq!(out.status.code(), Some(3), "{}", text(&out.stderr));
+    assert!(!d.join("sphere.obj").exists());
     assert!(text(&out.stderr).contains("--uv"), "{}", text(&out.stderr));
 }

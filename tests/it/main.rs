@@ -57,6 +57,7 @@ mod meshgen;
 mod never_fails;
 mod oracle;
 mod overlay;
+mod overlay_boundary;
 mod overlay_klein;
 mod planar_gen;
 mod predicates_planar;

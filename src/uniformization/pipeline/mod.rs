@@ -7,7 +7,7 @@
 //! | with boundary (B79) | [`uniformize_boundary`] | B71 on the double, for the input's exact metric pulled back | `uniformization` (the double) |
 //! | the sphere (B74–B76) | [`uniformize_sphere`] | B76 on the disk, for the input's exact metric | `sphere_uniformization` |
 //! | hyperbolic (B38, B39, B87) | [`uniformize_hyperbolic`] | B39 on the binary64 lengths | `hyperbolic_uniformization` |
-//! | UVs on the input mesh (flat or cones, closed; B108, B109, B111) | [`uv_closed`] after [`uniformize_closed`] | exact fold and tiling checks of the written files | — |
+//! | UVs on the input mesh (flat or cones; B108, B109, B111) | [`uv_closed`] after [`uniformize_closed`], [`uv_boundary`] (copy 1 of the double) after [`uniformize_boundary`] | exact fold and tiling checks of the written files | — |
 //!
 //! Each takes a [`Surface`](crate::io::Surface) and typed options (a [`Precision`], whether
 //! to certify) and returns an outcome holding the solve (`u`, the final triangulation and
@@ -26,7 +26,7 @@ pub use boundary::{double_surface, uniformize_boundary, BoundaryOutcome, SvgLayo
 pub use closed::{certify_solution, uniformize_closed, Certification, ClosedOutcome};
 pub use hyperbolic::{uniformize_hyperbolic, HyperbolicOutcome};
 pub use sphere::{uniformize_sphere, SphereOutcome};
-pub use uv::uv_closed;
+pub use uv::{uv_boundary, uv_closed};
 
 use crate::io::Surface;
 use crate::scalar::Real;

@@ -13,13 +13,15 @@
 //! flip is a parametrization choice (B111), not the flat arc length; the properties claimed
 //! (no fold, each input face tiled, seams) are checked on the written output (B109, B110).
 
-use super::{ClosedOutcome, PipelineError};
+use super::{BoundaryOutcome, ClosedOutcome, PipelineError};
 use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
 use crate::io::Surface;
+use crate::mesh::Mesh;
 use crate::overlay::tracking::track_euclidean_then_ptolemy;
 use crate::overlay::tracking::TrackError;
 use crate::overlay::uv::UvError;
-use crate::overlay::{common_refinement, replay_normal_coordinates, uv_mesh, UvMesh};
+use crate::overlay::{common_refinement, replay_normal_coordinates, uv_mesh, Refinement, UvMesh};
+use crate::uniformization::newton::Uniformization;
 use crate::uniformization::svg::scaled_lengths_f64;
 
 /// The UV mesh of a converged closed-surface outcome of `input` (the surface as given,
@@ -28,22 +30,98 @@ use crate::uniformization::svg::scaled_lengths_f64;
 /// that cannot be followed (a Euclidean flip refused by rounding, a Klein crossing outside
 /// its diagonal) or a disagreement of the checks is [`PipelineError::NotComputed`].
 pub fn uv_closed(input: &Surface, outcome: &ClosedOutcome) -> Result<UvMesh, PipelineError> {
-    let not = |m: String| PipelineError::NotComputed(format!("UV not computed: {m}"));
+    let positions = positions_f64(input)?;
+    let surface = &outcome.surface;
+    let lengths = surface.lengths::<f64>(());
+    let (refinement, final_lengths) =
+        refinement_of_solve(&surface.mesh, &lengths, &outcome.solution)?;
     let sol = &outcome.solution;
-    if !sol.converged() {
-        return Err(not("the solve did not converge".into()));
-    }
-    let positions: Vec<[f64; 3]> = input
+    uv_mesh(
+        &surface.mesh,
+        &positions,
+        &sol.mesh,
+        &final_lengths,
+        refinement,
+    )
+    .map_err(uv_error)
+}
+
+/// The UV mesh of a converged outcome of `input`, a surface with boundary, on copy 1 of
+/// the double (issue 29: "the UVs are those of copy 1"). The common refinement is built on
+/// the double `D` exactly as for a closed surface (its input triangulation is `D` before
+/// any flip), then restricted to the faces `0..F` of copy 1, which keep the ids of the
+/// input's faces, edges and vertices (B78); the part of `T_F` they meet is laid out alone.
+/// When no seam edge was flipped that part is copy 1 of `T_F`, and on a disk with flat
+/// interior it is one chart; otherwise its cut edges are reported by the seam check. The
+/// written ids (faces, edges, vertices) are the input's; the final faces and edges in the
+/// sidecar are those of the double's final triangulation.
+pub fn uv_boundary(input: &Surface, outcome: &BoundaryOutcome) -> Result<UvMesh, PipelineError> {
+    let not = |m: &str| PipelineError::NotComputed(format!("UV not computed: {m}"));
+    let positions = positions_f64(input)?;
+    let b = &outcome.boundary;
+    let d = &b.double;
+    let m = &outcome.surface.mesh;
+    let double_positions: Vec<[f64; 3]> = d
+        .vertex_origin
+        .iter()
+        .map(|v| positions.get(v.idx()).copied())
+        .collect::<Option<_>>()
+        .ok_or_else(|| not("the double's vertices do not match the input's"))?;
+    let lengths = d
+        .pull_back_edges(&outcome.surface.lengths::<f64>(()))
+        .ok_or_else(|| not("the lengths could not be pulled back to the double"))?;
+    let (refinement, final_lengths) = refinement_of_solve(&d.mesh, &lengths, &b.solution)?;
+    let copy_1 = refinement
+        .restricted_to_input_faces(m.n_faces(), m.n_vertices())
+        .ok_or_else(|| not("a triangle of copy 1 lies on a mirror vertex"))?;
+    let mut uv = uv_mesh(
+        &d.mesh,
+        &double_positions,
+        &b.solution.mesh,
+        &final_lengths,
+        copy_1,
+    )
+    .map_err(uv_error)?;
+    uv.input_faces = m.n_faces();
+    Ok(uv)
+}
+
+/// The input's vertex positions in binary64 (for the written `v` lines).
+fn positions_f64(input: &Surface) -> Result<Vec<[f64; 3]>, PipelineError> {
+    Ok(input
         .positions
         .as_ref()
         .ok_or_else(|| PipelineError::Unsupported(UvError::NoPositions.to_string()))?
         .iter()
         .map(|p| [p[0].to_f64(), p[1].to_f64(), p[2].to_f64()])
-        .collect();
-    let surface = &outcome.surface;
-    let lengths = surface.lengths::<f64>(());
-    let mut t0 = surface.mesh.clone();
-    let mut l = lengths.clone();
+        .collect())
+}
+
+/// A layout error: bad input or not computed.
+fn uv_error(e: UvError) -> PipelineError {
+    match e {
+        UvError::NoPositions | UvError::RepeatedCorner(_) => {
+            PipelineError::Unsupported(e.to_string())
+        }
+        other => PipelineError::NotComputed(format!("UV not computed: {other}")),
+    }
+}
+
+/// The common refinement of `mesh` (lengths `lengths`, binary64, as the solve read them)
+/// and the final triangulation of the converged solve `sol`, and the final lengths
+/// `e^{(u_i+u_j)/2} ℓ_ij` of `T_F`: the Euclidean flips to `T₀` recomputed, then the
+/// solve's Ptolemy flips, tracked and compared with the normal coordinates (B105).
+fn refinement_of_solve(
+    mesh: &Mesh,
+    lengths: &[f64],
+    sol: &Uniformization,
+) -> Result<(Refinement, Vec<f64>), PipelineError> {
+    let not = |m: String| PipelineError::NotComputed(format!("UV not computed: {m}"));
+    if !sol.converged() {
+        return Err(not("the solve did not converge".into()));
+    }
+    let mut t0 = mesh.clone();
+    let mut l = lengths.to_vec();
     let opts = FlipOptions {
         record: true,
         ..FlipOptions::default()
@@ -57,8 +135,8 @@ pub fn uv_closed(input: &Surface, outcome: &ClosedOutcome) -> Result<UvMesh, Pip
     }
     let n_euclidean = rep.sequence.len();
     let tracked = track_euclidean_then_ptolemy(
-        &surface.mesh,
-        &lengths,
+        mesh,
+        lengths,
         &rep.sequence,
         &sol.flip_sequence,
         Some(&sol.u),
@@ -77,26 +155,15 @@ pub fn uv_closed(input: &Surface, outcome: &ClosedOutcome) -> Result<UvMesh, Pip
             "the flips do not reproduce the solve's final triangulation".into(),
         ));
     }
-    let (_, normal) =
-        replay_normal_coordinates(&surface.mesh, &flips).map_err(|e| not(e.to_string()))?;
+    let (_, normal) = replay_normal_coordinates(mesh, &flips).map_err(|e| not(e.to_string()))?;
     if normal.values() != tracked.crossing_counts().as_slice() {
         return Err(not(
             "the tracked crossings disagree with the normal coordinates (B105)".into(),
         ));
     }
-    let refinement = common_refinement(&surface.mesh, &tracked).map_err(|e| not(e.to_string()))?;
-    let final_lengths = scaled_lengths_f64(&sol.mesh, &sol.base_lengths, &sol.u);
-    uv_mesh(
-        &surface.mesh,
-        &positions,
-        &sol.mesh,
-        &final_lengths,
+    let refinement = common_refinement(mesh, &tracked).map_err(|e| not(e.to_string()))?;
+    Ok((
         refinement,
-    )
-    .map_err(|e| match e {
-        UvError::NoPositions | UvError::RepeatedCorner(_) => {
-            PipelineError::Unsupported(e.to_string())
-        }
-        other => not(other.to_string()),
-    })
+        scaled_lengths_f64(&sol.mesh, &sol.base_lengths, &sol.u),
+    ))
 }
