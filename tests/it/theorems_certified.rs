@@ -362,3 +362,105 @@ fn t05_cotan_weight_sign_matches_the_delaunay_predicate() {
         "both signs must occur: {seen:?}"
     );
 }
+
+/// B49: the cotan weight is undefined when *either* triangle is degenerate (`P ≤ 0`): the
+/// exact rung and the interval rung both refuse a pair whose first triangle is flat (sides
+/// 1, 1, 2: `P = 0`) or whose second violates the triangle inequality (1, 1, 3), however
+/// proper the other one is. Control: the same proper triangle paired with itself decides.
+#[test]
+fn term_b49_either_degenerate_triangle_leaves_the_weight_undefined() {
+    use penner::predicates::ladder::SignPredicate;
+    let q = |a: i64| Rational::from(a);
+    let proper = [q(2), q(1), q(1)];
+    let flat = [q(4), q(1), q(1)];
+    let broken = [q(9), q(1), q(1)];
+    for (first, second) in [
+        (flat.clone(), proper.clone()),
+        (proper.clone(), flat),
+        (proper.clone(), broken.clone()),
+        (broken, proper.clone()),
+    ] {
+        let p = CotanWeightSign { first, second };
+        assert_eq!(p.sign_exact(), None, "{p:?}");
+        for bits in [128, 1024] {
+            assert_eq!(p.enclosure_sign(prec(bits)), None, "{p:?} at {bits} bits");
+        }
+    }
+    let p = CotanWeightSign {
+        first: proper.clone(),
+        second: proper,
+    };
+    assert_eq!(p.sign_exact(), Some(Sign::Zero));
+}
+
+/// B49 through the mesh-level call: `cotan_weight_signs` gives one entry per edge, `None`
+/// exactly on boundary edges, and on interior edges the sign of `cot α + cot β` computed
+/// independently in MPFR-1024 from the lengths (random planar meshes). On a grid of squares
+/// of side 1/3 split by diagonals, every diagonal is a tie (`w = 0`) that no interval
+/// rung can decide (the enclosures of `1/9` are proper): the exact rung must, and answers
+/// `Zero`; the grid's other interior edges are positive.
+#[test]
+fn term_b49_cotan_weight_signs_per_edge_and_ties_decided_exactly() {
+    use penner::io::surface::squared_lengths_from_positions;
+    use penner::predicates::cotan::cotan_weight_signs;
+    use penner::predicates::ladder::Ladder;
+    use penner::scalar::{Certified, Stage};
+    let ladder = Ladder::default();
+    let pr = prec(1024);
+    for seed in 0..4 {
+        let e: Embedded = builders::random_planar(30, seed).unwrap();
+        let sq = squared_lengths_from_positions(&e.mesh, &e.positions);
+        let signs = cotan_weight_signs(&e.mesh, &sq, &ladder);
+        assert_eq!(signs.len(), e.mesh.n_edges());
+        let mut seen = [0usize; 3];
+        for edge in e.mesh.edges() {
+            let got = &signs[edge.idx()];
+            if e.mesh.is_boundary_edge(edge) {
+                assert!(got.is_none());
+                continue;
+            }
+            let mut w = Mpfr::from_f64(0.0, pr);
+            for h in [edge.side(0), edge.side(1)] {
+                let l =
+                    |g: penner::mesh::HalfEdge| Mpfr::from_rational(&sq[g.edge().idx()], pr).sqrt();
+                w = w + &cot_opposite(&l(h), &l(e.mesh.next(h)), &l(e.mesh.prev(h)));
+            }
+            let w = w.approx_f64();
+            let s = got.as_ref().and_then(Certified::value).expect("decided");
+            match s {
+                Sign::Positive => assert!(w > 0.0, "{w:e}"),
+                Sign::Negative => assert!(w < 0.0, "{w:e}"),
+                Sign::Zero => assert!(w.abs() < 1e-250, "{w:e}"),
+            }
+            seen[s as usize] += 1;
+        }
+        assert!(seen[2] > 0, "seed {seed}: {seen:?}");
+    }
+    let mut g: Embedded = builders::grid_disk(3, 3).unwrap();
+    let third = Rational::from((1, 3));
+    for p in &mut g.positions {
+        for x in p.iter_mut() {
+            *x *= &third;
+        }
+    }
+    let sq = squared_lengths_from_positions(&g.mesh, &g.positions);
+    let signs = cotan_weight_signs(&g.mesh, &sq, &ladder);
+    let two_ninths = Rational::from((2, 9));
+    let mut ties = 0;
+    for edge in g.mesh.edges().filter(|&e| !g.mesh.is_boundary_edge(e)) {
+        let got = signs[edge.idx()].clone().expect("interior");
+        if sq[edge.idx()] == two_ninths {
+            assert_eq!(
+                got,
+                Certified::Known {
+                    value: Sign::Zero,
+                    stage: Stage::Exact
+                }
+            );
+            ties += 1;
+        } else {
+            assert_eq!(got.value(), Some(Sign::Positive));
+        }
+    }
+    assert_eq!(ties, 9);
+}
