@@ -101,6 +101,40 @@ pub(crate) fn uv_faces(obj: &str) -> Result<Vec<UvFace>, ParametrizationError> {
     Ok(tris)
 }
 
+/// The orientation of every UV triangle of an OBJ text, decided exactly on its decimals.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct UvOrientation {
+    /// Triangles (0-based `f` lines).
+    pub triangles: usize,
+    /// Triangles whose UV triangle is clockwise (folded).
+    pub clockwise: Vec<usize>,
+    /// Triangles whose UV triangle has zero area.
+    pub degenerate: Vec<usize>,
+}
+
+/// The exact orientation of the UV triangles of any OBJ text with `f v/vt` triangles, such
+/// as one written by another tool (the fold test of B109 without a sidecar): the sign of
+/// `(b − a) × (c − a)` in ℚ on the written decimals.
+///
+/// ```
+/// use penner::overlay::check::uv_orientation;
+/// let obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\nf 1/1 3/3 2/2\n";
+/// let o = uv_orientation(obj).unwrap();
+/// assert_eq!((o.triangles, o.clockwise, o.degenerate), (2, vec![1], vec![]));
+/// ```
+pub fn uv_orientation(obj: &str) -> Result<UvOrientation, ParametrizationError> {
+    let mut o = UvOrientation::default();
+    for (k, (_, t)) in uv_faces(obj)?.iter().enumerate() {
+        match orient(&t[0], &t[1], &t[2]).cmp0() {
+            std::cmp::Ordering::Less => o.clockwise.push(k),
+            std::cmp::Ordering::Equal => o.degenerate.push(k),
+            std::cmp::Ordering::Greater => {}
+        }
+        o.triangles += 1;
+    }
+    Ok(o)
+}
+
 /// Check the OBJ text `obj` and its `sidecar` exactly (module documentation).
 pub fn check_parametrization(
     obj: &str,
