@@ -232,3 +232,41 @@ fn encloses_root(x: &penner::algorithms::replay::Enclosure, sq: &Rational) -> bo
         && Rational::from(&lo * &lo) <= *sq
         && *sq <= Rational::from(&hi * &hi)
 }
+
+/// B83's range condition: the widened evaluation is only claimed for bounds in
+/// `[2⁻²⁰⁰, 2²⁰⁰)` (so that no product underflows or overflows), and an enclosure with
+/// either end outside, or with `lo > hi`, is refused by `in_range` and so by `sign_p`, even
+/// where the evaluation would give a sign. Controls: the same shapes with every end in
+/// range are decided (a tiny diagonal: `P > 0`).
+#[test]
+fn term_b83_enclosures_outside_the_range_are_refused() {
+    use penner::predicates::delaunay_widened::in_range;
+    let one = length_from_square(1.0).unwrap();
+    let (tiny, small, big) = (2f64.powi(-300), 2f64.powi(-299), 2f64.powi(250));
+    for b in [
+        [tiny, 0.5],
+        [tiny, small],
+        [0.5, big],
+        [0.0, 1.0],
+        [1.0, f64::INFINITY],
+        [1.0, f64::NAN],
+        [2.0, 1.0],
+        [-1.0, 1.0],
+    ] {
+        assert_eq!(in_range(b), None, "{b:?}");
+        assert_eq!(sign_p([b, one, one, one, one]), None, "{b:?}");
+    }
+    for b in [[2f64.powi(-200), 0.5], [2f64.powi(-150), 2f64.powi(-149)]] {
+        assert_eq!(in_range(b), Some(b));
+        assert_eq!(
+            sign_p([b, one, one, one, one]),
+            Some(Sign::Positive),
+            "{b:?}"
+        );
+    }
+    // A square's enclosure: in range from 2⁻²⁰⁰ up to below 2²⁰⁰ only.
+    assert!(length_from_square(2f64.powi(-200)).is_some());
+    assert!(length_from_square(2f64.powi(-201)).is_none());
+    assert!(length_from_square(2f64.powi(199)).is_some());
+    assert!(length_from_square(2f64.powi(200)).is_none());
+}
