@@ -270,3 +270,32 @@ fn term_b83_enclosures_outside_the_range_are_refused() {
     assert!(length_from_square(2f64.powi(199)).is_some());
     assert!(length_from_square(2f64.powi(200)).is_none());
 }
+
+/// B83's product `p·x` for a positive `p` and a negative `x`: the upper end is `p_lo·x_hi`,
+/// not `p_hi·x_hi`. With `a² = 5`, `b = c = 1` (so `b² + c² − a² = −3`), `d = 2.5` and `e`
+/// anywhere in `[0.1, 0.25]`, `P(e) = e² − 7.5e + 1.25` is `+0.51` at `e = 0.1` and
+/// `−0.5625` at `e = 0.25` (rational arithmetic below), so no sign holds on the box and
+/// `sign_p` must answer `None`; taking `p_hi·x_hi` would certify `Negative`. Control: with
+/// `e` in `[0.2, 0.25]`, where `P < 0` throughout, it answers `Negative`.
+#[test]
+fn term_b83_upper_end_of_a_positive_times_a_negative_enclosure() {
+    let point = |x: f64| [x, x];
+    let p_at = |e: Rational| {
+        let (a2, b, c, d) = (
+            Rational::from(5),
+            Rational::from(1),
+            Rational::from(1),
+            Rational::from((5, 2)),
+        );
+        let x = Rational::from(&b * &b) + Rational::from(&c * &c) - &a2;
+        let y = Rational::from(&d * &d) + Rational::from(&e * &e) - &a2;
+        Rational::from(&d * &e) * x + Rational::from(&b * &c) * y
+    };
+    assert!(p_at(Rational::from((1, 10))) > 0);
+    assert!(p_at(Rational::from((1, 4))) < 0);
+    let a = length_from_square(5.0).unwrap();
+    let (one, d) = (point(1.0), point(2.5));
+    assert_eq!(sign_p([a, one, one, d, [0.1, 0.25]]), None);
+    assert!(p_at(Rational::from((1, 5))) < 0);
+    assert_eq!(sign_p([a, one, one, d, [0.2, 0.25]]), Some(Sign::Negative));
+}
