@@ -55,6 +55,7 @@ __all__ = [
     "CheckRows",
     "InputError",
     "Surface",
+    "Parametrization",
     "UniformizeResult",
     "catalogue",
     "certify",
@@ -62,6 +63,7 @@ __all__ = [
     "intrinsic_delaunay",
     "lobachevsky",
     "pack",
+    "parametrize",
     "read",
     "read_mesh",
     "surface",
@@ -403,6 +405,73 @@ def uniformize(
     )
     known = {k: d.pop(k) for k in list(d) if k in _RESULT_FIELDS}
     return UniformizeResult(**known, details=d)
+
+
+@dataclass(frozen=True)
+class Parametrization:
+    """The outcome of :func:`parametrize`: texture coordinates on the input mesh.
+
+    Attributes:
+        V: (k, 3) float64 positions of the refinement's vertices on the input surface (the
+            input vertices first, in their order, then the crossings of input edges with
+            edges of the final triangulation).
+        F: (m, 3) int64 its triangles, counterclockwise.
+        uv: (m, 3, 2) float64 texture coordinates per corner (cut along a cut graph).
+        input_face, final_face: (m,) the face of the input and of the final triangulation
+            each triangle lies in.
+        barycentric: (m, 3, 3) float64 the corners' barycentric coordinates in their input
+            face (row ``i``: corner ``i``; the columns follow the input face's corners).
+        obj, sidecar: the OBJ text and sidecar that ``penner uniformize … --uv`` writes
+            (the sidecar's decimals exact, each barycentric row summing to 1 in ℚ).
+        checks: the exact checks of that text (B109, B110): ``holds``, ``uv_folds``,
+            ``input_folds``, ``untiled_faces``, and ``seam_segments``/``broken_seams``
+            when every cone angle is a multiple of π/2 (else None).
+        reason: why no UV mesh was computed (then every other field is None), or None.
+    """
+
+    V: Optional[np.ndarray]
+    F: Optional[np.ndarray]
+    uv: Optional[np.ndarray]
+    input_face: Optional[np.ndarray]
+    final_face: Optional[np.ndarray]
+    barycentric: Optional[np.ndarray]
+    obj: Optional[str] = field(repr=False)
+    sidecar: Optional[Dict[str, Any]] = field(repr=False)
+    checks: Optional[Dict[str, Any]]
+    reason: Optional[str]
+
+    def __bool__(self) -> bool:
+        return bool(self.checks and self.checks["holds"])
+
+
+def parametrize(
+    V: Any = None,
+    F: Any = None,
+    *,
+    targets: Optional[Sequence[Any]] = None,
+    flat: bool = False,
+) -> Parametrization:
+    """UVs on the input mesh, as ``penner uniformize … --no-certify --uv OUT.obj``: solve
+    for the cone angles ``targets`` (``Θ_i/π``; with boundary ``φ_v/π`` at boundary
+    vertices) or ``flat=True`` in binary64, then build the common refinement of the input
+    triangulation and the final one (B108, B111; with boundary on copy 1 of the double)
+    and lay it out with the solved metric (B109). The result's ``checks`` are exact, on the
+    written text: no fold, every input face tiled. The surface needs vertex positions.
+    Bad input raises :class:`InputError`; a UV mesh that could not be computed is a result
+    with ``reason``.
+
+    >>> p = penner.parametrize(V, F, targets=[1, 1, 1, 1])
+    >>> p.checks["holds"], p.F.shape[1], p.uv.shape[1:]
+    (True, 3, (3, 2))
+    """
+    s = _surface_of(V, F, None)
+    t = None
+    if targets is not None:
+        if isinstance(targets, (str, bytes)):
+            raise InputError("targets: expected one Θ_i/π per vertex, not a string")
+        seq = targets.ravel().tolist() if isinstance(targets, np.ndarray) else list(targets)
+        t = [_literal(x, f"targets[{i}]") for i, x in enumerate(seq)]
+    return Parametrization(**_penner.parametrize(s, t, bool(flat)))
 
 
 def intrinsic_delaunay(

@@ -77,3 +77,7 @@ def certify(claim: str) -> Dict[str, Any]: ...
 def lobachevsky(
     x: List[float], precision: str = "f64", enclosure: bool = False
 ) -> npt.NDArray[np.float64]: ...
+def parametrize(
+    surface: Surface, targets: Optional[List[str]] = None, flat: bool = False
+) -> Dict[str, Any]:
+    """The fields of ``penner.Parametrization``."""

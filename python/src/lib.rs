@@ -12,6 +12,7 @@ mod convert;
 mod delaunay;
 mod input;
 mod pipelines;
+mod uv;
 
 use convert::{array1, array2, array3, json_to_py};
 use input::{InputError as BadInput, Numbers, Source};
@@ -300,7 +301,11 @@ struct Uniformized {
 }
 
 /// The targets given (`Θ_i/π`, exact literals, one per vertex), or `None` for `flat`.
-fn parse_targets(t: Option<Vec<String>>, flat: bool, n: usize) -> PyResult<Option<Targets>> {
+pub(crate) fn parse_targets(
+    t: Option<Vec<String>>,
+    flat: bool,
+    n: usize,
+) -> PyResult<Option<Targets>> {
     match (t, flat) {
         (Some(_), true) => Err(InputError::new_err(
             "give either targets or flat=True, not both",
@@ -651,6 +656,7 @@ fn _penner(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(delaunay::intrinsic_delaunay, m)?)?;
     m.add_function(wrap_pyfunction!(delaunay::pack, m)?)?;
     m.add_function(wrap_pyfunction!(lobachevsky, m)?)?;
+    m.add_function(wrap_pyfunction!(uv::parametrize, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -423,7 +423,7 @@ fn term_b49_cotan_weight_signs_per_edge_and_ties_decided_exactly() {
             for h in [edge.side(0), edge.side(1)] {
                 let l =
                     |g: penner::mesh::HalfEdge| Mpfr::from_rational(&sq[g.edge().idx()], pr).sqrt();
-                w = w + &cot_opposite(&l(h), &l(e.mesh.next(h)), &l(e.mesh.prev(h)));
+                w += &cot_opposite(&l(h), &l(e.mesh.next(h)), &l(e.mesh.prev(h)));
             }
             let w = w.approx_f64();
             let s = got.as_ref().and_then(Certified::value).expect("decided");
