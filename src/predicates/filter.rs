@@ -85,3 +85,75 @@ pub(crate) fn sign_of(x: &Interval<Mpfr>) -> Option<Sign> {
     debug_assert!(Interval::<Mpfr>::precision_bits(x.ctx()) >= 53);
     x.sign()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{in_range, input};
+    use crate::scalar::nearest_f64;
+    use rug::{Integer, Rational};
+
+    /// B23's hypothesis `|x − q| ≤ u|x|`: the filter input is the *nearest* binary64 value,
+    /// on the fast path (dyadic, at most 53 bits) and off it. `1/10` and
+    /// `1 + 3·2⁻⁵⁴` (55 significant bits) round up, so truncation would be one ulp off;
+    /// subnormal and overflowing values are refused, zero is kept.
+    #[test]
+    fn term_b23_filter_input_is_the_nearest_normal_binary64() {
+        let two_54 = Rational::from(Integer::from(1) << 54u32);
+        let cases = [
+            Rational::from((1, 10)),
+            Rational::from((-1, 10)),
+            (Rational::from(Integer::from(1) << 54u32) + 3u32) / &two_54,
+            Rational::from((1, 3)),
+            Rational::from((3, 4)),
+            Rational::from(12345),
+        ];
+        for q in &cases {
+            let x = input(q).expect("a normal value");
+            assert_eq!(x, nearest_f64(q), "{q}");
+            // The nearest value, so within half an ulp: |x − q| ≤ u|x|.
+            let err = (Rational::from_f64(x).unwrap() - q.clone()).abs();
+            let half_ulp = Rational::from_f64(x.abs() * f64::EPSILON / 2.0).unwrap();
+            assert!(err <= half_ulp, "{q}");
+        }
+        // Controls: 1/10 and 1 + 3·2⁻⁵⁴ are not their truncations.
+        assert_ne!(input(&cases[0]), Some(cases[0].to_f64()));
+        assert_ne!(input(&cases[2]), Some(1.0));
+        assert_eq!(input(&Rational::new()), Some(0.0));
+        let tiny = Rational::from((1, Integer::from(1) << 1070u32));
+        assert_eq!(input(&tiny), None);
+        let huge = Rational::from(Integer::from(1) << 1100u32);
+        assert_eq!(input(&huge), None);
+    }
+
+    /// The magnitude guard of the filters' proofs: 0, or `2^lo ≤ |x| < 2^hi` for a normal
+    /// `x`, either sign; the ends, subnormals, NaN and infinities are decided as stated.
+    #[test]
+    fn term_filter_magnitude_guard_is_the_stated_exponent_range() {
+        let (lo, hi) = (-10, 10);
+        for x in [
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            2f64.powi(-10),
+            2f64.powi(10) * (1.0 - f64::EPSILON),
+        ] {
+            assert!(in_range(x, lo, hi), "{x:e}");
+        }
+        for x in [
+            2f64.powi(-11),
+            2f64.powi(-10) * (1.0 - f64::EPSILON),
+            2f64.powi(10),
+            -2f64.powi(10),
+            f64::MIN_POSITIVE / 2.0,
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+        ] {
+            assert!(!in_range(x, lo, hi), "{x:e}");
+        }
+        // A subnormal is refused even when the range would reach it.
+        assert!(!in_range(f64::MIN_POSITIVE / 4.0, -1100, 0));
+        assert!(in_range(f64::MIN_POSITIVE, -1100, 0));
+    }
+}
