@@ -1,14 +1,15 @@
 //! `penner.parametrize`: texture coordinates on the input mesh (the common refinement of
 //! the input and the final triangulation, `uniformization::pipeline::{uv_closed,
-//! uv_boundary}`), with the exact checks of its written text (B109, B110).
+//! uv_boundary}`), with the exact checks of its written text (`check_written_uv`: B109,
+//! B110).
 
 use crate::convert::{array1, array2, array3, json_to_py};
 use crate::{parse_targets, InputError, PySurface};
-use penner::overlay::{check_parametrization, check_seams, UvMesh};
+use penner::overlay::UvMesh;
 use penner::uniformization::boundary::flat_with_even_boundary;
 use penner::uniformization::pipeline::{
-    uniformize_boundary, uniformize_closed, uv_boundary, uv_closed, Options, PipelineError,
-    Precision,
+    check_written_uv, uniformize_boundary, uniformize_closed, uv_boundary, uv_closed, Options,
+    PipelineError, Precision, UvCones,
 };
 use penner::uniformization::Targets;
 use pyo3::prelude::*;
@@ -16,11 +17,11 @@ use pyo3::types::PyDict;
 use rug::Rational;
 use std::sync::Arc;
 
-/// What the solve and the UV mesh gave: the mesh with its texts, or why there is none.
+/// What the solve and the UV mesh gave: the mesh, or why there is none, and its cones.
 struct Done {
     uv: Option<UvMesh>,
     reason: Option<String>,
-    quarter: bool,
+    cones: UvCones,
 }
 
 /// Solve (binary64, no certificate) and build the UV mesh; `Err` is the input's fault.
@@ -29,38 +30,26 @@ fn compute(s: &penner::io::Surface, targets: Option<Targets>) -> Result<Done, St
         precision: Precision::F64,
         certify: false,
     };
-    let quarter_of = |t: &[Rational]| t.iter().all(|t| Rational::from(t * 2u32).is_integer());
-    let (uv, quarter): (Result<UvMesh, PipelineError>, bool) = if s.mesh.is_closed() {
-        let n = s.mesh.n_vertices();
-        let t = targets.unwrap_or_else(|| Targets::flat(n));
+    let (uv, cones): (Result<UvMesh, PipelineError>, UvCones) = if s.mesh.is_closed() {
+        let t = targets.unwrap_or_else(|| Targets::flat(s.mesh.n_vertices()));
         let out = uniformize_closed(s, &t, &options, &mut |_| {}).map_err(|e| e.to_string())?;
-        let q = quarter_of(out.solution.targets.over_pi());
-        (uv_closed(s, &out), q)
+        (uv_closed(s, &out), UvCones::of_closed(&out))
     } else {
         let t = targets.unwrap_or_else(|| flat_with_even_boundary(&s.mesh));
         let out = uniformize_boundary(s, Some(&t), &options).map_err(|e| e.to_string())?;
-        let over = out.boundary.solution.targets.over_pi();
-        let interior: Vec<Rational> = over
-            .iter()
-            .zip(&out.boundary.double.vertex_sheet)
-            .filter(|(_, sh)| {
-                **sh == penner::mesh::double::Sheet::Original || !out.boundary.seam_flips.is_empty()
-            })
-            .map(|(t, _)| t.clone())
-            .collect();
-        (uv_boundary(s, &out), quarter_of(&interior))
+        (uv_boundary(s, &out), UvCones::of_boundary(&out))
     };
     match uv {
         Ok(uv) => Ok(Done {
             uv: Some(uv),
             reason: None,
-            quarter,
+            cones,
         }),
         Err(e) if e.is_bad_input() => Err(e.to_string()),
         Err(e) => Ok(Done {
             uv: None,
             reason: Some(e.to_string()),
-            quarter,
+            cones,
         }),
     }
 }
@@ -111,23 +100,24 @@ pub fn parametrize<'py>(
     };
     let obj = uv.obj();
     let sidecar = uv.sidecar();
-    let report = check_parametrization(&obj, &sidecar)
+    let eps = Rational::from((1, 1_000_000_000u32));
+    let checked = check_written_uv(&obj, &sidecar, &done.cones, &eps)
         .map_err(|e| InputError::new_err(format!("the written UV mesh does not read back: {e}")))?;
+    let report = &checked.parametrization;
     let checks = PyDict::new(py);
     checks.set_item("holds", report.holds())?;
     checks.set_item("triangles", report.triangles)?;
     checks.set_item("uv_folds", report.uv_folds.clone())?;
     checks.set_item("input_folds", report.input_folds.clone())?;
     checks.set_item("untiled_faces", report.untiled_faces.clone())?;
-    if done.quarter {
-        let eps = Rational::from((1, 1_000_000_000u32));
-        let seams = check_seams(&obj, &eps).map_err(|e| InputError::new_err(e.to_string()))?;
-        checks.set_item("seam_segments", seams.seam_segments)?;
-        checks.set_item("broken_seams", seams.broken)?;
-    } else {
-        checks.set_item("seam_segments", py.None())?;
-        checks.set_item("broken_seams", py.None())?;
-    }
+    checks.set_item(
+        "seam_segments",
+        checked.seams.as_ref().map(|r| r.seam_segments),
+    )?;
+    checks.set_item(
+        "broken_seams",
+        checked.seams.as_ref().map(|r| r.broken.clone()),
+    )?;
     let tris = &uv.refinement.triangles;
     let faces: Vec<i64> = tris
         .iter()

@@ -2,16 +2,15 @@
 //! the input mesh and the final triangulation with texture coordinates
 //! (`uniformization::pipeline::uv_closed`, or `uv_boundary` on copy 1 of the double of a
 //! surface with boundary), written with its sidecar `OUT.obj.json`, both
-//! new files; the exact checks (`overlay::check_parametrization`) run on the written text.
+//! new files; the exact checks (`check_written_uv`) run on the written text.
 
 use super::error::{pipeline_error, CliError};
 use super::files::create_new;
 use penner::io::Surface;
-use penner::mesh::double::Sheet;
-use penner::overlay::UvMesh;
-use penner::overlay::{check_parametrization, check_seams, render_uv_svg};
+use penner::overlay::{render_uv_svg, SeamReport, UvMesh};
 use penner::uniformization::pipeline::{
-    uv_boundary, uv_closed, BoundaryOutcome, ClosedOutcome, PipelineError,
+    check_written_uv, uv_boundary, uv_closed, BoundaryOutcome, ClosedOutcome, PipelineError,
+    UvCones,
 };
 use rug::Rational;
 use std::fmt::Write as _;
@@ -52,45 +51,27 @@ fn write_all(path: &Path, mut f: std::fs::File, bytes: &[u8]) -> Result<(), CliE
         })
 }
 
-/// What the CLI needs besides the UV mesh: which input vertices to mark as cones, and
-/// whether the seam check applies (every cone angle around which the layout may be cut is
-/// a multiple of π/2).
+/// The UV mesh or why the pipeline did not compute it, with its cones.
 pub struct UvSource {
     /// The UV mesh, or why the pipeline did not compute it.
     pub uv: Result<UvMesh, PipelineError>,
-    /// Per input vertex: drawn as a cone.
-    pub cones: Vec<bool>,
-    /// Whether the seams are checked (B110).
-    pub quarter: bool,
+    /// Its cones and whether its seams are checked.
+    pub cones: UvCones,
 }
 
 /// The UV source of a closed-surface outcome ([`uv_closed`]).
 pub fn closed(surface: &Surface, outcome: &ClosedOutcome) -> UvSource {
-    let t = outcome.solution.targets.over_pi();
     UvSource {
         uv: uv_closed(surface, outcome),
-        cones: t.iter().map(|t| *t != 2).collect(),
-        quarter: t.iter().all(|t| Rational::from(t * 2u32).is_integer()),
+        cones: UvCones::of_closed(outcome),
     }
 }
 
-/// The UV source of a surface with boundary ([`uv_boundary`], copy 1 of the double): the
-/// cones are the input's vertices whose angle on the double is not 2π (interior cones and
-/// boundary corners); the seams are checked when every interior cone angle, and, if a seam
-/// edge was flipped, every boundary one, is a multiple of π/2.
+/// The UV source of a surface with boundary ([`uv_boundary`], copy 1 of the double).
 pub fn boundary(surface: &Surface, outcome: &BoundaryOutcome) -> UvSource {
-    let b = &outcome.boundary;
-    let t = b.solution.targets.over_pi();
-    let n = outcome.surface.mesh.n_vertices();
-    let flipped = !b.seam_flips.is_empty();
     UvSource {
         uv: uv_boundary(surface, outcome),
-        cones: t.iter().take(n).map(|t| *t != 2).collect(),
-        quarter: t
-            .iter()
-            .zip(&b.double.vertex_sheet)
-            .filter(|(_, s)| **s == Sheet::Original || flipped)
-            .all(|(t, _)| Rational::from(t * 2u32).is_integer()),
+        cones: UvCones::of_boundary(outcome),
     }
 }
 
@@ -125,8 +106,10 @@ pub fn write(
     let text = sidecar.to_string();
     write_all(path, f_obj, obj.as_bytes())?;
     write_all(&side_path, f_side, text.as_bytes())?;
-    let report = check_parametrization(&obj, &sidecar)
+    let eps = Rational::from((1, 1_000_000_000u32));
+    let checks = check_written_uv(&obj, &sidecar, &source.cones, &eps)
         .map_err(|e| CliError::NotConverged(format!("{}: {e}", path.display())))?;
+    let report = &checks.parametrization;
     let mut out = format!(
         "UV mesh written to {} and {} ({} vertices, {} triangles)\n",
         path.display(),
@@ -154,22 +137,20 @@ pub fn write(
             report.untiled_faces.len()
         );
     }
-    out.push_str(&seams_line(&obj, source.quarter)?);
+    out.push_str(&seams_line(checks.seams.as_ref()));
     if let Some(svg) = svg {
-        super::files::write_new(svg, render_uv_svg(&uv, &source.cones).as_bytes())?;
+        super::files::write_new(svg, render_uv_svg(&uv, &source.cones.cones).as_bytes())?;
         let _ = writeln!(out, "UV layout drawn to {}", svg.display());
     }
     Ok((out, true))
 }
 
-/// The seam check's line (B110) when every cone angle is a multiple of π/2 (`quarter`).
-fn seams_line(obj: &str, quarter: bool) -> Result<String, CliError> {
-    if !quarter {
-        return Ok("seams not checked: not every cone angle is a multiple of π/2\n".into());
-    }
-    let eps = Rational::from((1, 1_000_000_000u32));
-    let r = check_seams(obj, &eps).map_err(|e| CliError::NotConverged(e.to_string()))?;
-    Ok(if r.broken.is_empty() {
+/// The seam check's line (B110): `None` when not every cone angle is a multiple of π/2.
+fn seams_line(seams: Option<&SeamReport>) -> String {
+    let Some(r) = seams else {
+        return "seams not checked: not every cone angle is a multiple of π/2\n".into();
+    };
+    if r.broken.is_empty() {
         format!(
             "seams: all {} cut segments related by rotations by multiples of π/2 and translations, within relative ε = 1e-9 (exact check)\n",
             r.seam_segments
@@ -181,5 +162,5 @@ fn seams_line(obj: &str, quarter: bool) -> Result<String, CliError> {
             r.seam_segments,
             r.broken[0]
         )
-    })
+    }
 }

@@ -6,7 +6,9 @@ use penner::mesh::builders::{self, Embedded};
 use penner::mesh::Face;
 use penner::overlay::check_parametrization;
 use penner::overlay::refinement::RefinedVertex;
-use penner::uniformization::pipeline::{uniformize_boundary, uv_boundary, Options, Precision};
+use penner::uniformization::pipeline::{
+    check_written_uv, uniformize_boundary, uv_boundary, Options, Precision, UvCones,
+};
 use rug::Rational;
 use std::f64::consts::PI;
 
@@ -64,6 +66,7 @@ fn uv_angle_sums(uv: &penner::overlay::UvMesh, n: usize) -> Vec<f64> {
 /// UV corner at an interior vertex moved by 10⁻³ breaks that vertex's angle sum.
 #[test]
 fn b109_boundary_uv_of_copy_1_angle_sums_and_controls() {
+    let mut seams_checked = 0;
     for s in [bumpy_grid(), open_icosahedron()] {
         let opts = Options {
             precision: Precision::F64,
@@ -90,6 +93,27 @@ fn b109_boundary_uv_of_copy_1_angle_sums_and_controls() {
             "{}: {report:?}",
             s.name
         );
+        // The cones are the boundary corners (2φ ≠ 2π on the double). The interior is flat
+        // (2π, a multiple of π/2) and 2φ is not a multiple of π/2 here, so the seams are
+        // checked exactly when no seam edge was flipped, and then they hold.
+        let cones = UvCones::of_boundary(&out);
+        for v in s.mesh.vertices() {
+            assert_eq!(cones.cones[v.idx()], s.mesh.is_boundary_vertex(v), "{v:?}");
+        }
+        assert_eq!(
+            cones.quarter_turns,
+            out.boundary.seam_flips.is_empty(),
+            "{}",
+            s.name
+        );
+        let eps = Rational::from((1, 1_000_000_000u32));
+        let written = check_written_uv(&uv.obj(), &uv.sidecar(), &cones, &eps).unwrap();
+        assert_eq!(written.parametrization, report);
+        assert_eq!(written.seams.is_some(), cones.quarter_turns);
+        if let Some(seams) = written.seams {
+            assert!(seams.broken.is_empty(), "{}: {seams:?}", s.name);
+            seams_checked += 1;
+        }
         // The oracle: UV angle sums against the targets.
         let n_boundary = s
             .mesh
@@ -140,6 +164,7 @@ fn b109_boundary_uv_of_copy_1_angle_sums_and_controls() {
         let bad = uv_angle_sums(&moved, nv)[interior.idx()];
         assert!((bad - 2.0 * PI).abs() > 1e-9, "{}: {bad}", s.name);
     }
+    assert!(seams_checked > 0, "no surface had its seams checked");
 }
 
 /// A surface without positions gets no UVs (bad input, typed), and a closed surface is not

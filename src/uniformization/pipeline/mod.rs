@@ -26,7 +26,7 @@ pub use boundary::{double_surface, uniformize_boundary, BoundaryOutcome, SvgLayo
 pub use closed::{certify_solution, uniformize_closed, Certification, ClosedOutcome};
 pub use hyperbolic::{uniformize_hyperbolic, HyperbolicOutcome};
 pub use sphere::{uniformize_sphere, SphereOutcome};
-pub use uv::{uv_boundary, uv_closed};
+pub use uv::{check_written_uv, uv_boundary, uv_closed, UvCones, WrittenUvChecks};
 
 use crate::io::Surface;
 use crate::scalar::Real;

@@ -16,13 +16,18 @@
 use super::{BoundaryOutcome, ClosedOutcome, PipelineError};
 use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOptions};
 use crate::io::Surface;
+use crate::mesh::double::Sheet;
 use crate::mesh::Mesh;
+use crate::overlay::check::ParametrizationError;
 use crate::overlay::tracking::track_euclidean_then_ptolemy;
 use crate::overlay::tracking::TrackError;
 use crate::overlay::uv::UvError;
+use crate::overlay::{check_parametrization, check_seams, ParametrizationReport, SeamReport};
 use crate::overlay::{common_refinement, replay_normal_coordinates, uv_mesh, Refinement, UvMesh};
 use crate::uniformization::newton::Uniformization;
 use crate::uniformization::svg::scaled_lengths_f64;
+use rug::Rational;
+use serde_json::Value;
 
 /// The UV mesh of a converged closed-surface outcome of `input` (the surface as given,
 /// whose 3-D positions are written): module documentation. Bad input (no positions, an
@@ -166,4 +171,80 @@ fn refinement_of_solve(
         refinement,
         scaled_lengths_f64(&sol.mesh, &sol.base_lengths, &sol.u),
     ))
+}
+
+/// Which input vertices are cones of a UV mesh, and whether its seams are checked (B110):
+/// the transitions across cut edges are rotations by multiples of π/2 when every cone
+/// angle the layout can be cut around is such a multiple.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct UvCones {
+    /// Per input vertex: its target angle is not 2π (drawn as a cone).
+    pub cones: Vec<bool>,
+    /// Every relevant cone angle is a multiple of π/2 (the seam check applies).
+    pub quarter_turns: bool,
+}
+
+/// Whether `Θ/π` is a multiple of `1/2`.
+fn quarter_turn(t: &Rational) -> bool {
+    Rational::from(t * 2u32).is_integer()
+}
+
+impl UvCones {
+    /// The cones of [`uv_closed`]'s mesh: every vertex whose target is not 2π; the seams
+    /// are checked when every target is a multiple of π/2.
+    pub fn of_closed(outcome: &ClosedOutcome) -> Self {
+        let t = outcome.solution.targets.over_pi();
+        Self {
+            cones: t.iter().map(|t| *t != 2).collect(),
+            quarter_turns: t.iter().all(quarter_turn),
+        }
+    }
+
+    /// The cones of [`uv_boundary`]'s mesh: the input's vertices whose angle on the double
+    /// is not 2π (interior cones and boundary corners). Copy 1 is cut only around interior
+    /// vertices when the seam is intact, so the seams are checked when every interior
+    /// target (and, if a seam edge was flipped, every boundary one) is a multiple of π/2.
+    pub fn of_boundary(outcome: &BoundaryOutcome) -> Self {
+        let b = &outcome.boundary;
+        let t = b.solution.targets.over_pi();
+        let n = outcome.surface.mesh.n_vertices();
+        let flipped = !b.seam_flips.is_empty();
+        Self {
+            cones: t.iter().take(n).map(|t| *t != 2).collect(),
+            quarter_turns: t
+                .iter()
+                .zip(&b.double.vertex_sheet)
+                .filter(|(_, s)| **s == Sheet::Original || flipped)
+                .all(|(t, _)| quarter_turn(t)),
+        }
+    }
+}
+
+/// The exact checks of a written UV mesh: folds and tiling (B109) and, when the cones
+/// allow it, the seams within the relative tolerance `seam_epsilon` (B110).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct WrittenUvChecks {
+    /// No fold, every input face tiled.
+    pub parametrization: ParametrizationReport,
+    /// The seams (`None`: not every cone angle is a multiple of π/2).
+    pub seams: Option<SeamReport>,
+}
+
+/// Check the OBJ text `obj` and its `sidecar` as written (module documentation).
+pub fn check_written_uv(
+    obj: &str,
+    sidecar: &Value,
+    cones: &UvCones,
+    seam_epsilon: &Rational,
+) -> Result<WrittenUvChecks, ParametrizationError> {
+    let parametrization = check_parametrization(obj, sidecar)?;
+    let seams = if cones.quarter_turns {
+        Some(check_seams(obj, seam_epsilon)?)
+    } else {
+        None
+    };
+    Ok(WrittenUvChecks {
+        parametrization,
+        seams,
+    })
 }
