@@ -88,8 +88,9 @@ pub(crate) fn sign_of(x: &Interval<Mpfr>) -> Option<Sign> {
 
 #[cfg(test)]
 mod tests {
-    use super::{in_range, input};
+    use super::{decide, in_range, input};
     use crate::scalar::nearest_f64;
+    use crate::scalar::Sign;
     use rug::{Integer, Rational};
 
     /// B23's hypothesis `|x − q| ≤ u|x|`: the filter input is the *nearest* binary64 value,
@@ -155,5 +156,27 @@ mod tests {
         // A subnormal is refused even when the range would reach it.
         assert!(!in_range(f64::MIN_POSITIVE / 4.0, -1100, 0));
         assert!(in_range(f64::MIN_POSITIVE, -1100, 0));
+    }
+
+    /// The filter's decision: a sign only when `|value| > bound` strictly (the error bound
+    /// allows the true value anywhere in `[value − bound, value + bound]`, which contains 0
+    /// when `|value| = bound`), and never for a NaN or infinite value or bound.
+    #[test]
+    fn term_filter_decides_only_strictly_beyond_the_error_bound() {
+        assert_eq!(decide(1.5, 1.0), Some(Sign::Positive));
+        assert_eq!(decide(-1.5, 1.0), Some(Sign::Negative));
+        for (value, bound) in [
+            (1.0, 1.0),
+            (-1.0, 1.0),
+            (0.5, 1.0),
+            (0.0, 0.0),
+            (f64::INFINITY, 1.0),
+            (f64::NEG_INFINITY, 1.0),
+            (f64::NAN, 1.0),
+            (1.0, f64::INFINITY),
+            (1.0, f64::NAN),
+        ] {
+            assert_eq!(decide(value, bound), None, "{value} ± {bound}");
+        }
     }
 }
