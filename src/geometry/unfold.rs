@@ -4,7 +4,7 @@
 //! that is not a simply connected flat disk the result is a fundamental domain: a vertex
 //! gets one position per face corner.
 
-use crate::mesh::{Face, HalfEdge, Mesh};
+use crate::mesh::{Edge, Face, HalfEdge, Mesh};
 use std::collections::VecDeque;
 
 /// The third corner `k` of the counterclockwise triangle `p, q, k` with `|pk| = a`,
@@ -41,6 +41,17 @@ pub fn unfold_faces(
     root: Face,
     kept: impl Fn(Face) -> bool,
 ) -> Unfolded {
+    unfold_across(mesh, lengths, root, kept, |_| true)
+}
+
+/// [`unfold_faces`] crossing only the edges with `cross(e)` (e.g. all but a cut graph).
+pub fn unfold_across(
+    mesh: &Mesh,
+    lengths: &[f64],
+    root: Face,
+    kept: impl Fn(Face) -> bool,
+    cross: impl Fn(Edge) -> bool,
+) -> Unfolded {
     let mut corner: Vec<Option<[f64; 2]>> = vec![None; mesh.n_halfedges()];
     let mut parent = vec![None; mesh.n_faces()];
     if root.idx() >= mesh.n_faces() || lengths.len() != mesh.n_edges() || !kept(root) {
@@ -55,7 +66,7 @@ pub fn unfold_faces(
     };
     let h0 = mesh.face_halfedge(root);
     place(&mut corner, h0, [0.0, 0.0], [len(h0), 0.0]);
-    dual_breadth_first(mesh, root, kept, |t| {
+    dual_breadth_first_across(mesh, root, kept, cross, |t| {
         // t runs from tip(h) to tail(h), h = twin(t) in a face laid out before.
         let h = t.twin();
         let (g, p, q) = (mesh.face(t), corner[mesh.next(h).idx()], corner[h.idx()]);
@@ -74,6 +85,17 @@ pub fn dual_breadth_first(
     mesh: &Mesh,
     root: Face,
     kept: impl Fn(Face) -> bool,
+    enter: impl FnMut(HalfEdge),
+) {
+    dual_breadth_first_across(mesh, root, kept, |_| true, enter);
+}
+
+/// [`dual_breadth_first`] crossing only the edges with `cross(e)`.
+pub fn dual_breadth_first_across(
+    mesh: &Mesh,
+    root: Face,
+    kept: impl Fn(Face) -> bool,
+    cross: impl Fn(Edge) -> bool,
     mut enter: impl FnMut(HalfEdge),
 ) {
     let mut seen = vec![false; mesh.n_faces()];
@@ -86,7 +108,7 @@ pub fn dual_breadth_first(
         for h in mesh.face_halfedges(f) {
             let t = h.twin();
             let Some(g) = mesh.face(t) else { continue };
-            if seen[g.idx()] || !kept(g) {
+            if seen[g.idx()] || !kept(g) || !cross(t.edge()) {
                 continue;
             }
             enter(t);

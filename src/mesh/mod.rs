@@ -11,6 +11,7 @@
 mod build;
 pub mod builders;
 mod circulate;
+pub mod cut;
 pub mod double;
 mod flip;
 mod ids;

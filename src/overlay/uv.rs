@@ -1,15 +1,18 @@
 //! Texture coordinates on the refinement and the files that carry them (proof: B109).
 //!
-//! `T_F` is laid out with its final lengths by unfolding along a dual spanning tree of the
-//! faces that hold a triangle of the refinement (all of them, or those a part such as copy
-//! 1 of a double meets): the surface is cut along the edges outside the tree, a cut graph
-//! through every vertex and so through every cone, and each face gets its own three
-//! corners. A refinement vertex
-//! in a face of `T_F` gets the point of that face's layout at its place, linearly:
-//! a corner `p_r`, or `(1 − τ) p_r + τ p_{r+1}` on side `c_r`. The map is affine on each
-//! face of `T_F` (exact for the final flat metric there) and, since every cell is convex
-//! with the same corners in the input face and in the face of `T_F` (B108), a
-//! homeomorphism on each cell.
+//! `T_F` is laid out with its final lengths over the faces that hold a triangle of the
+//! refinement (all of them, or those a part such as copy 1 of a double meets), cut open
+//! along a cut graph through the cones ([`cut_through_cones`], B113): breadth first across
+//! every edge that is not cut. The cut surface is a disk with no cone inside, so the flat
+//! metric develops consistently across every edge not cut, and the corners around a vertex
+//! between two cut edges (a *wedge*) share one position, bit for bit; a crossing on an edge
+//! not cut is placed from its own half-edge and parameter, so both faces give it the same
+//! coordinates. A refinement vertex in a face of `T_F` gets the point of that face's
+//! layout at its place, linearly: a corner `p_r`, or `(1 − τ) p_r + τ p_{r+1}` on side
+//! `c_r`. The map is affine on each face of `T_F` (exact for the final flat metric there)
+//! and, since every cell is convex with the same corners in the input face and in the
+//! face of `T_F` (B108), a homeomorphism on each cell. Texture coordinates therefore differ
+//! across an edge only on the cut: the seams (B110).
 //!
 //! The 3-D position of a crossing at `s` along input edge `pq` is `(1 − s) p + s q`, and
 //! its barycentric coordinates in an input face with that side `c_r` are
@@ -18,12 +21,14 @@
 //! written triple sums to 1 in ℚ.
 
 use super::refinement::{FacePlace, RefinedVertex, Refinement};
-use crate::geometry::unfold::unfold_faces;
-use crate::mesh::{Face, Mesh};
+use crate::geometry::unfold::unfold_across;
+use crate::mesh::cut::cut_through_cones;
+use crate::mesh::{Face, HalfEdge, Mesh};
 use crate::scalar::parse::parse_rational;
 use rug::ops::Pow;
 use rug::{Integer, Rational};
 use serde_json::{json, Value};
+use std::collections::HashMap;
 use std::fmt::Write as _;
 
 /// Why the texture coordinates could not be written.
@@ -61,50 +66,49 @@ pub struct UvMesh {
     pub input_faces: usize,
 }
 
-/// Lay `final_mesh` (= `T_F`) out with `final_lengths` and attach texture coordinates,
-/// positions (`input_positions`, per input vertex) and barycentric coordinates in
-/// `input` (= `T_in`) to `refinement` (module documentation).
+/// Lay `final_mesh` (= `T_F`) out with `final_lengths`, cut through the vertices with
+/// `cones[v]` (per vertex of `T_F`), and attach texture coordinates, positions
+/// (`input_positions`, per input vertex) and barycentric coordinates in `input` (= `T_in`)
+/// to `refinement` (module documentation).
 pub fn uv_mesh(
     input: &Mesh,
     input_positions: &[[f64; 3]],
     final_mesh: &Mesh,
     final_lengths: &[f64],
     refinement: Refinement,
+    cones: &[bool],
 ) -> Result<UvMesh, UvError> {
     if input_positions.len() != input.n_vertices() {
         return Err(UvError::NoPositions);
     }
-    // The faces of `T_F` holding a triangle (all of them for a whole refinement; for a
-    // restricted one, e.g. copy 1 of a double, those it meets), unfolded from `f0` when it
-    // is one of them, else from the first triangle's face.
-    let mut held = vec![false; final_mesh.n_faces()];
-    for t in &refinement.triangles {
-        if let Some(h) = held.get_mut(t.final_face.idx()) {
-            *h = true;
-        }
-    }
-    let root = match refinement.triangles.first() {
-        Some(_) if held.first() == Some(&true) => Face(0),
-        Some(t) => t.final_face,
-        None => Face(0),
-    };
-    let lay = unfold_faces(final_mesh, final_lengths, root, |f| held[f.idx()]);
+    let layout = CutLayout::new(final_mesh, final_lengths, &refinement, cones);
     let mut uv = Vec::with_capacity(refinement.triangles.len());
+    for (tri, ids) in refinement
+        .triangles
+        .iter()
+        .zip(refinement.triangles.iter().map(|t| t.vertices))
+    {
+        let c = final_mesh.face_halfedges(tri.final_face);
+        let mut corners = [[0.0; 2]; 3];
+        for (k, pl) in tri.places.iter().enumerate() {
+            corners[k] = match *pl {
+                FacePlace::Corner(r) => layout.at(c[r]),
+                FacePlace::Side(r, tau) => {
+                    let crossing = match refinement.vertices[ids[k] as usize] {
+                        RefinedVertex::Crossing { on, t, .. } if on.edge() == c[r].edge() => {
+                            Some((on, t))
+                        }
+                        _ => None,
+                    };
+                    layout.on_side(final_mesh, c[r], tau, crossing)
+                }
+            }
+            .ok_or(UvError::Layout(tri.final_face.0))?;
+        }
+        uv.push(corners);
+    }
     let mut barycentric = Vec::with_capacity(refinement.triangles.len());
     for tri in &refinement.triangles {
-        let c = final_mesh.face_halfedges(tri.final_face);
-        let p = c.map(|h| lay.corner[h.idx()]);
-        let [Some(p0), Some(p1), Some(p2)] = p else {
-            return Err(UvError::Layout(tri.final_face.0));
-        };
-        let p = [p0, p1, p2];
-        uv.push(tri.places.map(|pl| match pl {
-            FacePlace::Corner(r) => p[r],
-            FacePlace::Side(r, t) => {
-                let (a, b) = (p[r], p[(r + 1) % 3]);
-                [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]
-            }
-        }));
         let ci = input.face_halfedges(tri.input_face);
         let corners = ci.map(|h| input.tail(h));
         if corners[0] == corners[1] || corners[1] == corners[2] || corners[0] == corners[2] {
@@ -149,6 +153,95 @@ pub fn uv_mesh(
     })
 }
 
+/// `T_F` unfolded across every edge but a cut graph through the cones (B113), with one
+/// position per *wedge*: the corners around a vertex between two cut edges (or the
+/// region's boundary) share the position of one of them, so the texture coordinates of a
+/// vertex are bitwise the same on both sides of every edge that is not cut.
+struct CutLayout {
+    /// Per half-edge: the position of its tail in its face's wedge.
+    wedge: Vec<Option<[f64; 2]>>,
+}
+
+impl CutLayout {
+    fn new(mesh: &Mesh, lengths: &[f64], refinement: &Refinement, cones: &[bool]) -> Self {
+        // The faces holding a triangle (all of them for a whole refinement; for a part,
+        // e.g. copy 1 of a double, those it meets), unfolded from `f0` when it is one of
+        // them, else from the first triangle's face.
+        let mut held = vec![false; mesh.n_faces()];
+        for t in &refinement.triangles {
+            if let Some(h) = held.get_mut(t.final_face.idx()) {
+                *h = true;
+            }
+        }
+        let root = match refinement.triangles.first() {
+            Some(_) if held.first() == Some(&true) => Face(0),
+            Some(t) => t.final_face,
+            None => Face(0),
+        };
+        let cut = cut_through_cones(mesh, &held, root, cones);
+        let lay = unfold_across(mesh, lengths, root, |f| held[f.idx()], |e| !cut[e.idx()]);
+        // Union the corners around each vertex across the edges not cut:
+        // corner `h` (tail(h) in face(h)) and corner `twin(prev(h))` are separated by
+        // `edge(prev(h))`.
+        let mut parent: Vec<usize> = (0..mesh.n_halfedges()).collect();
+        for h in mesh.halfedges() {
+            if mesh.face(h).is_none() {
+                continue;
+            }
+            let p = mesh.prev(h);
+            let g = p.twin();
+            if cut[p.edge().idx()] || lay.corner[h.idx()].is_none() || lay.corner[g.idx()].is_none()
+            {
+                continue;
+            }
+            let (a, b) = (find(&mut parent, h.idx()), find(&mut parent, g.idx()));
+            if a != b {
+                parent[a.max(b)] = a.min(b);
+            }
+        }
+        let wedge = (0..mesh.n_halfedges())
+            .map(|h| {
+                let r = find(&mut parent, h);
+                lay.corner[h].and(lay.corner[r])
+            })
+            .collect();
+        Self { wedge }
+    }
+
+    /// The position of corner `tail(h)` in the face of `h`.
+    fn at(&self, h: HalfEdge) -> Option<[f64; 2]> {
+        self.wedge[h.idx()]
+    }
+
+    /// The point at `tau` along side `h` of a face; a crossing `(on, t)` of that edge is
+    /// placed from `on`'s tail by its own `t`, so that both faces of an edge not cut give
+    /// it the same coordinates bit for bit.
+    fn on_side(
+        &self,
+        mesh: &Mesh,
+        h: HalfEdge,
+        tau: f64,
+        crossing: Option<(HalfEdge, f64)>,
+    ) -> Option<[f64; 2]> {
+        let n = mesh.next(h);
+        let (a, b, t) = match crossing {
+            Some((on, t)) if on == h => (self.at(h)?, self.at(n)?, t),
+            Some((_, t)) => (self.at(n)?, self.at(h)?, t),
+            None => (self.at(h)?, self.at(n)?, tau),
+        };
+        Some([a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])])
+    }
+}
+
+/// The root of `x` in a union–find forest, halving the path.
+fn find(parent: &mut [usize], mut x: usize) -> usize {
+    while parent[x] != x {
+        parent[x] = parent[parent[x]];
+        x = parent[x];
+    }
+    x
+}
+
 /// `1 − d` for a decimal string `d` (as Rust prints an `f64`), as an exact decimal string
 /// with no more digits after the point than `d`.
 pub fn decimal_complement(d: &str) -> String {
@@ -169,24 +262,31 @@ pub fn decimal_complement(d: &str) -> String {
 }
 
 impl UvMesh {
-    /// The OBJ text: `v` per refinement vertex, `vt` per triangle corner, `f v/vt` per
-    /// triangle (counterclockwise).
+    /// The OBJ text: `v` per refinement vertex, one `vt` per distinct texture coordinate
+    /// (corners sharing a wedge, B113, share it), `f v/vt` per triangle (counterclockwise).
     pub fn obj(&self) -> String {
         let mut s = String::new();
         let _ = writeln!(s, "# common refinement of the input and the final triangulation; vt: the flattened metric");
         for p in &self.positions {
             let _ = writeln!(s, "v {} {} {}", p[0], p[1], p[2]);
         }
-        for t in &self.uv {
-            for q in t {
-                let _ = writeln!(s, "vt {} {}", q[0], q[1]);
+        let mut index: HashMap<(u64, u64), usize> = HashMap::new();
+        let mut f_lines = String::new();
+        for (t, corners) in self.refinement.triangles.iter().zip(&self.uv) {
+            let _ = write!(f_lines, "f");
+            for (v, q) in t.vertices.iter().zip(corners) {
+                let next = index.len() + 1;
+                let w = *index
+                    .entry((q[0].to_bits(), q[1].to_bits()))
+                    .or_insert_with(|| {
+                        let _ = writeln!(s, "vt {} {}", q[0], q[1]);
+                        next
+                    });
+                let _ = write!(f_lines, " {}/{w}", v + 1);
             }
+            f_lines.push('\n');
         }
-        for (k, t) in self.refinement.triangles.iter().enumerate() {
-            let [a, b, c] = t.vertices.map(|v| v + 1);
-            let w = 3 * k + 1;
-            let _ = writeln!(s, "f {a}/{w} {b}/{} {c}/{}", w + 1, w + 2);
-        }
+        s.push_str(&f_lines);
         s
     }
 

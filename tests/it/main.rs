@@ -50,6 +50,7 @@ mod io_strict_json;
 mod laplacian;
 mod mesh;
 mod mesh_core;
+mod mesh_cut;
 mod mesh_double;
 mod mesh_enumeration;
 mod mesh_gluing;

@@ -230,7 +230,15 @@ fn b109_planar_uv_is_a_rigid_motion_and_checks_hold() {
             .map(|p| [p[0].to_f64(), p[1].to_f64(), 0.0])
             .collect();
         // The layout starts from face 0 of T_F; every face is reached on a disk.
-        let uv = uv_mesh(&t_in, &p3, &mesh, &lengths, r).unwrap();
+        let uv = uv_mesh(
+            &t_in,
+            &p3,
+            &mesh,
+            &lengths,
+            r,
+            &vec![false; mesh.n_vertices()],
+        )
+        .unwrap();
         for (k, t) in uv.refinement.triangles.iter().enumerate() {
             for i in 0..3 {
                 let (a, b) = (t.vertices[i] as usize, t.vertices[(i + 1) % 3] as usize);
@@ -372,7 +380,7 @@ fn b109_closed_cones_uv_area_oracle_and_negative_controls() {
     let report = check_parametrization(&obj, &side).unwrap();
     assert!(report.holds(), "{report:?}");
     // Negative control 1: the first triangle's first UV corner reflected across the line of
-    // the other two: a fold, reported with that triangle.
+    // the other two: a fold, reported with that triangle (and the others sharing that vt).
     let [a, b, c] = uv.uv[0];
     let (dx, dy) = (c[0] - b[0], c[1] - b[1]);
     let lam = ((a[0] - b[0]) * dx + (a[1] - b[1]) * dy) / (dx * dx + dy * dy);
@@ -380,8 +388,16 @@ fn b109_closed_cones_uv_area_oracle_and_negative_controls() {
     let moved = [2.0 * foot[0] - a[0], 2.0 * foot[1] - a[1]];
     let first_vt = format!("vt {} {}", a[0], a[1]);
     let bad_obj = obj.replacen(&first_vt, &format!("vt {} {}", moved[0], moved[1]), 1);
+    // Corners of one wedge share a vt line (B113), so every triangle at that corner moves.
     let r = check_parametrization(&bad_obj, &side).unwrap();
-    assert_eq!(r.uv_folds, vec![0], "{r:?}");
+    assert!(r.uv_folds.contains(&0), "{r:?}");
+    let moved_vertex = uv.refinement.triangles[0].vertices[0];
+    for &k in &r.uv_folds {
+        assert!(
+            uv.refinement.triangles[k].vertices.contains(&moved_vertex),
+            "{r:?}"
+        );
+    }
     // Negative control 2: a barycentric corner of triangle 0 swapped with another corner's:
     // the triangle turns clockwise in its input face and the face is no longer tiled.
     let mut bad_side = side.clone();
@@ -470,8 +486,23 @@ fn b110_seams_of_quarter_turn_cones_and_a_broken_seam() {
     let p = uv.uv[k][i];
     let line = format!("vt {} {}", p[0], p[1]);
     let lines: Vec<&str> = obj.lines().collect();
-    // One comment line, the v lines, then three vt lines per triangle.
-    let at = 1 + uv.positions.len() + 3 * k + i;
+    // One comment line, the v lines, the distinct vt lines, then one f line per triangle:
+    // the vt index of corner i of triangle k.
+    let f_lines: Vec<&str> = lines
+        .iter()
+        .copied()
+        .filter(|l| l.starts_with("f "))
+        .collect();
+    let w: usize = f_lines[k]
+        .split_whitespace()
+        .nth(1 + i)
+        .unwrap()
+        .split('/')
+        .nth(1)
+        .unwrap()
+        .parse()
+        .unwrap();
+    let at = 1 + uv.positions.len() + w - 1;
     assert_eq!(lines[at], line, "the vt line of that corner");
     let mut moved: Vec<String> = lines.iter().map(|l| (*l).to_string()).collect();
     moved[at] = format!("vt {} {}", p[0] + 1e-3, p[1]);

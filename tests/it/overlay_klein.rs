@@ -393,7 +393,12 @@ fn b111_cow_uv_through_ptolemy_flips() {
     // `d < 10⁻⁶ X`: every broken segment must be that short; the longer ones all hold.
     let eps = Rational::from((1, 1_000_000_000u32));
     let seams = check_seams(&obj, &eps).unwrap();
-    assert!(seams.seam_segments > 1000, "{seams:?}");
+    // The cut runs through the four cones only (B113): a few hundred seam segments, not one
+    // per edge of a dual spanning tree's complement.
+    assert!(
+        seams.seam_segments > 0 && seams.seam_segments < s.mesh.n_edges() / 10,
+        "{seams:?}"
+    );
     let extent = uv
         .uv
         .iter()

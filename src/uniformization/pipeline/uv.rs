@@ -47,6 +47,7 @@ pub fn uv_closed(input: &Surface, outcome: &ClosedOutcome) -> Result<UvMesh, Pip
         &sol.mesh,
         &final_lengths,
         refinement,
+        &cones_of(sol),
     )
     .map_err(uv_error)
 }
@@ -85,10 +86,16 @@ pub fn uv_boundary(input: &Surface, outcome: &BoundaryOutcome) -> Result<UvMesh,
         &b.solution.mesh,
         &final_lengths,
         copy_1,
+        &cones_of(&b.solution),
     )
     .map_err(uv_error)?;
     uv.input_faces = m.n_faces();
     Ok(uv)
+}
+
+/// The cones of a solve: the vertices whose target angle is not 2π.
+fn cones_of(sol: &Uniformization) -> Vec<bool> {
+    sol.targets.over_pi().iter().map(|t| *t != 2).collect()
 }
 
 /// The input's vertex positions in binary64 (for the written `v` lines).
