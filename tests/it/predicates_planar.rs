@@ -360,3 +360,83 @@ fn b23_b24_b25_b26_filter_constants_cover_the_error_lemma() {
         );
     }
 }
+
+/// `2^{-k}` exactly.
+fn two_to_minus(k: u32) -> Rational {
+    Rational::from((1, rug::Integer::from(1) << k))
+}
+
+/// B23/B24 through every rung: a slack (or `16·Area²`) of `2⁻²⁰⁰⁰` relative is beyond
+/// every enclosure up to 1024 bits and is decided by the exact rung, as positive; one of
+/// `2⁻⁸⁰` is decided by the first interval rung (the binary64 inputs cannot see it). The
+/// combined verdict of `strict_triangle` carries the highest rung used, whichever slack
+/// needed it (its first here; the other two are decided by the filter).
+#[test]
+fn term_b23_b24_each_rung_decides_and_the_verdict_carries_the_highest() {
+    let l = Ladder::default();
+    let (third, two_thirds) = (q(1, 3), q(2, 3));
+    // a = b + c − ε: slack b + c − a = ε.
+    for (k, stage) in [(2000, Stage::Exact), (80, Stage::Interval { bits: 128 })] {
+        let eps = two_to_minus(k);
+        let a = Rational::from(&third + &two_thirds) - &eps;
+        let s = TriangleSlack::new(&a, &third, &two_thirds);
+        assert_eq!(s.exact_value(), eps);
+        assert_eq!(
+            decide(&s, &l),
+            Certified::Known {
+                value: Sign::Positive,
+                stage
+            },
+            "slack 2^-{k}"
+        );
+        assert_eq!(
+            strict_triangle(&a, &third, &two_thirds, &l),
+            Certified::Known { value: true, stage },
+            "strict 2^-{k}"
+        );
+        // The same triangle from its squares: 16·Area² = (a+b+c)(−a+b+c)(a−b+c)(a+b−c) is
+        // of the order of ε.
+        let sq = |x: &Rational| Rational::from(x * x);
+        let area = TriangleAreaSq::new(&sq(&a), &sq(&third), &sq(&two_thirds));
+        assert!(area.exact_value() > 0);
+        assert_eq!(
+            decide(&area, &l),
+            Certified::Known {
+                value: Sign::Positive,
+                stage
+            },
+            "area 2^-{k}"
+        );
+        assert_eq!(
+            strict_triangle_sq(&sq(&a), &sq(&third), &sq(&two_thirds), &l),
+            Certified::Known { value: true, stage }
+        );
+    }
+}
+
+/// B24's filter bound scales with `(A + B + C)²`: a flat triangle (`16·Area² = 0` exactly,
+/// sides `2/7·s`, `5/7·s`, `s`) whose squared sides are near `2⁸⁰` rounds in binary64 to a
+/// value of the order of `u·2¹⁶⁰` (−3·10³²), which only a bound of that size keeps from
+/// being read as a sign; the verdict
+/// is `Zero`, from the exact rung. The same at `2⁻⁸⁰` (a bound of `u·2⁻¹⁶⁰`).
+#[test]
+fn term_b24_area_filter_bound_scales_with_the_squared_sides() {
+    let l = Ladder::default();
+    for shift in [40i32, -40] {
+        let scale = if shift > 0 {
+            Rational::from(rug::Integer::from(1) << shift as u32)
+        } else {
+            two_to_minus((-shift) as u32)
+        };
+        let a = Rational::from(&scale * 2u32) / 7u32;
+        let b = Rational::from(&scale - &a);
+        let c = scale.clone();
+        let sq = |x: &Rational| Rational::from(x * x);
+        let area = TriangleAreaSq::new(&sq(&a), &sq(&b), &sq(&c));
+        assert_eq!(area.exact_value(), 0);
+        assert_eq!(area.filter(), None, "shift {shift}");
+        assert_eq!(decide(&area, &l).value(), Some(Sign::Zero), "shift {shift}");
+        // Control: without its bound the filter reads the rounding as a sign.
+        assert!(area.filter_scaled(0.0).is_some(), "shift {shift}");
+    }
+}
