@@ -101,7 +101,10 @@ pub fn parametrize<'py>(
     let obj = uv.obj();
     let sidecar = uv.sidecar();
     let eps = Rational::from((1, 1_000_000_000u32));
-    let checked = check_written_uv(&obj, &sidecar, &done.cones, &eps)
+    let text = uv
+        .sidecar_text()
+        .map_err(|e| InputError::new_err(format!("the UV sidecar: {e}")))?;
+    let checked = check_written_uv(&obj, &text, &done.cones, &eps)
         .map_err(|e| InputError::new_err(format!("the written UV mesh does not read back: {e}")))?;
     let report = &checked.parametrization;
     let checks = PyDict::new(py);

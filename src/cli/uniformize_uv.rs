@@ -91,7 +91,9 @@ pub fn write(
         Err(e) => return Ok((format!("{shown}: {e}; no UV mesh written\n"), false)),
     };
     let obj = uv.obj();
-    let sidecar = uv.sidecar();
+    let text = uv
+        .sidecar_text()
+        .map_err(|e| CliError::NotConverged(format!("{shown}: the UV sidecar: {e}")))?;
     let side_path = sidecar_path(path);
     // Both files are created before either is written: neither overwrites a file.
     let f_obj = create_new(path)?;
@@ -103,11 +105,10 @@ pub fn write(
             return Err(e);
         }
     };
-    let text = sidecar.to_string();
     write_all(path, f_obj, obj.as_bytes())?;
     write_all(&side_path, f_side, text.as_bytes())?;
     let eps = Rational::from((1, 1_000_000_000u32));
-    let checks = check_written_uv(&obj, &sidecar, &source.cones, &eps)
+    let checks = check_written_uv(&obj, &text, &source.cones, &eps)
         .map_err(|e| CliError::NotConverged(format!("{}: {e}", path.display())))?;
     let report = &checks.parametrization;
     let mut out = format!(

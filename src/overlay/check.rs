@@ -61,20 +61,32 @@ fn number(word: Option<&str>, line: usize) -> Result<Rational, ParametrizationEr
     parse_rational(w).map_err(|e| ParametrizationError::Obj(line, e.to_string()))
 }
 
-/// A triangle of an OBJ text: its vertex indices (0-based) and its corners' texture
-/// coordinates, read exactly.
-pub(crate) type UvFace = ([usize; 3], [[Rational; 2]; 3]);
+/// The triangles of an OBJ text: per `f` line its vertex indices and its `vt` indices
+/// (0-based), and the `vt` coordinates read exactly (each once).
+pub(crate) struct UvFaces {
+    /// The `vt` lines, read exactly.
+    pub vt: Vec<[Rational; 2]>,
+    /// Per `f` line: vertex indices and `vt` indices.
+    pub faces: Vec<([usize; 3], [usize; 3])>,
+}
+
+impl UvFaces {
+    /// The texture coordinates of the corners of triangle `k`.
+    pub fn uv(&self, k: usize) -> [&[Rational; 2]; 3] {
+        self.faces[k].1.map(|t| &self.vt[t])
+    }
+}
 
 /// The `f` lines of an OBJ text with their texture coordinates, read exactly.
-pub(crate) fn uv_faces(obj: &str) -> Result<Vec<UvFace>, ParametrizationError> {
+pub(crate) fn uv_faces(obj: &str) -> Result<UvFaces, ParametrizationError> {
     let mut vt = Vec::new();
-    let mut tris = Vec::new();
+    let mut faces = Vec::new();
     for (k, line) in obj.lines().enumerate() {
         let mut w = line.split_whitespace();
         match w.next() {
             Some("vt") => vt.push([number(w.next(), k + 1)?, number(w.next(), k + 1)?]),
             Some("f") => {
-                let mut c = Vec::new();
+                let mut c = Vec::with_capacity(3);
                 for word in w {
                     let bad = || ParametrizationError::Obj(k + 1, format!("not v/vt: {word:?}"));
                     let mut parts = word.split('/');
@@ -86,19 +98,20 @@ pub(crate) fn uv_faces(obj: &str) -> Result<Vec<UvFace>, ParametrizationError> {
                     let t = parts
                         .next()
                         .and_then(|x| x.parse::<usize>().ok())
-                        .and_then(|i| vt.get(i.checked_sub(1)?))
+                        .and_then(|i| i.checked_sub(1))
+                        .filter(|&i| i < vt.len())
                         .ok_or_else(bad)?;
-                    c.push((v, t.clone()));
+                    c.push((v, t));
                 }
-                let [(a, ta), (b, tb), (c, tc)]: [(usize, [Rational; 2]); 3] = c
+                let [(a, ta), (b, tb), (c, tc)]: [(usize, usize); 3] = c
                     .try_into()
                     .map_err(|_| ParametrizationError::Obj(k + 1, "not a triangle".into()))?;
-                tris.push(([a, b, c], [ta, tb, tc]));
+                faces.push(([a, b, c], [ta, tb, tc]));
             }
             _ => {}
         }
     }
-    Ok(tris)
+    Ok(UvFaces { vt, faces })
 }
 
 /// The orientation of every UV triangle of an OBJ text, decided exactly on its decimals.
@@ -124,8 +137,10 @@ pub struct UvOrientation {
 /// ```
 pub fn uv_orientation(obj: &str) -> Result<UvOrientation, ParametrizationError> {
     let mut o = UvOrientation::default();
-    for (k, (_, t)) in uv_faces(obj)?.iter().enumerate() {
-        match orient(&t[0], &t[1], &t[2]).cmp0() {
+    let uv = uv_faces(obj)?;
+    for k in 0..uv.faces.len() {
+        let t = uv.uv(k);
+        match orient(t[0], t[1], t[2]).cmp0() {
             std::cmp::Ordering::Less => o.clockwise.push(k),
             std::cmp::Ordering::Equal => o.degenerate.push(k),
             std::cmp::Ordering::Greater => {}
@@ -135,51 +150,108 @@ pub fn uv_orientation(obj: &str) -> Result<UvOrientation, ParametrizationError> 
     Ok(o)
 }
 
+/// One sidecar face: its input face and the decimal strings of its barycentric rows.
+type FaceRows<'a> = (u64, [[&'a str; 3]; 3]);
+
 /// Check the OBJ text `obj` and its `sidecar` exactly (module documentation).
 pub fn check_parametrization(
     obj: &str,
     sidecar: &Value,
 ) -> Result<ParametrizationReport, ParametrizationError> {
     let side = |m: &str| ParametrizationError::Sidecar(m.into());
-    let tris: Vec<[[Rational; 2]; 3]> = uv_faces(obj)?.into_iter().map(|f| f.1).collect();
     let faces = sidecar["faces"]
         .as_array()
         .ok_or_else(|| side("no faces array"))?;
-    if faces.len() != tris.len() {
+    let rows = faces
+        .iter()
+        .map(|f| -> Result<FaceRows<'_>, ParametrizationError> {
+            let input = f["input_face"]
+                .as_u64()
+                .ok_or_else(|| side("a face without input_face"))?;
+            let rows = f["barycentric"]
+                .as_array()
+                .filter(|r| r.len() == 3)
+                .ok_or_else(|| side("a face without three barycentric rows"))?;
+            let mut m = [[""; 3]; 3];
+            for (i, row) in rows.iter().enumerate() {
+                let row = row
+                    .as_array()
+                    .filter(|r| r.len() == 3)
+                    .ok_or_else(|| side("a barycentric row of other than three numbers"))?;
+                for (j, x) in row.iter().enumerate() {
+                    m[i][j] = x.as_str().ok_or_else(|| {
+                        side("a barycentric coordinate that is not a decimal string")
+                    })?;
+                }
+            }
+            Ok((input, m))
+        });
+    let n_input = sidecar["input_faces"]
+        .as_u64()
+        .ok_or_else(|| side("no input_faces count"))?;
+    check_rows(obj, faces.len(), rows, n_input)
+}
+
+/// The sidecar as read from its text, without building a JSON value (the strings borrowed).
+#[derive(serde::Deserialize)]
+struct SidecarText<'a> {
+    input_faces: u64,
+    #[serde(borrow)]
+    faces: Vec<FaceText<'a>>,
+}
+
+/// One face of [`SidecarText`].
+#[derive(serde::Deserialize)]
+struct FaceText<'a> {
+    input_face: u64,
+    #[serde(borrow)]
+    barycentric: [[&'a str; 3]; 3],
+}
+
+/// [`check_parametrization`] from the sidecar's text, read into borrowed strings instead of
+/// a JSON value (the same checks and report; much less memory on large meshes).
+pub fn check_parametrization_text(
+    obj: &str,
+    sidecar: &str,
+) -> Result<ParametrizationReport, ParametrizationError> {
+    let s: SidecarText<'_> =
+        serde_json::from_str(sidecar).map_err(|e| ParametrizationError::Sidecar(e.to_string()))?;
+    let rows = s.faces.iter().map(|f| Ok((f.input_face, f.barycentric)));
+    check_rows(obj, s.faces.len(), rows, s.input_faces)
+}
+
+/// The checks on the OBJ's triangles and the sidecar's rows, `n_faces` of them.
+fn check_rows<'a>(
+    obj: &str,
+    n_faces: usize,
+    rows: impl Iterator<Item = Result<FaceRows<'a>, ParametrizationError>>,
+    n_input: u64,
+) -> Result<ParametrizationReport, ParametrizationError> {
+    let side = |m: &str| ParametrizationError::Sidecar(m.into());
+    let uv = uv_faces(obj)?;
+    if n_faces != uv.faces.len() {
         return Err(ParametrizationError::Sidecar(format!(
             "faces: {} entries, but the OBJ has {} f lines",
-            faces.len(),
-            tris.len()
+            n_faces,
+            uv.faces.len()
         )));
     }
     let mut report = ParametrizationReport {
-        triangles: tris.len(),
+        triangles: uv.faces.len(),
         ..Default::default()
     };
     let mut area: BTreeMap<u64, Rational> = BTreeMap::new();
     let mut broken: Vec<u64> = Vec::new();
-    for (k, (t, f)) in tris.iter().zip(faces).enumerate() {
-        if orient(&t[0], &t[1], &t[2]).cmp0().is_le() {
+    for (k, row) in rows.enumerate() {
+        let (input, text) = row?;
+        let t = uv.uv(k);
+        if orient(t[0], t[1], t[2]).cmp0().is_le() {
             report.uv_folds.push(k);
         }
-        let input = f["input_face"]
-            .as_u64()
-            .ok_or_else(|| side("a face without input_face"))?;
-        let rows = f["barycentric"]
-            .as_array()
-            .filter(|r| r.len() == 3)
-            .ok_or_else(|| side("a face without three barycentric rows"))?;
         let mut m: [[Rational; 3]; 3] = Default::default();
-        for (i, row) in rows.iter().enumerate() {
-            let row = row
-                .as_array()
-                .filter(|r| r.len() == 3)
-                .ok_or_else(|| side("a barycentric row of other than three numbers"))?;
+        for (i, row) in text.iter().enumerate() {
             for (j, x) in row.iter().enumerate() {
-                let s = x
-                    .as_str()
-                    .ok_or_else(|| side("a barycentric coordinate that is not a decimal string"))?;
-                m[i][j] = parse_rational(s).map_err(|e| side(&e.to_string()))?;
+                m[i][j] = parse_rational(x).map_err(|e| side(&e.to_string()))?;
             }
             let sum = Rational::from(&m[i][0] + &m[i][1]) + &m[i][2];
             if sum != 1 {
@@ -192,9 +264,6 @@ pub fn check_parametrization(
         }
         *area.entry(input).or_default() += d;
     }
-    let n_input = sidecar["input_faces"]
-        .as_u64()
-        .ok_or_else(|| side("no input_faces count"))?;
     for f in 0..n_input {
         area.entry(f).or_default();
     }

@@ -29,7 +29,7 @@ pub mod svg;
 pub mod tracking;
 pub mod uv;
 
-pub use check::{check_parametrization, ParametrizationReport};
+pub use check::{check_parametrization, check_parametrization_text, ParametrizationReport};
 pub use normal_coordinates::{replay_normal_coordinates, NormalCoordinates, NormalError};
 pub use refinement::{common_refinement, Refinement, RefinementError};
 pub use seams::{check_seams, SeamReport};

@@ -45,11 +45,11 @@ fn norm2(d: &[Rational; 2]) -> Rational {
 /// Check every seam of the OBJ text `obj` with the relative tolerance `eps` (module
 /// documentation).
 pub fn check_seams(obj: &str, eps: &Rational) -> Result<SeamReport, ParametrizationError> {
-    let faces = uv_faces(obj)?;
+    let uv = uv_faces(obj)?;
     let eps2 = Rational::from(eps * eps);
     // Directed edge (v_a, v_b) → (triangle, uv of a, uv of b).
     let mut side: HashMap<(usize, usize), (usize, usize, usize)> = HashMap::new();
-    for (k, (v, _)) in faces.iter().enumerate() {
+    for (k, (v, _)) in uv.faces.iter().enumerate() {
         for i in 0..3 {
             side.insert((v[i], v[(i + 1) % 3]), (k, i, (i + 1) % 3));
         }
@@ -62,8 +62,9 @@ pub fn check_seams(obj: &str, eps: &Rational) -> Result<SeamReport, Parametrizat
         if k2 < k || (k2 == k && b < a) {
             continue;
         }
-        let (p, q) = (&faces[k].1[ia], &faces[k].1[ib]);
-        let (p2, q2) = (&faces[k2].1[ja], &faces[k2].1[jb]);
+        let (t, t2) = (uv.uv(k), uv.uv(k2));
+        let (p, q) = (t[ia], t[ib]);
+        let (p2, q2) = (t2[ja], t2[jb]);
         if p == p2 && q == q2 {
             continue;
         }

@@ -410,6 +410,41 @@ fn b109_closed_cones_uv_area_oracle_and_negative_controls() {
     let _ = Face(0);
 }
 
+/// The sidecar written face by face (`sidecar_text`) is the same text as the JSON value
+/// printed (`sidecar().to_string()`), and the check from text gives the same report as the
+/// check from the value, on the good files and on a tampered one (a barycentric row moved).
+#[test]
+fn b109_sidecar_text_is_the_value_printed_and_checks_the_same() {
+    let (s, targets) = four_cone_icosahedron();
+    let opts = Options {
+        precision: Precision::F64,
+        certify: false,
+    };
+    let out = uniformize_closed(&s, &targets, &opts, &mut |_| {}).unwrap();
+    let uv = uv_closed(&s, &out).unwrap();
+    let (obj, value, text) = (uv.obj(), uv.sidecar(), uv.sidecar_text().unwrap());
+    assert_eq!(text, value.to_string());
+    let a = check_parametrization(&obj, &value).unwrap();
+    assert!(a.holds());
+    assert_eq!(
+        penner::overlay::check_parametrization_text(&obj, &text).unwrap(),
+        a
+    );
+    let mut bad = value.clone();
+    bad["faces"][0]["barycentric"]
+        .as_array_mut()
+        .unwrap()
+        .swap(0, 1);
+    let b = check_parametrization(&obj, &bad).unwrap();
+    assert!(!b.holds());
+    assert_eq!(
+        penner::overlay::check_parametrization_text(&obj, &bad.to_string()).unwrap(),
+        b
+    );
+    // A truncated sidecar is an error, not a report.
+    assert!(penner::overlay::check_parametrization_text(&obj, &text[..text.len() / 2]).is_err());
+}
+
 /// Typed errors, never panics: a flip whose quadrilateral is not convex in the input metric
 /// (what a Ptolemy flip far from a Euclidean one is) is `NotStraight` and changes nothing;
 /// a boundary flip is refused; a surface without positions gets no UVs (bad input).

@@ -107,7 +107,8 @@ fn b109_boundary_uv_of_copy_1_angle_sums_and_controls() {
             s.name
         );
         let eps = Rational::from((1, 1_000_000_000u32));
-        let written = check_written_uv(&uv.obj(), &uv.sidecar(), &cones, &eps).unwrap();
+        let written =
+            check_written_uv(&uv.obj(), &uv.sidecar_text().unwrap(), &cones, &eps).unwrap();
         assert_eq!(written.parametrization, report);
         assert_eq!(written.seams.is_some(), cones.quarter_turns);
         if let Some(seams) = written.seams {

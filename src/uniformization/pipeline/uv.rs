@@ -18,16 +18,16 @@ use crate::algorithms::flip_to_delaunay::{flip_to_delaunay, FlipKind, FlipOption
 use crate::io::Surface;
 use crate::mesh::double::Sheet;
 use crate::mesh::Mesh;
+use crate::overlay::check::check_parametrization_text;
 use crate::overlay::check::ParametrizationError;
 use crate::overlay::tracking::track_euclidean_then_ptolemy;
 use crate::overlay::tracking::TrackError;
 use crate::overlay::uv::UvError;
-use crate::overlay::{check_parametrization, check_seams, ParametrizationReport, SeamReport};
+use crate::overlay::{check_seams, ParametrizationReport, SeamReport};
 use crate::overlay::{common_refinement, replay_normal_coordinates, uv_mesh, Refinement, UvMesh};
 use crate::uniformization::newton::Uniformization;
 use crate::uniformization::svg::scaled_lengths_f64;
 use rug::Rational;
-use serde_json::Value;
 
 /// The UV mesh of a converged closed-surface outcome of `input` (the surface as given,
 /// whose 3-D positions are written): module documentation. Bad input (no positions, an
@@ -237,14 +237,15 @@ pub struct WrittenUvChecks {
     pub seams: Option<SeamReport>,
 }
 
-/// Check the OBJ text `obj` and its `sidecar` as written (module documentation).
+/// Check the OBJ text `obj` and its sidecar's text `sidecar` as written (module
+/// documentation).
 pub fn check_written_uv(
     obj: &str,
-    sidecar: &Value,
+    sidecar: &str,
     cones: &UvCones,
     seam_epsilon: &Rational,
 ) -> Result<WrittenUvChecks, ParametrizationError> {
-    let parametrization = check_parametrization(obj, sidecar)?;
+    let parametrization = check_parametrization_text(obj, sidecar)?;
     let seams = if cones.quarter_turns {
         Some(check_seams(obj, seam_epsilon)?)
     } else {
