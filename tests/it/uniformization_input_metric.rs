@@ -377,6 +377,14 @@ fn b79_boundary_double_certifies_the_exact_metric_of_decimal_positions() {
     let b = uniformize_with_boundary(&s.mesh, &l, &t, &opts, &mut |_| {}).expect("solves");
     assert!(b.solution.converged());
     let d = double_surface(&s, &b.double).expect("the double's metric");
+    // Built without validating again (B78: each face of D carries a face's three values);
+    // the independent check is the validation itself, which it passes.
+    assert_eq!(d.validate(), Ok(()));
+    // Control: a double that is not this surface's is refused.
+    let other =
+        penner::mesh::double::Double::of(&penner::mesh::builders::grid_disk(1, 1).unwrap().mesh)
+            .unwrap();
+    assert!(double_surface(&s, &other).is_none());
     let dl = b.double.pull_back_edges(&l).unwrap();
     let c = certify_solution(&d, &dl, &b.solution, P::default()).expect("certifies");
     assert_eq!(c.metric, CertifiedMetric::Input);

@@ -190,11 +190,25 @@ pub fn uniformize_boundary(
 /// The double `D` of a surface with boundary (B79) as a closed [`Surface`] with `surface`'s
 /// exact metric pulled back to both copies (no positions: copy 2 is the mirror image, not
 /// an embedding). `None` when `double` is not the double of `surface.mesh`.
+///
+/// The metric is not validated again: every face of `D` is a face of `surface` or its
+/// mirror image, with the same three edge values (B78), so the strict triangle
+/// inequalities that [`Surface::new`] checked on `surface` hold on `D` face by face.
 pub fn double_surface(surface: &Surface, double: &Double) -> Option<Surface> {
+    if double.face_origin.len() != double.mesh.n_faces()
+        || double.edge_origin.len() != double.mesh.n_edges()
+        || double.mesh.n_faces() != 2 * surface.mesh.n_faces()
+    {
+        return None;
+    }
     let metric = match &surface.metric {
         Metric::Lengths(v) => Metric::Lengths(double.pull_back_edges(v)?),
         Metric::SquaredLengths(v) => Metric::SquaredLengths(double.pull_back_edges(v)?),
     };
-    let name = format!("double of {}", surface.name);
-    Surface::new(name, double.mesh.clone(), metric, None).ok()
+    Some(Surface {
+        mesh: double.mesh.clone(),
+        metric,
+        positions: None,
+        name: format!("double of {}", surface.name),
+    })
 }
