@@ -8,7 +8,7 @@ use crate::support::cases;
 use malachite::rational::Rational as MQ;
 use num_rational::BigRational as NQ;
 use penner::predicates::ladder::{decide, Ladder, SignPredicate};
-use penner::predicates::planar::{InCircle, Orient2d, Point};
+use penner::predicates::planar::{point_from_f64, InCircle, Orient2d, Point};
 use penner::predicates::triangle::{
     strict_triangle, strict_triangle_sq, TriangleAreaSq, TriangleSlack,
 };
@@ -439,4 +439,92 @@ fn term_b24_area_filter_bound_scales_with_the_squared_sides() {
         // Control: without its bound the filter reads the rounding as a sign.
         assert!(area.filter_scaled(0.0).is_some(), "shift {shift}");
     }
+}
+
+/// B25's filter bound `8u·T`, `T = (|bx|+|ax|)(|cy|+|ay|) + (|by|+|ay|)(|cx|+|ax|)`: each
+/// factor and each sum of `T` is needed. These exactly collinear rational triples (found by
+/// a search over lines through points far from the origin, with small steps along them)
+/// round in binary64 to a determinant that a bound with one of `T`'s eight operations
+/// changed (a product read as a sum or a quotient, a sum as a product) would read as a
+/// sign; with `T` the filter declines and the exact rung answers `Zero`. Control: without
+/// its bound the filter reads a sign on every triple.
+#[test]
+fn term_b25_each_factor_of_the_orientation_bound_is_needed() {
+    let witnesses: [[(&str, &str); 3]; 6] = [
+        [
+            ("-11/15728640", "3200/231"),
+            ("-2503/7864320", "24179/231"),
+            ("-1/2621440", "289/21"),
+        ],
+        [
+            ("-9/10485760", "3145822/3"),
+            ("-10995116277760000063/73400320", "4145822/3"),
+            ("-10995116277823/73400320", "3145823/3"),
+        ],
+        [
+            ("36283883716847/33", "1/10485760"),
+            ("36283883716858/33", "17/73400320"),
+            ("36283894716847/33", "10000007/73400320"),
+        ],
+        [
+            ("3145750/3", "1/2097152"),
+            ("34603550/33", "209715213/27262976"),
+            ("34603253/33", "2097165/27262976"),
+        ],
+        [
+            ("-524288/5", "43980465111043/3298534883328"),
+            ("-11815744/65", "3299018668444221473/36283883716608"),
+            ("-6815749/65", "487083651104801/36283883716608"),
+        ],
+        [
+            ("3/10485760", "74766790688771/3298534883328"),
+            ("10995116277811/178257920", "825733232459809/36283883716608"),
+            (
+                "1099511627776051/178257920",
+                "1152288185909281/36283883716608",
+            ),
+        ],
+    ];
+    let l = Ladder::default();
+    for w in witnesses {
+        let p = w.map(|(x, y)| -> Point { [x.parse().unwrap(), y.parse().unwrap()] });
+        let o = Orient2d::new(&p[0], &p[1], &p[2]);
+        assert_eq!(o.exact_value(), 0, "{w:?}");
+        assert_eq!(o.filter(), None, "{w:?}");
+        assert_eq!(decide(&o, &l).value(), Some(Sign::Zero), "{w:?}");
+        assert!(o.filter_scaled(0.0).is_some(), "{w:?}");
+    }
+}
+
+/// B25/B20 through every rung of the orientation: a point `2⁻²⁰⁰⁰` off the line is decided
+/// by the exact rung, one `2⁻⁸⁰` off by the first interval rung; `point_from_f64` takes
+/// binary64 coordinates exactly and refuses NaN and infinities.
+#[test]
+fn term_b25_each_rung_of_the_orientation_decides() {
+    let l = Ladder::default();
+    let (a, c) = (
+        point_from_f64(0.0, 0.0).unwrap(),
+        point_from_f64(1.0, 1.0).unwrap(),
+    );
+    for (k, stage) in [(2000u32, Stage::Exact), (80, Stage::Interval { bits: 128 })] {
+        let third = q(1, 3);
+        let eps = Rational::from((1, rug::Integer::from(1) << k));
+        let b: Point = [third.clone(), Rational::from(&third + &eps)];
+        let o = Orient2d::new(&a, &b, &c);
+        assert_eq!(o.exact_value(), Rational::from(-&eps), "2^-{k}");
+        assert_eq!(
+            decide(&o, &l),
+            Certified::Known {
+                value: Sign::Negative,
+                stage
+            },
+            "2^-{k}"
+        );
+    }
+    assert_eq!(
+        point_from_f64(0.1, -2.5),
+        Some([Rational::from_f64(0.1).unwrap(), q(-5, 2)])
+    );
+    assert_eq!(point_from_f64(f64::NAN, 0.0), None);
+    assert_eq!(point_from_f64(0.0, f64::INFINITY), None);
 }
