@@ -528,3 +528,92 @@ fn term_b25_each_rung_of_the_orientation_decides() {
     assert_eq!(point_from_f64(f64::NAN, 0.0), None);
     assert_eq!(point_from_f64(0.0, f64::INFINITY), None);
 }
+
+/// B26's filter bound `16u·P`, `P` built from the sums `|a·| + |d·|` of each coordinate: each
+/// of the six sums is needed. These exactly cocircular rational quadruples (points of a
+/// circle with a rational parametrization, far below 1 in size, found by a search) round in
+/// binary64 to a determinant that a bound with one sum read as a product would read as a
+/// sign; with `P` the filter declines and the exact rung answers `Zero`. Control: without
+/// its bound the filter reads a sign on every quadruple.
+#[test]
+fn term_b26_each_sum_of_the_incircle_bound_is_needed() {
+    let witnesses: [[(&str, &str); 4]; 6] = [
+        // `ax + dx` read as a product
+        [
+            ("509/37580963840", "-1/5368709120"),
+            ("321/18790481920", "33/1342177280"),
+            ("951/97710505984", "423/13958643712"),
+            ("-6511/729070698496", "87/104152956928"),
+        ],
+        // `ay + dy` read as a product
+        [
+            ("-2027/5894045696", "689/133955584"),
+            ("1427/343146496", "745/124780544"),
+            ("1871/403701760", "-1/4587520"),
+            ("-293/7831814144", "-1/177995776"),
+        ],
+        // `bx + dx` read as a product
+        [
+            ("185/398358216704", "19615/1877974450176"),
+            ("457/37580963840", "-49/177167400960"),
+            ("4261/383325831168", "2671/200789721088"),
+            ("4175/2187212095488", "217/1145682526208"),
+        ],
+        // `by + dy` read as a product
+        [
+            ("163/7168", "29/1536"),
+            ("-1/65408", "4423/224256"),
+            ("7439/293888", "419/31488"),
+            ("419/347648", "-233/297984"),
+        ],
+        // `cx + dx` read as a product
+        [
+            ("-6297/611319808", "4847/166723584"),
+            ("1757/59113472", "719/32243712"),
+            ("1239/57671680", "-1/15728640"),
+            ("-7133/1118830592", "367/305135616"),
+        ],
+        // `cy + dy` read as a product
+        [
+            ("109/37580963840", "-49/88583700480"),
+            ("251/95831457792", "623/200789721088"),
+            ("-67/1646046216192", "1127/431107342336"),
+            ("307/2187212095488", "-245/572841263104"),
+        ],
+    ];
+    let l = Ladder::default();
+    for w in witnesses {
+        let p = w.map(|(x, y)| -> Point { [x.parse().unwrap(), y.parse().unwrap()] });
+        let ic = InCircle::new(&p[0], &p[1], &p[2], &p[3]);
+        assert_eq!(ic.exact_value(), 0, "{w:?}");
+        assert_eq!(ic.filter(), None, "{w:?}");
+        assert_eq!(decide(&ic, &l).value(), Some(Sign::Zero), "{w:?}");
+        assert!(ic.filter_scaled(0.0).is_some(), "{w:?}");
+    }
+}
+
+/// The rungs of the incircle test: `d` moved `2⁻²⁰⁰⁰` off the unit circle through
+/// `a, b, c` is decided by the exact rung, `2⁻⁸⁰` off by the first interval rung.
+#[test]
+fn term_b26_each_rung_of_the_incircle_decides() {
+    let l = Ladder::default();
+    let p = |x: Rational, y: Rational| -> Point { [x, y] };
+    // (3/5, 4/5), (−1, 0), (0, −1) on the unit circle; d = (5/13, 12/13) pushed outward.
+    let (a, b, c) = (
+        p(q(3, 5), q(4, 5)),
+        p(q(-1, 1), q(0, 1)),
+        p(q(0, 1), q(-1, 1)),
+    );
+    for (k, stage) in [(2000u32, Stage::Exact), (80, Stage::Interval { bits: 128 })] {
+        let eps = Rational::from((1, rug::Integer::from(1) << k));
+        let d = p(Rational::from(&q(5, 13) + &eps), q(12, 13));
+        let ic = InCircle::new(&a, &b, &c, &d);
+        let want = Sign::of_ordering(ic.exact_value().cmp0());
+        assert_ne!(want, Sign::Zero);
+        assert_eq!(
+            decide(&ic, &l),
+            Certified::Known { value: want, stage },
+            "2^-{k}"
+        );
+    }
+}
