@@ -199,6 +199,16 @@ def read_mesh(path: PathLike) -> Tuple[Optional[np.ndarray], np.ndarray]:
     return s.V, s.F
 
 
+def _target_literals(targets: Optional[Sequence[Any]]) -> Optional[List[str]]:
+    """The targets ``Θ_i/π`` as exact literals, one per vertex (None stays None)."""
+    if targets is None:
+        return None
+    if isinstance(targets, (str, bytes)):
+        raise InputError("targets: expected one Θ_i/π per vertex, not a string")
+    seq = targets.ravel().tolist() if isinstance(targets, np.ndarray) else list(targets)
+    return [_literal(x, f"targets[{i}]") for i, x in enumerate(seq)]
+
+
 def _surface_of(V: Any, F: Any, l: Any) -> Surface:
     if isinstance(V, Surface):
         return V
@@ -390,12 +400,7 @@ def uniformize(
     (True, (4,))
     """
     s = _surface_of(V, F, l)
-    t = None
-    if targets is not None:
-        if isinstance(targets, (str, bytes)):
-            raise InputError("targets: expected one Θ_i/π per vertex, not a string")
-        seq = targets.ravel().tolist() if isinstance(targets, np.ndarray) else list(targets)
-        t = [_literal(x, f"targets[{i}]") for i, x in enumerate(seq)]
+    t = _target_literals(targets)
     if pole is not None:
         if isinstance(pole, (bool, np.bool_)) or not isinstance(pole, (int, np.integer)) or pole < 0:
             raise InputError(f"pole: {pole!r} is not a vertex index")
@@ -465,12 +470,7 @@ def parametrize(
     (True, 3, (3, 2))
     """
     s = _surface_of(V, F, None)
-    t = None
-    if targets is not None:
-        if isinstance(targets, (str, bytes)):
-            raise InputError("targets: expected one Θ_i/π per vertex, not a string")
-        seq = targets.ravel().tolist() if isinstance(targets, np.ndarray) else list(targets)
-        t = [_literal(x, f"targets[{i}]") for i, x in enumerate(seq)]
+    t = _target_literals(targets)
     return Parametrization(**_penner.parametrize(s, t, bool(flat)))
 
 
