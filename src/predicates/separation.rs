@@ -463,4 +463,70 @@ mod tests {
         let near = e.add(zero, eps);
         assert_eq!(e.sign(near, 1 << 16), Some(Sign::Positive));
     }
+
+    /// B107's rounding margin: `up(x)` exceeds `x` by more than the `f64` rounding of the
+    /// few operations behind a bound, at every scale (relative `2⁻⁴⁰`, absolute `2⁻²⁰`).
+    #[test]
+    fn term_b107_bounds_are_rounded_up_at_every_scale() {
+        for x in [0.0, 1.0, 1e12, -5.0, 3.5e-8] {
+            let y = up(x);
+            assert!(
+                y >= x + x.abs() * 2f64.powi(-41) + 2f64.powi(-21),
+                "{x:e} -> {y:e}"
+            );
+        }
+    }
+
+    /// The interval product encloses every product of the two enclosures' points, for
+    /// every sign pattern: the end products in ℚ are the oracle (the extremes are among
+    /// them), and with exactly representable ends the enclosure is those extremes.
+    #[test]
+    fn term_b107_interval_product_encloses_all_sign_patterns() {
+        let r = |n: i64| Rational::from(n);
+        let cases = [
+            ((-2, 3), (-5, 1)),
+            ((-3, -1), (2, 4)),
+            ((1, 2), (-4, -3)),
+            ((0, 1), (0, 2)),
+            ((-1, 0), (2, 3)),
+            ((-4, -2), (-3, -1)),
+            ((2, 5), (3, 7)),
+        ];
+        for ((a, b), (c, d)) in cases {
+            let x = Enc {
+                lo: Float::with_val(64, a),
+                hi: Float::with_val(64, b),
+            };
+            let y = Enc {
+                lo: Float::with_val(64, c),
+                hi: Float::with_val(64, d),
+            };
+            let z = x.mul(&y, 64);
+            let ends = [r(a) * r(c), r(a) * r(d), r(b) * r(c), r(b) * r(d)];
+            let (lo, hi) = (ends.iter().min().unwrap(), ends.iter().max().unwrap());
+            assert_eq!(z.lo.to_rational().unwrap(), *lo, "[{a},{b}]·[{c},{d}]");
+            assert_eq!(z.hi.to_rational().unwrap(), *hi, "[{a},{b}]·[{c},{d}]");
+        }
+    }
+
+    /// Division decides: `√2/2 − 1/√2` is exactly 0 and `1/√2 − 7/10` positive, each
+    /// decided through an enclosed quotient (a quotient whose divisor straddles 0 is no
+    /// number, so the sign is refused, not guessed).
+    #[test]
+    fn term_b107_quotients_are_enclosed_and_decide() {
+        let mut e = Expr::new();
+        let two = q(&mut e, 2, 1);
+        let one = q(&mut e, 1, 1);
+        let r2 = e.sqrt(two);
+        let half_r2 = e.div(r2, two);
+        let inv_r2 = e.div(one, r2);
+        let zero = e.sub(half_r2, inv_r2);
+        assert_eq!(e.sign(zero, 1 << 12), Some(Sign::Zero));
+        let seven_tenths = q(&mut e, 7, 10);
+        let pos = e.sub(inv_r2, seven_tenths);
+        assert_eq!(e.sign(pos, 1 << 12), Some(Sign::Positive));
+        // Control: dividing by the exact zero above is refused.
+        let bad = e.div(one, zero);
+        assert_eq!(e.sign(bad, 1 << 12), None);
+    }
 }
