@@ -528,5 +528,28 @@ mod tests {
         // Control: dividing by the exact zero above is refused.
         let bad = e.div(one, zero);
         assert_eq!(e.sign(bad, 1 << 12), None);
+        // The interval quotient itself: a divisor with 0 in it or at an end is refused,
+        // one of either sign is divided (ends in ℚ as the oracle).
+        let enc = |a: i64, b: i64| Enc {
+            lo: Float::with_val(64, a),
+            hi: Float::with_val(64, b),
+        };
+        let x = enc(3, 6);
+        for (a, b) in [(0, 1), (-1, 0), (-1, 1), (0, 0)] {
+            assert!(x.div(&enc(a, b), 64).is_none(), "[3, 6] / [{a}, {b}]");
+        }
+        for ((a, b), (lo, hi)) in [((1, 2), ((3, 2), (6, 1))), ((-2, -1), ((-6, 1), (-3, 2)))] {
+            let z = x.div(&enc(a, b), 64).expect("a divisor of one sign");
+            assert_eq!(
+                z.lo.to_rational().unwrap(),
+                Rational::from(lo),
+                "[3, 6] / [{a}, {b}]"
+            );
+            assert_eq!(
+                z.hi.to_rational().unwrap(),
+                Rational::from(hi),
+                "[3, 6] / [{a}, {b}]"
+            );
+        }
     }
 }
