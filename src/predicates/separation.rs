@@ -552,4 +552,42 @@ mod tests {
             );
         }
     }
+
+    /// The enclosure guards: `is_number` refuses NaN ends and `lo > hi`; the square root
+    /// refuses an enclosure reaching below 0 (`−0` is 0) and encloses `√` of the ends.
+    #[test]
+    fn term_b107_enclosure_guards() {
+        let enc = |a: f64, b: f64| Enc {
+            lo: Float::with_val(64, a),
+            hi: Float::with_val(64, b),
+        };
+        assert!(enc(1.0, 2.0).is_number() && enc(-1.0, -1.0).is_number());
+        for (a, b) in [(f64::NAN, 1.0), (1.0, f64::NAN), (2.0, 1.0)] {
+            assert!(!enc(a, b).is_number(), "[{a}, {b}]");
+        }
+        assert!(enc(-1.0, 4.0).sqrt(64).is_none());
+        assert!(enc(-1e-300, 4.0).sqrt(64).is_none());
+        let r = enc(-0.0, 4.0).sqrt(64).expect("−0 is 0");
+        assert_eq!((r.lo.to_f64(), r.hi.to_f64()), (0.0, 2.0));
+    }
+
+    /// The expression's size, and the leaves `±1` adding nothing to the bound: with one
+    /// radical (`D − 1 = 1`, so `log₂ u` counts), the bound of `√x·(−1)` equals that of
+    /// `√x·1`.
+    #[test]
+    fn term_b107_unit_leaves_add_nothing_to_the_bound() {
+        let mut e = Expr::new();
+        assert!(e.is_empty());
+        assert_eq!(e.len(), 0);
+        let five_sevenths = q(&mut e, 5, 7);
+        let (one, minus_one) = (q(&mut e, 1, 1), q(&mut e, -1, 1));
+        assert!(!e.is_empty() && e.len() == 3);
+        let x = e.sqrt(five_sevenths);
+        let (a, b) = (e.mul(x, one), e.mul(x, minus_one));
+        assert_eq!(e.separation_bits(a), e.separation_bits(b));
+        // Control: a leaf 2 is not a unit and raises the bound.
+        let two = q(&mut e, 2, 1);
+        let c = e.mul(x, two);
+        assert!(e.separation_bits(c) > e.separation_bits(a));
+    }
 }
