@@ -611,7 +611,12 @@ mod tests {
                 );
                 let x = Rational::from((p, d));
                 r.push((
-                    f64::from(x.numer().clone().abs().max(Integer::from(1)).to_f64()).log2(),
+                    x.numer()
+                        .clone()
+                        .abs()
+                        .max(Integer::from(1))
+                        .to_f64()
+                        .log2(),
                     x.denom().to_f64().log2(),
                     false,
                 ));
@@ -632,7 +637,7 @@ mod tests {
                     2 => (e.mul(ids[a], ids[b]), (ua + ub, la + lb, false)),
                     3 => (e.div(ids[a], ids[b]), (ua + lb, la + ub, false)),
                     _ => {
-                        let half = (ua + la) / 2.0;
+                        let half = f64::midpoint(ua, la);
                         let (u, l) = if ua >= la { (half, la) } else { (ua, half) };
                         (e.sqrt(ids[a]), (u, l, true))
                     }
