@@ -657,4 +657,29 @@ mod tests {
             );
         }
     }
+
+    /// The zero rule's threshold is `2^{−B}`, applied only to an enclosure inside it: for
+    /// `b = 2¹⁵⁰`, `E = √(b² + 1) − b ≈ 2⁻¹⁵¹` is positive, and its 256-bit enclosure
+    /// (width about `2⁻¹⁰⁶`) contains 0 while `B ≈ 152` already allows the rule there. A
+    /// threshold of `2^{+B}` (or of 1) would call it zero. Control: `√(b²) − b` is zero.
+    #[test]
+    fn term_b107_zero_rule_threshold_is_two_to_the_minus_b() {
+        let b = Rational::from(Integer::from(1) << 150u32);
+        let b2 = Rational::from(&b * &b);
+        for (radicand, want) in [
+            (Rational::from(&b2 + 1u32), Sign::Positive),
+            (b2.clone(), Sign::Zero),
+        ] {
+            let mut e = Expr::new();
+            let (r, bb) = (e.rational(radicand), e.rational(b.clone()));
+            let root = e.sqrt(r);
+            let diff = e.sub(root, bb);
+            let bits = e.separation_bits(diff).unwrap();
+            assert!(
+                bits + 64.0 <= 256.0,
+                "B = {bits}: the rule applies at 256 bits"
+            );
+            assert_eq!(e.sign(diff, 1 << 12), Some(want));
+        }
+    }
 }
