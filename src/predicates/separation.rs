@@ -656,6 +656,16 @@ mod tests {
                 "B = {got} below {reference}"
             );
         }
+        // A sum whose larger term is the second one's: `1 + √(10³⁰)` (`l_a = 0`, `u_b` about
+        // 50 bits), where `u = max(u_a l_b, l_a u_b)` must take `l_a + u_b`, not `l_a·u_b`.
+        let mut e = Expr::new();
+        let one = e.rational(Rational::from(1));
+        let big = e.rational(Rational::from(rug::ops::Pow::pow(Integer::from(10), 30u32)));
+        let r = e.sqrt(big);
+        let sum = e.add(one, r);
+        let reference = lse(0.0, 30.0 * 10f64.log2() / 2.0);
+        let got = e.separation_bits(sum).unwrap();
+        assert!(got >= reference, "B = {got} below {reference}");
     }
 
     /// The zero rule's threshold is `2^{−B}`, applied only to an enclosure inside it: for
