@@ -29,7 +29,7 @@ use rug::ops::Pow;
 use rug::{Integer, Rational};
 use serde::ser::{SerializeMap, SerializeSeq};
 use serde::{Serialize, Serializer};
-use serde_json::{json, Value};
+use serde_json::Value;
 use std::collections::HashMap;
 use std::fmt::Write as _;
 
@@ -296,28 +296,9 @@ impl UvMesh {
     /// `T_F`, `t`); per face its input face, face of `T_F` and the barycentric coordinates
     /// of its corners in the input face (decimal strings, each triple summing to 1).
     pub fn sidecar(&self) -> Value {
-        let vertices: Vec<Value> = self
-            .refinement
-            .vertices
-            .iter()
-            .map(|v| match *v {
-                RefinedVertex::Input(w) => json!({ "input_vertex": w.0 }),
-                RefinedVertex::Crossing { edge, s, on, t } => json!({
-                    "crossing": { "input_edge": edge.0, "s": s.to_string(), "final_edge": on.edge().0, "t": t.to_string() }
-                }),
-            })
-            .collect();
-        let faces: Vec<Value> = self
-            .refinement
-            .triangles
-            .iter()
-            .zip(&self.barycentric)
-            .map(|(t, b)| {
-                let bary = barycentric_rows(b);
-                json!({ "input_face": t.input_face.0, "final_face": t.final_face.0, "barycentric": bary })
-            })
-            .collect();
-        json!({ "format": "penner-uv-1", "input_faces": self.input_faces, "vertices": vertices, "faces": faces })
+        // The one definition of the format is `SidecarOut`; it serializes plain data (maps
+        // with string keys, strings and integers), which cannot fail.
+        serde_json::to_value(SidecarOut(self)).unwrap_or(Value::Null)
     }
 
     /// The sidecar's JSON text, the same bytes as `sidecar().to_string()`, written face by

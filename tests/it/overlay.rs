@@ -323,6 +323,17 @@ fn four_cone_icosahedron() -> (Surface, Targets) {
     (s, Targets::from_multiples_of_pi(t))
 }
 
+/// The UV mesh of the four-cone icosahedron, solved in binary64 without a certificate.
+fn four_cone_uv() -> penner::overlay::UvMesh {
+    let (s, targets) = four_cone_icosahedron();
+    let opts = Options {
+        precision: Precision::F64,
+        certify: false,
+    };
+    let out = uniformize_closed(&s, &targets, &opts, &mut |_| {}).unwrap();
+    uv_closed(&s, &out).unwrap()
+}
+
 /// B109 end to end on a closed surface with cones: the UV areas of each face of `T_F`
 /// sum to its area from the final lengths at 256 bits (Heron, an oracle independent of
 /// the layout and of the refinement), the exact checks hold, and the negative controls
@@ -411,19 +422,50 @@ fn b109_closed_cones_uv_area_oracle_and_negative_controls() {
 }
 
 /// The sidecar written face by face (`sidecar_text`) is the same text as the JSON value
-/// printed (`sidecar().to_string()`), and the check from text gives the same report as the
+/// printed (`sidecar().to_string()`) and as the format built independently here, and the check from text gives the same report as the
 /// check from the value, on the good files and on a tampered one (a barycentric row moved).
 #[test]
 fn b109_sidecar_text_is_the_value_printed_and_checks_the_same() {
-    let (s, targets) = four_cone_icosahedron();
-    let opts = Options {
-        precision: Precision::F64,
-        certify: false,
-    };
-    let out = uniformize_closed(&s, &targets, &opts, &mut |_| {}).unwrap();
-    let uv = uv_closed(&s, &out).unwrap();
+    let uv = four_cone_uv();
     let (obj, value, text) = (uv.obj(), uv.sidecar(), uv.sidecar_text().unwrap());
     assert_eq!(text, value.to_string());
+    // The format built independently, key by key, from the mesh's fields.
+    let rows = |b: &[(usize, f64); 3]| -> Vec<Vec<String>> {
+        b.iter()
+            .map(|&(r, sigma)| {
+                let d = sigma.to_string();
+                let mut row = vec!["0".to_string(); 3];
+                row[r] = decimal_complement(&d);
+                if d != "0" {
+                    row[(r + 1) % 3] = d;
+                }
+                row
+            })
+            .collect()
+    };
+    let vertices: Vec<serde_json::Value> = uv
+        .refinement
+        .vertices
+        .iter()
+        .map(|v| match *v {
+            penner::overlay::refinement::RefinedVertex::Input(w) => {
+                serde_json::json!({ "input_vertex": w.0 })
+            }
+            penner::overlay::refinement::RefinedVertex::Crossing { edge, s, on, t } => {
+                serde_json::json!({ "crossing": { "input_edge": edge.0, "s": s.to_string(), "final_edge": on.edge().0, "t": t.to_string() } })
+            }
+        })
+        .collect();
+    let faces: Vec<serde_json::Value> = uv
+        .refinement
+        .triangles
+        .iter()
+        .zip(&uv.barycentric)
+        .map(|(t, b)| serde_json::json!({ "input_face": t.input_face.0, "final_face": t.final_face.0, "barycentric": rows(b) }))
+        .collect();
+    let oracle = serde_json::json!({ "format": "penner-uv-1", "input_faces": uv.input_faces, "vertices": vertices, "faces": faces });
+    assert_eq!(value, oracle);
+    assert_eq!(text, oracle.to_string());
     let a = check_parametrization(&obj, &value).unwrap();
     assert!(a.holds());
     assert_eq!(
@@ -492,13 +534,7 @@ fn b108_nonconvex_flip_and_missing_positions_are_typed_errors() {
 #[test]
 fn b110_seams_of_quarter_turn_cones_and_a_broken_seam() {
     use penner::overlay::check_seams;
-    let (s, targets) = four_cone_icosahedron();
-    let opts = Options {
-        precision: Precision::F64,
-        certify: false,
-    };
-    let out = uniformize_closed(&s, &targets, &opts, &mut |_| {}).unwrap();
-    let uv = uv_closed(&s, &out).unwrap();
+    let uv = four_cone_uv();
     let obj = uv.obj();
     let eps = Rational::from((1, 1_000_000_000u32));
     let r = check_seams(&obj, &eps).unwrap();

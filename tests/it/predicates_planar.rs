@@ -487,7 +487,7 @@ fn term_b25_each_factor_of_the_orientation_bound_is_needed() {
     ];
     let l = Ladder::default();
     for w in witnesses {
-        let p = w.map(|(x, y)| -> Point { [x.parse().unwrap(), y.parse().unwrap()] });
+        let p = parse_points(w);
         let o = Orient2d::new(&p[0], &p[1], &p[2]);
         assert_eq!(o.exact_value(), 0, "{w:?}");
         assert_eq!(o.filter(), None, "{w:?}");
@@ -581,15 +581,7 @@ fn term_b26_each_sum_of_the_incircle_bound_is_needed() {
             ("307/2187212095488", "-245/572841263104"),
         ],
     ];
-    let l = Ladder::default();
-    for w in witnesses {
-        let p = w.map(|(x, y)| -> Point { [x.parse().unwrap(), y.parse().unwrap()] });
-        let ic = InCircle::new(&p[0], &p[1], &p[2], &p[3]);
-        assert_eq!(ic.exact_value(), 0, "{w:?}");
-        assert_eq!(ic.filter(), None, "{w:?}");
-        assert_eq!(decide(&ic, &l).value(), Some(Sign::Zero), "{w:?}");
-        assert!(ic.filter_scaled(0.0).is_some(), "{w:?}");
-    }
+    incircle_witnesses_are_exact_zeros_the_filter_declines(&witnesses);
 }
 
 /// The rungs of the incircle test: `d` moved `2⁻²⁰⁰⁰` off the unit circle through
@@ -914,9 +906,20 @@ const B26_BOUND_WITNESSES: [[(&str, &str); 4]; 22] = [
 /// bound the filter reads a sign on every quadruple.
 #[test]
 fn term_b26_the_products_and_sums_of_the_incircle_bound_are_needed() {
+    incircle_witnesses_are_exact_zeros_the_filter_declines(&B26_BOUND_WITNESSES);
+}
+
+/// Points from decimal or fraction strings.
+fn parse_points<const K: usize>(w: [(&str, &str); K]) -> [Point; K] {
+    w.map(|(x, y)| -> Point { [x.parse().unwrap(), y.parse().unwrap()] })
+}
+
+/// Each quadruple is exactly cocircular, the B26 filter declines it, the ladder answers
+/// `Zero`, and the filter without its bound reads a sign (the control).
+fn incircle_witnesses_are_exact_zeros_the_filter_declines(ws: &[[(&str, &str); 4]]) {
     let l = Ladder::default();
-    for w in B26_BOUND_WITNESSES {
-        let p = w.map(|(x, y)| -> Point { [x.parse().unwrap(), y.parse().unwrap()] });
+    for &w in ws {
+        let p = parse_points(w);
         let ic = InCircle::new(&p[0], &p[1], &p[2], &p[3]);
         assert_eq!(ic.exact_value(), 0, "{w:?}");
         assert_eq!(ic.filter(), None, "{w:?}");
