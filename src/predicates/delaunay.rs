@@ -457,8 +457,8 @@ pub struct RationalQuad<'a>(pub Quad<&'a Rational>);
 
 impl SignPredicate for RationalQuad<'_> {
     fn filter(&self) -> Option<Sign> {
-        // Rounding each input to f64 adds four relative errors ≤ u per monomial; the
-        // filter's constant 8u covers γ₆ only, so round inputs and use 2⁻⁴⁷ (proof: B61).
+        // `to_f64` rounds toward zero: four input errors below 2u per monomial on top of
+        // the six roundings of the evaluation; the bound 2⁻⁴⁷·M̂ covers both (proof: B61).
         let q = self.0.to_array().map(Rational::to_f64);
         let [a, b, c, d, e] = q;
         let lo = a.min(b).min(c).min(d).min(e);

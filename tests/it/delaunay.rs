@@ -475,3 +475,159 @@ fn bad_lengths_are_typed_errors() {
     let r = penner::predicates::delaunay::edge_delaunay_sign(&m, &[1.0], diag, &Ladder::default());
     assert!(r.is_err());
 }
+
+/// B61's range guard. Three lengths near `2⁻⁵³⁰` (their squares and products are
+/// subnormal, with a few bits of precision) and two near 1: the filter cannot rescale the
+/// quadrilateral into `[2⁻²⁰⁰, 2²⁰⁰)`, so it declines, and the ladder decides the exact
+/// sign. Found by a search over near-ties; each is also taken with the pairs `(b, c)` and
+/// `(d, e)` swapped (`P` is symmetric under the swap), so the small lengths sit at
+/// different positions. Control: B61's evaluation written out here without the range
+/// guard reads the wrong sign on every witness.
+#[test]
+fn term_b61_range_guard_keeps_subnormal_products_out_of_the_filter() {
+    const W: [[u64; 5]; 5] = [
+        [
+            0x1ede26803d38381e,
+            0x1ecafbd67e6ee61e,
+            0x1ecf8130c4d81faa,
+            0x3ff0000000000000,
+            0x3ffa542dcd504c34,
+        ],
+        [
+            0x1f04e2d3da41913b,
+            0x1ef6d14475e6419a,
+            0x1ef0e5e18af652fa,
+            0x3ff0000000000000,
+            0x3ffe95964683a015,
+        ],
+        [
+            0x1f2babf054c7053a,
+            0x1f1fbbe93981aeca,
+            0x1f172a9b8a2e5480,
+            0x3ff7a5f3e5b91b08,
+            0x3ffe93df76aea9d1,
+        ],
+        [
+            0x1e76c1556406e80a,
+            0x1e698910042f2062,
+            0x1e63ebebe270b836,
+            0x3ff0000000000000,
+            0x3ff1a47f51378c2c,
+        ],
+        [
+            0x1e7a071400522462,
+            0x1e6ac15307d07675,
+            0x1e68d8e3b1ae72a8,
+            0x3ff0000000000000,
+            0x3fe88d2abfcb26a2,
+        ],
+    ];
+    // B61's K̂ and N̂ and its two tests, without the range guard.
+    let unguarded = |[a, b, c, d, e]: [f64; 5]| {
+        let rho = 1.0 - 2f64.powi(-49);
+        let (de, bc) = (d * e, b * c);
+        let k = de * (b * b + c * c) + bc * (d * d + e * e);
+        let n = (a * a) * (de + bc);
+        if n < k * rho {
+            Some(Sign::Positive)
+        } else if k < n * rho {
+            Some(Sign::Negative)
+        } else {
+            None
+        }
+    };
+    for w in W {
+        let q = w.map(f64::from_bits);
+        for q in [q, [q[0], q[3], q[4], q[1], q[2]]] {
+            let exact = oracle_f64(q);
+            assert_ne!(exact, Sign::Zero, "{q:?}");
+            assert_eq!(filter_f64(q), None, "{q:?}");
+            assert_eq!(ladder_f64(q).value(), Some(exact), "{q:?}");
+            let naive = unguarded(q);
+            assert!(
+                naive.is_some() && naive != Some(exact),
+                "control: {q:?} {naive:?}"
+            );
+        }
+    }
+}
+
+/// The f64 filter is the first rung for binary64 lengths, and only for them (B61's
+/// hypothesis: the inputs are binary64 numbers exactly). A well-shaped quadrilateral
+/// (`P` far from 0) in `f64` is decided by the filter; the same lengths as double-doubles
+/// with a nonzero low part, and as 256-bit MPFR values, are decided by an enclosure or
+/// the exact rung, with the sign of the malachite oracle.
+#[test]
+fn term_b61_the_filter_runs_on_binary64_lengths_only() {
+    let q = [1.2, 1.0, 1.1, 0.9, 1.05];
+    let c = ladder_f64(q);
+    assert_eq!(
+        c,
+        Certified::Known {
+            value: oracle_f64(q),
+            stage: Stage::Filter
+        }
+    );
+    let ladder = Ladder::default();
+    // Double-doubles hi + 2⁻⁶⁰·hi: not binary64 numbers.
+    let dd: Vec<Dd> = q
+        .iter()
+        .map(|&x| <Dd as Real>::from_f64(x, ()) + <Dd as Real>::from_f64(x * 2f64.powi(-60), ()))
+        .collect();
+    let mq = exact_values(&dd);
+    let r = decide(&RealQuad(quad_of(&dd)), &ladder);
+    assert_eq!(r.value(), Some(oracle_of(&mq)));
+    assert!(
+        !matches!(
+            r,
+            Certified::Known {
+                stage: Stage::Filter,
+                ..
+            }
+        ),
+        "{r:?}"
+    );
+    let prec = Precision::new(256).unwrap();
+    let mp: Vec<Mpfr> = dd
+        .iter()
+        .map(|x| Mpfr::from_rational(&x.to_rational().unwrap(), prec))
+        .collect();
+    assert_eq!(exact_values(&mp), mq);
+    let r = decide(&RealQuad(quad_of(&mp)), &ladder);
+    assert_eq!(r.value(), Some(oracle_of(&mq)));
+    assert!(
+        !matches!(
+            r,
+            Certified::Known {
+                stage: Stage::Filter,
+                ..
+            }
+        ),
+        "{r:?}"
+    );
+}
+
+/// `in_filter_range` is B61's range `[2⁻²⁰⁰, 2²⁰⁰)` exactly: both ends and their
+/// neighbours, and the values no range holds (zero, negative, subnormal, infinite, NaN).
+#[test]
+fn b61_filter_range_is_two_to_the_minus_200_up_to_two_to_the_200() {
+    use penner::predicates::delaunay::in_filter_range;
+    let (lo, hi) = (2f64.powi(-200), 2f64.powi(200));
+    for x in [lo, lo.next_up(), 1.0, hi.next_down()] {
+        assert!(in_filter_range(x), "{x:e}");
+    }
+    let outside = [
+        lo.next_down(),
+        hi,
+        hi.next_up(),
+        0.0,
+        -0.0,
+        -1.0,
+        f64::MIN_POSITIVE / 2.0,
+        f64::INFINITY,
+        f64::NAN,
+    ];
+    for x in outside {
+        assert!(!in_filter_range(x), "{x:e}");
+    }
+}
