@@ -146,8 +146,7 @@ pub fn uniformize_boundary(
     targets: Option<&Targets>,
     options: &Options,
 ) -> Result<BoundaryOutcome, PipelineError> {
-    let (surface, shift) = rescaled(surface);
-    let lengths = surface.lengths::<f64>(());
+    let (surface, shift, lengths) = rescaled(surface);
     let targets = targets.map_or_else(|| flat_with_even_boundary(&surface.mesh), Clone::clone);
     let boundary = uniformize_with_boundary(
         &surface.mesh,

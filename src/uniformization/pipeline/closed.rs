@@ -98,8 +98,7 @@ pub fn uniformize_closed(
     options: &Options,
     progress: &mut dyn FnMut(&StepReport),
 ) -> Result<ClosedOutcome, PipelineError> {
-    let (surface, shift) = rescaled(surface);
-    let lengths = surface.lengths::<f64>(());
+    let (surface, shift, lengths) = rescaled(surface);
     let solution = uniformize_with_progress(
         &surface.mesh,
         &lengths,

@@ -204,15 +204,19 @@ fn finite_u(
 
 /// The surface divided by an exact power of two `2^shift` when its binary64 lengths are
 /// not all in `[2⁻¹⁰⁰, 2¹⁰⁰]` (their squares then leave binary64's range;
-/// [`Surface::normalized_scale`]), and the shift.
-pub fn rescaled(surface: &Surface) -> (Surface, i64) {
+/// [`Surface::normalized_scale`]), the shift, and the binary64 lengths of the returned
+/// surface ([`Surface::lengths`], computed once).
+pub fn rescaled(surface: &Surface) -> (Surface, i64, Vec<f64>) {
     let l = surface.lengths::<f64>(());
     let in_range = l
         .iter()
         .all(|&x| x.is_finite() && (f64::powi(2.0, -100)..=f64::powi(2.0, 100)).contains(&x));
     match surface.normalized_scale().filter(|_| !in_range) {
-        Some((s, k)) => (s, k),
-        None => (surface.clone(), 0),
+        Some((s, k)) => {
+            let l = s.lengths::<f64>(());
+            (s, k, l)
+        }
+        None => (surface.clone(), 0, l),
     }
 }
 

@@ -78,8 +78,7 @@ pub fn uniformize_sphere(
                 .into(),
         ));
     }
-    let (surface, shift) = rescaled(surface);
-    let lengths = surface.lengths::<f64>(());
+    let (surface, shift, lengths) = rescaled(surface);
     let opts = SphereOptions {
         pole,
         ..SphereOptions::default()
