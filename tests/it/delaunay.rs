@@ -631,3 +631,79 @@ fn b61_filter_range_is_two_to_the_minus_200_up_to_two_to_the_200() {
         assert!(!in_filter_range(x), "{x:e}");
     }
 }
+
+/// B61's bound for rounded rational inputs, `|P̂| > 2⁻⁴⁷·M̂ + 2⁻¹⁰⁰⁰`. Exactly cocircular
+/// rational quadrilaterals (rectangles with Pythagorean sides, `b² + c² = d² + e² = a²`,
+/// so `P = 0`) scaled by factors that are not dyadic, from `2⁻¹⁸⁰` to `2¹⁸⁰`: their
+/// truncated binary64 images are not ties, so the filter's own `P̂` is not 0, and only the
+/// bound keeps the filter from answering. The ladder decides `Zero` exactly. Control: the
+/// filter's `P̂` is nonzero on most of them (a sign read from `P̂` alone would be wrong).
+#[test]
+fn term_b61_rational_filter_declines_ties_its_rounded_inputs_break() {
+    let triples: [[i64; 5]; 4] = [
+        [5, 4, 3, 3, 4],
+        [25, 7, 24, 15, 20],
+        [65, 16, 63, 33, 56],
+        [65, 25, 60, 39, 52],
+    ];
+    let mut scales: Vec<Rational> = Vec::new();
+    for k in [-180i32, -100, -40, 0, 40, 100, 180] {
+        for den in [3u32, 7, 10, 11] {
+            let two_k = if k >= 0 {
+                Rational::from(rug::Integer::from(1) << k as u32)
+            } else {
+                Rational::from((rug::Integer::from(1), rug::Integer::from(1) << (-k) as u32))
+            };
+            scales.push(two_k / den);
+        }
+    }
+    let (mut cases, mut nonzero) = (0, 0);
+    for t in triples {
+        for s in &scales {
+            let l: Vec<Rational> = t.iter().map(|&x| Rational::from(x) * s).collect();
+            assert_eq!(oracle_of(&exact_values_q(&l)), Sign::Zero);
+            let q = RationalQuad(quad_of(&l));
+            assert_eq!(q.filter(), None, "{t:?} × {s}");
+            assert_eq!(ladder_sign(&q), Some(Sign::Zero), "{t:?} × {s}");
+            // The filter's own P̂ on the truncated inputs.
+            let [a, b, c, d, e] = [0, 1, 2, 3, 4].map(|i| l[i].to_f64());
+            let (de, bc) = (d * e, b * c);
+            let p = de * (b * b + c * c - a * a) + bc * (d * d + e * e - a * a);
+            cases += 1;
+            nonzero += usize::from(p != 0.0);
+        }
+    }
+    assert!(
+        2 * nonzero > cases,
+        "control: P̂ ≠ 0 on {nonzero} of {cases}"
+    );
+}
+
+/// The rational filter answers where the bound allows: a well-shaped rational
+/// quadrilateral (`P` far from 0) is decided by the filter rung, with the oracle's sign.
+#[test]
+fn term_b61_rational_filter_decides_well_shaped_quads() {
+    for l in [
+        ["6/5", "1", "11/10", "9/10", "21/20"],
+        ["2", "1/3", "5/3", "3/7", "12/7"],
+        ["1/10", "1/3", "1/3", "1/3", "1/3"],
+    ] {
+        let l: Vec<Rational> = l.iter().map(|x| Rational::from_str(x).unwrap()).collect();
+        let q = RationalQuad(quad_of(&l));
+        let expected = oracle_of(&exact_values_q(&l));
+        assert_ne!(expected, Sign::Zero);
+        assert_eq!(q.filter(), Some(expected), "{l:?}");
+        assert_eq!(
+            decide(&q, &Ladder::default()),
+            Certified::Known {
+                value: expected,
+                stage: Stage::Filter
+            }
+        );
+    }
+}
+
+/// Exact rationals in malachite, through their decimal strings.
+fn exact_values_q(l: &[Rational]) -> Vec<MRational> {
+    l.iter().map(to_m).collect()
+}
