@@ -157,18 +157,24 @@ impl InCircle {
         incircle_value(&self.v)
     }
 
-    /// The filter with its bound multiplied by `factor` (see [`Orient2d::filter_scaled`]).
+    /// The filter's error bound `next_up(16u·P̃)` (proofs/B26), `None` when a coordinate is
+    /// outside the filter's input window.
     #[doc(hidden)]
-    pub fn filter_scaled(&self, factor: f64) -> Option<Sign> {
-        let x = self.approx?;
-        let value = incircle_value(&x);
-        let [ax, ay, bx, by, cx, cy, dx, dy] = x.map(f64::abs);
+    pub fn filter_bound(&self) -> Option<f64> {
+        let [ax, ay, bx, by, cx, cy, dx, dy] = self.approx?.map(f64::abs);
         // Majorant with Σ = |·| + |d·| per coordinate, proofs/B26.
         let (sax, say, sbx, sby, scx, scy) = (ax + dx, ay + dy, bx + dx, by + dy, cx + dx, cy + dy);
         let p = (sax * sax + say * say) * (sbx * scy + scx * sby)
             + (sbx * sbx + sby * sby) * (scx * say + sax * scy)
             + (scx * scx + scy * scy) * (sax * sby + sbx * say);
-        filter::decide(value, filter::next_up(INCIRCLE_FILTER * p) * factor)
+        Some(filter::next_up(INCIRCLE_FILTER * p))
+    }
+
+    /// The filter with its bound multiplied by `factor` (see [`Orient2d::filter_scaled`]).
+    #[doc(hidden)]
+    pub fn filter_scaled(&self, factor: f64) -> Option<Sign> {
+        let value = incircle_value(&self.approx?);
+        filter::decide(value, self.filter_bound()? * factor)
     }
 }
 

@@ -927,3 +927,50 @@ fn incircle_witnesses_are_exact_zeros_the_filter_declines(ws: &[[(&str, &str); 4
         assert!(ic.filter_scaled(0.0).is_some(), "{w:?}");
     }
 }
+
+/// B26's majorant, term by term: the filter's bound `next_up(16u·P̃)` against `16u·P` with
+/// `P = Σ_cyc (Σ_ax² + Σ_ay²)(Σ_bx·Σ_cy + Σ_cx·Σ_by)` evaluated exactly (num-rational) on
+/// the binary64 sums `Σ_ax = fl(|a_x| + |d_x|)`, …: `P̃` is `P` after 7 roundings per
+/// monomial and the product with `16u` and `next_up` add two more, so the bound lies in
+/// `16u·P·[1 − 8u, 1 + 12u]`. Points with coordinates of random sign and magnitudes
+/// `2⁻¹⁸⁰ … 2²⁴⁰` (each point within a factor 2¹⁰ of the others, so the three cyclic
+/// terms and both products of each cross factor are comparable): a bound without one
+/// product of a cross factor (read as a sum or a quotient) falls below `16u·P·(1 − 8u)`.
+#[test]
+fn term_b26_incircle_bound_is_the_majorant_of_every_cross_product() {
+    let mut rng = ChaCha8Rng::seed_from_u64(2626);
+    let sixteen_u = NQ::new(16.into(), num_bigint::BigInt::from(1) << 53);
+    let u = NQ::new(1.into(), num_bigint::BigInt::from(1) << 53);
+    let exact = |x: f64| NQ::from_float(x).unwrap();
+    let one = NQ::from_integer(1.into());
+    for i in 0..400 {
+        let scale = rng.gen_range(-180..230);
+        let coord = |rng: &mut ChaCha8Rng| {
+            let m: f64 = rng.gen_range(1.0..2.0);
+            let e = scale + rng.gen_range(0..10);
+            let s = if rng.gen_bool(0.5) { -1.0 } else { 1.0 };
+            s * m * 2f64.powi(e)
+        };
+        let c: [f64; 8] = std::array::from_fn(|_| coord(&mut rng));
+        let p = |k: usize| point_from_f64(c[2 * k], c[2 * k + 1]).unwrap();
+        let ic = InCircle::new(&p(0), &p(1), &p(2), &p(3));
+        let bound = ic.filter_bound().expect("coordinates inside B26's window");
+        let [ax, ay, bx, by, cx, cy, dx, dy] = c.map(f64::abs);
+        let s = [ax + dx, ay + dy, bx + dx, by + dy, cx + dx, cy + dy].map(exact);
+        let [sax, say, sbx, sby, scx, scy] = [&s[0], &s[1], &s[2], &s[3], &s[4], &s[5]];
+        let lift = |x: &NQ, y: &NQ| x * x + y * y;
+        let maj = lift(sax, say) * (sbx * scy + scx * sby)
+            + lift(sbx, sby) * (scx * say + sax * scy)
+            + lift(scx, scy) * (sax * sby + sbx * say);
+        let b = exact(bound);
+        let target = &sixteen_u * &maj;
+        assert!(
+            b >= &target * (&one - &u * NQ::from_integer(8.into())),
+            "case {i}: {c:?}"
+        );
+        assert!(
+            b <= &target * (&one + &u * NQ::from_integer(12.into())),
+            "case {i}: {c:?}"
+        );
+    }
+}
