@@ -20,10 +20,10 @@ pub(super) struct Certified<'a> {
 /// Report a B71 certificate outcome on `out` and, when it holds and `output` is given,
 /// write the `uniformization` claim there (never over an existing file); the exit status:
 /// `HOLDS` when certified, `UNDECIDED` otherwise.
-pub(super) fn report_certificate(
+pub(super) fn report_certificate<C: serde::Serialize>(
     out: &mut String,
     outcome: &CertificateOutcome,
-    claim: Option<serde_json::Value>,
+    claim: Option<C>,
     output: Option<&Path>,
     words: &Certified<'_>,
 ) -> Result<u8, CliError> {
@@ -54,10 +54,10 @@ pub(super) fn report_certificate(
 
 /// Write `claim` to `path` (pretty JSON, never over an existing file) and say so on `out`
 /// as "`what` written to …", or say that no certificate was written when there is none.
-pub(super) fn write_claim(
+pub(super) fn write_claim<C: serde::Serialize>(
     out: &mut String,
     path: &Path,
-    claim: Option<serde_json::Value>,
+    claim: Option<C>,
     what: &str,
 ) -> Result<(), CliError> {
     let Some(claim) = claim else {
@@ -65,7 +65,8 @@ pub(super) fn write_claim(
         return Ok(());
     };
     // Streamed into the file: the text of a 10⁵-face claim (about 50 MB) is never held
-    // in memory next to the claim itself. The bytes are those of `to_string_pretty`.
+    // in memory, nor (for a view such as `ClaimJson`) the claim's value tree. The bytes
+    // are those of `to_string_pretty`.
     let mut w = std::io::BufWriter::new(create_new(path)?);
     serde_json::to_writer_pretty(&mut w, &claim)
         .map_err(std::io::Error::from)

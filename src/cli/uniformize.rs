@@ -208,7 +208,7 @@ fn report_closed(
     let status = super::certificate_report::report_certificate(
         &mut out,
         &proof.outcome,
-        outcome.claim(),
+        outcome.claim_json(),
         o.output,
         &super::certificate_report::Certified {
             holds: &holds,

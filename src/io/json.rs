@@ -7,7 +7,7 @@ use super::{text_of, ReadError};
 use crate::mesh::{Face, FaceSide, Mesh, MeshError};
 use crate::scalar::parse_rational;
 use rug::Rational;
-use serde_json::{json, Map, Value};
+use serde_json::{Map, Value};
 
 /// The value of the `format` field.
 pub const FORMAT: &str = "penner-surface";
@@ -402,35 +402,83 @@ fn mesh_error(e: MeshError, field: &str) -> ReadError {
 /// positions as exact strings when present. [`from_value`] reads it back to an equal
 /// surface.
 pub fn to_value(s: &Surface) -> Value {
-    let order = edge_order(&s.mesh);
-    let vals: Vec<String> = order
-        .iter()
-        .map(|&e| s.metric.values()[e].to_string())
-        .collect();
-    let gluing: Vec<Value> = s
-        .mesh
-        .gluing_list()
-        .iter()
-        .map(|&((fa, sa), (fb, sb))| json!([[fa, sa], [fb, sb]]))
-        .collect();
-    let mut v = json!({
-        "format": FORMAT,
-        "version": VERSION,
-        "name": s.name,
-        "vertices": s.mesh.n_vertices(),
-        "faces": s.mesh.face_list(),
-        "gluing": gluing,
-    });
-    let key = match s.metric {
-        Metric::Lengths(_) => "lengths",
-        Metric::SquaredLengths(_) => "squared_lengths",
-    };
-    v[key] = json!(vals);
-    if let Some(p) = &s.positions {
-        let p: Vec<[String; 3]> = p.iter().map(|q| q.clone().map(|x| x.to_string())).collect();
-        v["positions"] = json!(p);
+    // The view's keys are strings, so serde_json's conversion cannot fail.
+    serde_json::to_value(SurfaceJson(s)).unwrap_or(Value::Null)
+}
+
+/// The surface in the JSON format of [`to_value`] as a view that serde serializes straight
+/// from the surface (no value tree, no copy of the exact strings): written with
+/// `serde_json::to_writer_pretty`, a 10⁵-face surface or claim goes to its file without
+/// first being built in memory. Keys are emitted in sorted order, the order of
+/// serde_json's own maps, so the text is that of [`to_value`]'s value.
+#[derive(Clone, Copy, Debug)]
+pub struct SurfaceJson<'a>(pub &'a Surface);
+
+/// A rational serialized as its exact string (`n` or `n/d`), without an owned `String`.
+#[derive(Clone, Copy, Debug)]
+pub struct ExactString<'a>(pub &'a Rational);
+
+impl serde::Serialize for ExactString<'_> {
+    fn serialize<S: serde::Serializer>(&self, ser: S) -> Result<S::Ok, S::Error> {
+        ser.collect_str(self.0)
     }
-    v
+}
+
+/// A sequence serialized from an iterator made on demand (serde serializes it once).
+pub struct SeqOf<F>(pub F);
+
+impl<F, I> serde::Serialize for SeqOf<F>
+where
+    F: Fn() -> I,
+    I: IntoIterator,
+    I::Item: serde::Serialize,
+{
+    fn serialize<S: serde::Serializer>(&self, ser: S) -> Result<S::Ok, S::Error> {
+        ser.collect_seq((self.0)())
+    }
+}
+
+impl serde::Serialize for SurfaceJson<'_> {
+    fn serialize<S: serde::Serializer>(&self, ser: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let s = self.0;
+        let order = edge_order(&s.mesh);
+        let values = s.metric.values();
+        let metric = SeqOf(|| order.iter().map(|&e| ExactString(&values[e])));
+        let gluing = s.mesh.gluing_list();
+        let mut m = ser.serialize_map(None)?;
+        // Sorted keys: faces, format, gluing, lengths, name, positions, squared_lengths,
+        // version, vertices.
+        m.serialize_entry("faces", &s.mesh.face_list())?;
+        m.serialize_entry("format", FORMAT)?;
+        m.serialize_entry(
+            "gluing",
+            &SeqOf(|| {
+                gluing
+                    .iter()
+                    .map(|&((fa, sa), (fb, sb))| [[fa, u32::from(sa)], [fb, u32::from(sb)]])
+            }),
+        )?;
+        if let Metric::Lengths(_) = s.metric {
+            m.serialize_entry("lengths", &metric)?;
+        }
+        m.serialize_entry("name", &s.name)?;
+        if let Some(p) = &s.positions {
+            m.serialize_entry(
+                "positions",
+                &SeqOf(|| {
+                    p.iter()
+                        .map(|q| [ExactString(&q[0]), ExactString(&q[1]), ExactString(&q[2])])
+                }),
+            )?;
+        }
+        if let Metric::SquaredLengths(_) = s.metric {
+            m.serialize_entry("squared_lengths", &metric)?;
+        }
+        m.serialize_entry("version", &VERSION)?;
+        m.serialize_entry("vertices", &s.mesh.n_vertices())?;
+        m.end()
+    }
 }
 
 /// The surface as pretty-printed JSON text ([`to_value`]).

@@ -167,3 +167,51 @@ fn sphere_uniformization_claim_fields_pole_flips_radius_residual_faces_are_each_
     }
     each_field_is_used(&d, &claim, &alterations);
 }
+
+/// The views that stream a claim and its surface into a file (`ClaimJson`,
+/// `SurfaceJson`) write the format of their values: the streamed text, read by
+/// serde_json into a value (whose maps sort their keys) and printed again, is the same
+/// text, so the keys were emitted in sorted order and nothing else differs; the streamed
+/// claim holds under `penner certify`, and the streamed surface reads back through the
+/// project's reader to the same surface. Control: the text with two keys swapped does not
+/// survive the same round trip.
+#[test]
+fn streamed_claim_and_surface_views_write_the_sorted_value_text() {
+    use penner::io::json::SurfaceJson;
+    use penner::mesh::builders;
+    use penner::uniformization::pipeline::{uniformize_closed, Options, Precision};
+    use penner::uniformization::targets::Targets;
+    let s = Surface::from_embedded("icosahedron", builders::icosahedron()).unwrap();
+    let mut t = vec![Rational::from(2); s.mesh.n_vertices()];
+    for v in [0, 3, 6, 9] {
+        t[v] = Rational::from(1);
+    }
+    let opts = Options {
+        precision: Precision::Mpfr(128),
+        certify: true,
+    };
+    let out = uniformize_closed(&s, &Targets::from_multiples_of_pi(t), &opts, &mut |_| {}).unwrap();
+    let claim = out.claim_json().expect("certified");
+    let reprinted = |text: &str| {
+        serde_json::to_string_pretty(&serde_json::from_str::<Value>(text).unwrap()).unwrap()
+    };
+    let streamed = serde_json::to_string_pretty(&claim).unwrap();
+    assert_eq!(reprinted(&streamed), streamed);
+    let surface = serde_json::to_string_pretty(&SurfaceJson(&s)).unwrap();
+    assert_eq!(reprinted(&surface), surface);
+    assert!(surface.contains("\"positions\"") && surface.contains("\"squared_lengths\""));
+    let back = json::from_value(&serde_json::from_str(&surface).unwrap()).unwrap();
+    assert_eq!(back.mesh.face_list(), s.mesh.face_list());
+    assert_eq!(back.metric, s.metric);
+    assert_eq!(back.positions, s.positions);
+    let d = scratch("claim-streamed");
+    let (v, code) = certify(&d, &serde_json::from_str(&streamed).unwrap());
+    assert_eq!((v.as_str(), code), ("holds", Some(0)));
+    // Control: "version" and "vertices" swapped.
+    let swapped = surface
+        .replacen("\"version\": 1,", "\"@\"", 1)
+        .replacen("\"vertices\"", "\"version\": 1,\n    \"vertices\"", 1)
+        .replacen("\"@\"\n", "", 1);
+    assert_ne!(swapped, surface);
+    assert_ne!(reprinted(&swapped), swapped);
+}

@@ -23,13 +23,14 @@ use super::certificate::{check_certificate_on, I};
 use super::input_metric::{replay_enclosed, t0_delaunay_on_input};
 use super::refine::{carry_lengths, carry_lengths_from};
 use super::targets::Targets;
-use crate::io::json::{edge_order, to_value};
+use crate::io::json::{edge_order, ExactString, SeqOf, SurfaceJson};
 use crate::io::{Metric, Surface};
 use crate::mesh::Edge;
 use crate::predicates::delaunay::{delaunay_sign_squared, QuadEdges};
 use crate::scalar::{Mpfr, Precision, Real, Sign};
 use rug::{Integer, Rational};
-use serde_json::{json, Value};
+use serde_json::Value;
+use std::borrow::Cow;
 
 /// The claim-specific fields of a `uniformization` claim, parsed.
 #[derive(Clone, Debug, PartialEq)]
@@ -125,18 +126,12 @@ pub fn to_claim(
     residual_bound: f64,
     bits: u32,
 ) -> Value {
-    let lengths: Vec<Rational> = data
-        .l0
-        .iter()
-        .map(|&x| Rational::from_f64(x).unwrap_or_default())
-        .collect();
-    let surface = Surface {
-        mesh: data.t0.clone(),
-        metric: Metric::Lengths(lengths),
-        positions: None,
-        name: "uniformization input (intrinsic Delaunay)".into(),
-    };
-    claim_value(data, &surface, None, final_faces, residual_bound, bits)
+    claim_value(&ClaimJson::rounded(
+        data,
+        final_faces.to_vec(),
+        residual_bound,
+        bits,
+    ))
 }
 
 /// The certificate `data` (whose `t0` is `input`'s mesh after the Euclidean flips
@@ -151,48 +146,135 @@ pub fn to_claim_on_input(
     residual_bound: f64,
     bits: u32,
 ) -> Value {
-    claim_value(
+    claim_value(&ClaimJson::on_input(
         data,
         input,
-        Some(euclidean),
-        final_faces,
+        euclidean,
+        final_faces.to_vec(),
         residual_bound,
         bits,
-    )
+    ))
 }
 
-/// The `uniformization` claim about `surface`, with `euclidean_flips` when given; flips
-/// as indices into `surface`'s edge order.
-fn claim_value(
-    data: &CertificateData,
-    surface: &Surface,
-    euclidean: Option<&[Edge]>,
-    final_faces: &[[u32; 3]],
+/// The claim as a JSON value ([`ClaimJson`] converted; its keys are strings, so the
+/// conversion cannot fail).
+fn claim_value(c: &ClaimJson<'_>) -> Value {
+    serde_json::to_value(c).unwrap_or(Value::Null)
+}
+
+/// A `uniformization` claim as a view that serde serializes straight from the certificate
+/// data (no value tree; [`SurfaceJson`] for the surface): `serde_json::to_writer_pretty`
+/// streams a 10⁵-face claim into its file with the text of [`to_claim`]'s value. Keys are
+/// emitted in sorted order, the order of serde_json's maps.
+#[derive(Clone, Debug)]
+pub struct ClaimJson<'a> {
+    data: &'a CertificateData,
+    surface: Cow<'a, Surface>,
+    euclidean: Option<&'a [Edge]>,
+    final_faces: Vec<[u32; 3]>,
     residual_bound: f64,
     bits: u32,
-) -> Value {
-    let order = edge_order(&surface.mesh);
-    let mut user = vec![0usize; order.len()];
-    for (k, &e) in order.iter().enumerate() {
-        user[e] = k;
+}
+
+impl<'a> ClaimJson<'a> {
+    /// The claim about `T₀` with its binary64 lengths (the binary64-rounded metric).
+    pub fn rounded(
+        data: &'a CertificateData,
+        final_faces: Vec<[u32; 3]>,
+        residual_bound: f64,
+        bits: u32,
+    ) -> ClaimJson<'a> {
+        let lengths: Vec<Rational> = data
+            .l0
+            .iter()
+            .map(|&x| Rational::from_f64(x).unwrap_or_default())
+            .collect();
+        let surface = Surface {
+            mesh: data.t0.clone(),
+            metric: Metric::Lengths(lengths),
+            positions: None,
+            name: "uniformization input (intrinsic Delaunay)".into(),
+        };
+        ClaimJson {
+            data,
+            surface: Cow::Owned(surface),
+            euclidean: None,
+            final_faces,
+            residual_bound,
+            bits,
+        }
     }
-    let dec = |q: &Rational| exact_decimal(q).unwrap_or_else(|| q.to_string());
-    let mut v = json!({
-        "penner_claim": 1,
-        "kind": "uniformization",
-        "max_bits": bits,
-        "surface": to_value(surface),
-        "targets": data.targets.over_pi().iter().map(ToString::to_string).collect::<Vec<_>>(),
-        "flips": data.flip_sequence.iter().map(|e| user[e.idx()]).collect::<Vec<_>>(),
-        "u": data.u.iter().map(dec).collect::<Vec<_>>(),
-        "radius": dec(&data.radius),
-        "final_faces": final_faces,
-        "residual_bound": dec(&Rational::from_f64(residual_bound).unwrap_or_default()),
-    });
-    if let Some(flips) = euclidean {
-        v["euclidean_flips"] = json!(flips.iter().map(|e| user[e.idx()]).collect::<Vec<_>>());
+
+    /// The claim about `input`'s exact metric, with the Euclidean flips `euclidean` from
+    /// `input` to `T₀`.
+    pub fn on_input(
+        data: &'a CertificateData,
+        input: &'a Surface,
+        euclidean: &'a [Edge],
+        final_faces: Vec<[u32; 3]>,
+        residual_bound: f64,
+        bits: u32,
+    ) -> ClaimJson<'a> {
+        ClaimJson {
+            data,
+            surface: Cow::Borrowed(input),
+            euclidean: Some(euclidean),
+            final_faces,
+            residual_bound,
+            bits,
+        }
     }
-    v
+}
+
+impl ClaimJson<'_> {
+    /// The claim as a JSON value (its keys are strings, so the conversion cannot fail).
+    pub fn value(&self) -> Value {
+        claim_value(self)
+    }
+}
+
+/// A dyadic rational as its exact decimal ([`exact_decimal`]), other rationals as `n/d`.
+struct Decimal<'a>(&'a Rational);
+
+impl serde::Serialize for Decimal<'_> {
+    fn serialize<S: serde::Serializer>(&self, ser: S) -> Result<S::Ok, S::Error> {
+        match exact_decimal(self.0) {
+            Some(d) => ser.serialize_str(&d),
+            None => ser.collect_str(self.0),
+        }
+    }
+}
+
+impl serde::Serialize for ClaimJson<'_> {
+    fn serialize<S: serde::Serializer>(&self, ser: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let data = self.data;
+        let order = edge_order(&self.surface.mesh);
+        let mut user = vec![0usize; order.len()];
+        for (k, &e) in order.iter().enumerate() {
+            user[e] = k;
+        }
+        let indices = |flips: &[Edge]| flips.iter().map(|e| user[e.idx()]).collect::<Vec<_>>();
+        let targets = data.targets.over_pi();
+        let residual = Rational::from_f64(self.residual_bound).unwrap_or_default();
+        let mut m = ser.serialize_map(None)?;
+        // Sorted keys: euclidean_flips, final_faces, flips, kind, max_bits, penner_claim,
+        // radius, residual_bound, surface, targets, u.
+        if let Some(flips) = self.euclidean {
+            m.serialize_entry("euclidean_flips", &indices(flips))?;
+        }
+        m.serialize_entry("final_faces", &self.final_faces)?;
+        m.serialize_entry("flips", &indices(&data.flip_sequence))?;
+        m.serialize_entry("kind", "uniformization")?;
+        m.serialize_entry("max_bits", &self.bits)?;
+        m.serialize_entry("penner_claim", &1)?;
+        m.serialize_entry("radius", &Decimal(&data.radius))?;
+        m.serialize_entry("residual_bound", &Decimal(&residual))?;
+        m.serialize_entry("surface", &SurfaceJson(&self.surface))?;
+        m.serialize_entry("targets", &SeqOf(|| targets.iter().map(ExactString)))?;
+        m.serialize_entry("u", &SeqOf(|| data.u.iter().map(Decimal)))?;
+        m.end()
+    }
 }
 
 /// The checks of a claim that need no arithmetic beyond ℚ: binary64 lengths, flip indices

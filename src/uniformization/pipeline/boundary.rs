@@ -24,6 +24,7 @@ use crate::scalar::{Certified, Sign};
 use crate::uniformization::boundary::{
     flat_with_even_boundary, uniformize_with_boundary, BoundaryUniformization,
 };
+use crate::uniformization::claim_form::ClaimJson;
 use crate::uniformization::layout::{face_orientations, unfold, unfold_within, Layout};
 use crate::uniformization::svg::scaled_lengths_f64;
 use crate::uniformization::{Targets, UniformizeOptions};
@@ -80,8 +81,14 @@ impl BoundaryOutcome {
 
     /// The double's `uniformization` claim of a certified outcome, ready to write.
     pub fn claim(&self) -> Option<Value> {
+        self.claim_json().map(|c| c.value())
+    }
+
+    /// The claim of [`Self::claim`] as a view to serialize straight into a file
+    /// ([`ClaimJson`]: the same text, without building the value).
+    pub fn claim_json(&self) -> Option<ClaimJson<'_>> {
         let (c, d) = (self.certification.as_ref()?, self.double.as_ref()?);
-        c.claim(d, self.bits)
+        c.claim_json(d, self.bits)
     }
 
     /// `max |θ_v − target|` on copy 1 (`f64`, numerical: half the double's target at seam

@@ -35,7 +35,7 @@ use crate::mesh::Edge;
 use crate::scalar::{Dd, Interval, Mpfr, Precision as Bits, Real};
 use crate::uniformization::certificate::{certify_near, prove, prove_on, CertificateError};
 use crate::uniformization::certificate::{CertificateOutcome, Proof, T0Metric};
-use crate::uniformization::claim_form::{to_claim, to_claim_on_input};
+use crate::uniformization::claim_form::ClaimJson;
 use crate::uniformization::input_metric::{
     clearly_not_delaunay, euclidean_sequence, negative_on_enclosures, replay_enclosed,
     replay_values, t0_delaunay_on_input,
@@ -79,12 +79,19 @@ impl ClosedOutcome {
     /// surface as given with its Euclidean flips (`euclidean_flips`) for
     /// [`CertifiedMetric::Input`], about `T₀` with binary64 lengths otherwise.
     pub fn claim(&self) -> Option<Value> {
-        let c = Certification {
-            proof: self.proof.clone()?,
-            metric: self.metric.clone()?,
-            t0_metric: self.t0_metric.clone(),
-        };
-        c.claim(&self.surface, self.bits)
+        self.claim_json().map(|c| c.value())
+    }
+
+    /// The claim of [`Self::claim`] as a view to serialize straight into a file
+    /// ([`ClaimJson`]: the same text, without building the value).
+    pub fn claim_json(&self) -> Option<ClaimJson<'_>> {
+        claim_json(
+            self.proof.as_ref()?,
+            self.metric.as_ref()?,
+            self.t0_metric.as_ref(),
+            &self.surface,
+            self.bits,
+        )
     }
 }
 
@@ -142,28 +149,51 @@ impl Certification {
     /// surface given to [`certify_solution`]) with its Euclidean flips for the input
     /// metric, about `T₀` with binary64 lengths otherwise.
     pub fn claim(&self, surface: &Surface, bits: u32) -> Option<Value> {
-        let CertificateOutcome::Holds { residual, .. } = &self.proof.outcome else {
-            return None;
-        };
-        // The final triangulation of the proof's own flips (the refinement may flip near
-        // ties differently from the f64 solve, B69), which is what the re-check replays.
-        let mut last = self.proof.data.t0.clone();
-        for &e in &self.proof.data.flip_sequence {
-            last.flip(e).ok()?;
-        }
-        let final_faces = last.face_list();
-        Some(match (&self.metric, &self.t0_metric) {
-            (CertifiedMetric::Input, Some(m)) => to_claim_on_input(
-                &self.proof.data,
-                surface,
-                &m.euclidean,
-                &final_faces,
-                *residual,
-                bits,
-            ),
-            _ => to_claim(&self.proof.data, &final_faces, *residual, bits),
-        })
+        self.claim_json(surface, bits).map(|c| c.value())
     }
+
+    /// The claim of [`Self::claim`] as a view to serialize straight into a file.
+    pub fn claim_json<'a>(&'a self, surface: &'a Surface, bits: u32) -> Option<ClaimJson<'a>> {
+        claim_json(
+            &self.proof,
+            &self.metric,
+            self.t0_metric.as_ref(),
+            surface,
+            bits,
+        )
+    }
+}
+
+/// The `uniformization` claim of `proof` when it holds (B71): about `surface` with its
+/// Euclidean flips to `T₀` for the input metric, about `T₀` with binary64 lengths
+/// otherwise; the final triangulation is that of the proof's own flips (the refinement may
+/// flip near ties differently from the f64 solve, B69), which is what the re-check replays.
+fn claim_json<'a>(
+    proof: &'a Proof,
+    metric: &CertifiedMetric,
+    t0_metric: Option<&'a T0Metric>,
+    surface: &'a Surface,
+    bits: u32,
+) -> Option<ClaimJson<'a>> {
+    let CertificateOutcome::Holds { residual, .. } = &proof.outcome else {
+        return None;
+    };
+    let mut last = proof.data.t0.clone();
+    for &e in &proof.data.flip_sequence {
+        last.flip(e).ok()?;
+    }
+    let final_faces = last.face_list();
+    Some(match (metric, t0_metric) {
+        (CertifiedMetric::Input, Some(m)) => ClaimJson::on_input(
+            &proof.data,
+            surface,
+            &m.euclidean,
+            final_faces,
+            *residual,
+            bits,
+        ),
+        _ => ClaimJson::rounded(&proof.data, final_faces, *residual, bits),
+    })
 }
 
 /// Refine and certify a converged closed-surface solve `sol` of `surface` (whose binary64
