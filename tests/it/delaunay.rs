@@ -707,3 +707,108 @@ fn term_b61_rational_filter_decides_well_shaped_quads() {
 fn exact_values_q(l: &[Rational]) -> Vec<MRational> {
     l.iter().map(to_m).collect()
 }
+
+/// B61's range test of the rational filter. Three lengths near `2⁻⁵³⁰` and two of `2¹⁵⁰`
+/// or `2¹⁸⁰` (inside the range): the squares of the small ones are subnormal, and their
+/// rounding, multiplied by `bc ≈ 2³⁰⁰`, exceeds the bound `2⁻⁴⁷M̂ + 2⁻¹⁰⁰⁰` that assumes no
+/// underflow. Found by a search over near-ties `a ≈ d + e` (then `P ≈ b²((d+e)² − a²)`).
+/// The filter declines them (the smallest length is below `2⁻²⁰⁰`), the ladder decides
+/// the exact sign. Control: the same evaluation and bound without the range test read the
+/// wrong sign on each.
+#[test]
+fn term_b61_rational_filter_range_test_keeps_subnormal_squares_out() {
+    const W: [[u64; 5]; 4] = [
+        [
+            0x1ef1f36704062ca3,
+            0x4950000000000000,
+            0x4950000000000000,
+            0x1eee6a16a2504ed1,
+            0x1ec5f2dd96f029d1,
+        ],
+        [
+            0x1ee484d2d9de8514,
+            0x4950000000000000,
+            0x4950000000000000,
+            0x1ec359eeef8c1479,
+            0x1edf5cae3bf6ffe6,
+        ],
+        [
+            0x1ec4d23fc6341810,
+            0x4950000000000000,
+            0x4950000000000000,
+            0x1ec4a0fe74a096e9,
+            0x1e58a0a8c9c092a9,
+        ],
+        [
+            0x1e771999c9d21ede,
+            0x4b30000000000000,
+            0x4b30000000000000,
+            0x1e64d25deba2824b,
+            0x1e6960d5a801bb6e,
+        ],
+    ];
+    // RationalQuad::filter's evaluation and bound (B61), without the range test.
+    let unguarded = |[a, b, c, d, e]: [f64; 5]| {
+        let (a2, de, bc) = (a * a, d * e, b * c);
+        let p = de * (b * b + c * c - a2) + bc * (d * d + e * e - a2);
+        let m = de * (b * b + c * c + a2) + bc * (d * d + e * e + a2);
+        let t = 2f64.powi(-47) * m + 2f64.powi(-1000);
+        if p > t {
+            Some(Sign::Positive)
+        } else if p < -t {
+            Some(Sign::Negative)
+        } else {
+            None
+        }
+    };
+    for w in W {
+        let q = w.map(f64::from_bits);
+        for q in [q, [q[0], q[3], q[4], q[1], q[2]]] {
+            let exact = oracle_f64(q);
+            let l: Vec<Rational> = q.iter().map(|&x| Rational::from_f64(x).unwrap()).collect();
+            let rq = RationalQuad(quad_of(&l));
+            assert_eq!(rq.filter(), None, "{q:?}");
+            assert_eq!(ladder_sign(&rq), Some(exact), "{q:?}");
+            let naive = unguarded(q);
+            assert!(
+                naive.is_some() && naive != Some(exact),
+                "control: {q:?} {naive:?}"
+            );
+        }
+    }
+}
+
+/// The exact rung of the Delaunay predicate on `Real` lengths: double-double lengths of
+/// the cyclic trapezoid with diagonal 7, bases 4 and 6 and legs 5 (`P = 30·(−8) + 20·12 =
+/// 0`, a tie with `X, Y ≠ 0`) scaled by `s = 1 + 3·2⁻³⁰ + 2⁻⁹⁷` (each length `k·s` a
+/// double-double exactly; `P`'s monomials need about 400 bits) are decided `Zero` by the
+/// exact rung of a ladder that stops at 256 bits. Control: the same ladder without the
+/// exact rung leaves them undecided.
+#[test]
+fn term_b63_exact_rung_decides_real_ties_past_the_intervals() {
+    let l: Vec<Dd> = [7.0, 4.0, 5.0, 6.0, 5.0]
+        .iter()
+        .map(|&k: &f64| {
+            let hi = k * (1.0 + 3.0 * 2f64.powi(-30));
+            <Dd as Real>::from_f64(hi, ()) + <Dd as Real>::from_f64(k * 2f64.powi(-97), ())
+        })
+        .collect();
+    assert_eq!(oracle_of(&exact_values(&l)), Sign::Zero);
+    let short = Ladder {
+        start_bits: 128,
+        max_bits: 256,
+        exact: true,
+    };
+    assert_eq!(
+        decide(&RealQuad(quad_of(&l)), &short),
+        Certified::Known {
+            value: Sign::Zero,
+            stage: Stage::Exact
+        }
+    );
+    let no_exact = Ladder {
+        exact: false,
+        ..short
+    };
+    assert_eq!(decide(&RealQuad(quad_of(&l)), &no_exact).value(), None);
+}
