@@ -455,8 +455,13 @@ impl<T: Real> SignPredicate for RealQuad<'_, T> {
 #[derive(Clone, Copy, Debug)]
 pub struct RationalQuad<'a>(pub Quad<&'a Rational>);
 
-impl SignPredicate for RationalQuad<'_> {
-    fn filter(&self) -> Option<Sign> {
+impl RationalQuad<'_> {
+    /// The rational filter's evaluation (B61): `(P̂, t)` with `P̂` the binary64 value of `P`
+    /// on the inputs converted by `to_f64` (truncated) and `t = 2⁻⁴⁷·M̂ + 2⁻¹⁰⁰⁰` its error
+    /// bound, `M̂` the same expression with every `−` read as `+`; `None` when an input's
+    /// image leaves `[2⁻²⁰⁰, 2²⁰⁰]`. The filter answers the sign of `P̂` when `|P̂| > t`.
+    #[doc(hidden)]
+    pub fn filter_terms(&self) -> Option<(f64, f64)> {
         // `to_f64` rounds toward zero: four input errors below 2u per monomial on top of
         // the six roundings of the evaluation; the bound 2⁻⁴⁷·M̂ covers both (proof: B61).
         let q = self.0.to_array().map(Rational::to_f64);
@@ -470,7 +475,13 @@ impl SignPredicate for RationalQuad<'_> {
         let (de, bc) = (d * e, b * c);
         let p = de * (b * b + c * c - a2) + bc * (d * d + e * e - a2);
         let m = de * (b * b + c * c + a2) + bc * (d * d + e * e + a2);
-        let t = 8.0 * FILTER_REL * m + FILTER_ABS;
+        Some((p, 8.0 * FILTER_REL * m + FILTER_ABS))
+    }
+}
+
+impl SignPredicate for RationalQuad<'_> {
+    fn filter(&self) -> Option<Sign> {
+        let (p, t) = self.filter_terms()?;
         if p > t {
             Some(Sign::Positive)
         } else if p < -t {

@@ -812,3 +812,67 @@ fn term_b63_exact_rung_decides_real_ties_past_the_intervals() {
     };
     assert_eq!(decide(&RealQuad(quad_of(&l)), &no_exact).value(), None);
 }
+
+/// B61's bound for rational inputs, term by term: the filter's `t` against `2⁻⁴⁷·M` with
+/// `M = de(b² + c² + a²) + bc(d² + e² + a²)` evaluated exactly (num-rational) on the same
+/// truncated binary64 images. `M̂` sees at most six roundings per monomial and the product
+/// with `2⁻⁴⁷` is exact, so `t` lies within `8u·2⁻⁴⁷M + 2⁻⁹⁹⁹` of `2⁻⁴⁷M`. Random
+/// non-dyadic lengths (each within a factor 2⁸ of the others, at scales 2⁻¹⁵⁰ … 2¹⁵⁰, so
+/// every monomial of `M` is comparable and far from 1): a bound missing or misreading any
+/// term of `M` leaves that window.
+#[test]
+fn term_b61_rational_filter_bound_is_two_to_the_minus_47_times_the_majorant() {
+    use num_rational::BigRational as NQ;
+    let mut rng = ChaCha8Rng::seed_from_u64(6147);
+    let exact = |x: f64| NQ::from_float(x).unwrap();
+    let pow2 = |k: i32| {
+        if k >= 0 {
+            NQ::from_integer(num_bigint::BigInt::from(1) << k)
+        } else {
+            NQ::new(1.into(), num_bigint::BigInt::from(1) << -k)
+        }
+    };
+    let slack = pow2(-53) * NQ::from_integer(8.into());
+    for i in 0..400 {
+        let scale = rng.gen_range(-150..150);
+        let l: Vec<Rational> = (0..5)
+            .map(|_| {
+                let num: u64 = rng.gen_range(1 << 20..1 << 40);
+                let den: u64 = 2 * rng.gen_range(1u64 << 20..1 << 30) + 1;
+                let e = scale + rng.gen_range(0..8);
+                let q = Rational::from((num, den)) * Rational::from(rug::Integer::from(1) << 200);
+                q >> (200 - e + 20)
+            })
+            .collect();
+        let (_, t) = RationalQuad(quad_of(&l))
+            .filter_terms()
+            .expect("inside the range");
+        let [a, b, c, d, e] = [0, 1, 2, 3, 4].map(|k| exact(l[k].to_f64()));
+        let m = &d * &e * (&b * &b + &c * &c + &a * &a) + &b * &c * (&d * &d + &e * &e + &a * &a);
+        let target = pow2(-47) * m;
+        let gap = num_traits::Signed::abs(&(exact(t) - &target));
+        assert!(gap <= &slack * &target + pow2(-999), "case {i}: {l:?}");
+    }
+}
+
+/// The enclosure rung of the rational predicate (B62): the 3-4-5 rectangle with its
+/// diagonal moved by `±10⁻²⁰` relative is declined by the filter (`|P| ≈ 10⁻²⁰·M`, far
+/// below `2⁻⁴⁷M`) and decided by the 128-bit enclosure, before the exact rung, with the
+/// sign of the oracle.
+#[test]
+fn term_b62_rational_near_ties_are_decided_by_the_first_enclosure() {
+    for sign in [-1i32, 1] {
+        let eps = Rational::from((sign, 1)) / Rational::from(rug::Integer::u_pow_u(10, 20));
+        let diag = Rational::from(5) * (Rational::from(1) + &eps);
+        let l = [diag, 4.into(), 3.into(), 4.into(), 3.into()];
+        let q = RationalQuad(quad_of(&l));
+        assert_eq!(q.filter(), None);
+        assert_eq!(
+            decide(&q, &Ladder::default()),
+            Certified::Known {
+                value: oracle_of(&exact_values_q(&l)),
+                stage: Stage::Interval { bits: 128 }
+            }
+        );
+    }
+}
