@@ -536,13 +536,27 @@ fn term_b61_range_guard_keeps_subnormal_products_out_of_the_filter() {
             None
         }
     };
-    for w in W {
+    check_guard_witnesses(&W, unguarded, |q| {
+        assert_eq!(filter_f64(q), None, "{q:?}");
+        ladder_f64(q).value()
+    });
+}
+
+/// For each witness `w` (binary64 bit patterns) and its copy with the pairs `(b, c)` and
+/// `(d, e)` swapped (`P` is symmetric under the swap): `P ≠ 0`, the predicate under test
+/// (`decided`, which asserts its own filter declines) gives the oracle's sign, and the
+/// `unguarded` evaluation reads the wrong sign (the control).
+fn check_guard_witnesses(
+    witnesses: &[[u64; 5]],
+    unguarded: impl Fn([f64; 5]) -> Option<Sign>,
+    decided: impl Fn([f64; 5]) -> Option<Sign>,
+) {
+    for w in witnesses {
         let q = w.map(f64::from_bits);
         for q in [q, [q[0], q[3], q[4], q[1], q[2]]] {
             let exact = oracle_f64(q);
             assert_ne!(exact, Sign::Zero, "{q:?}");
-            assert_eq!(filter_f64(q), None, "{q:?}");
-            assert_eq!(ladder_f64(q).value(), Some(exact), "{q:?}");
+            assert_eq!(decided(q), Some(exact), "{q:?}");
             let naive = unguarded(q);
             assert!(
                 naive.is_some() && naive != Some(exact),
@@ -761,21 +775,12 @@ fn term_b61_rational_filter_range_test_keeps_subnormal_squares_out() {
             None
         }
     };
-    for w in W {
-        let q = w.map(f64::from_bits);
-        for q in [q, [q[0], q[3], q[4], q[1], q[2]]] {
-            let exact = oracle_f64(q);
-            let l: Vec<Rational> = q.iter().map(|&x| Rational::from_f64(x).unwrap()).collect();
-            let rq = RationalQuad(quad_of(&l));
-            assert_eq!(rq.filter(), None, "{q:?}");
-            assert_eq!(ladder_sign(&rq), Some(exact), "{q:?}");
-            let naive = unguarded(q);
-            assert!(
-                naive.is_some() && naive != Some(exact),
-                "control: {q:?} {naive:?}"
-            );
-        }
-    }
+    check_guard_witnesses(&W, unguarded, |q| {
+        let l: Vec<Rational> = q.iter().map(|&x| Rational::from_f64(x).unwrap()).collect();
+        let rq = RationalQuad(quad_of(&l));
+        assert_eq!(rq.filter(), None, "{q:?}");
+        ladder_sign(&rq)
+    });
 }
 
 /// The exact rung of the Delaunay predicate on `Real` lengths: double-double lengths of
