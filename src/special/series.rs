@@ -500,4 +500,127 @@ mod terms {
         assert!(d <= exact && exact <= u, "{down} {up}");
         assert!(d < u, "directed roundings coincide");
     }
+
+    /// Each bound of the truncated series is rounded outward at every step (B52): the
+    /// lower bound uses the lower coefficients and rounds down, the upper the upper ones
+    /// and rounds up, so `bound(Down) − τ ≤ Л(t) ≤ bound(Up) + τ` at 128 bits for 96 points
+    /// `t` of each expansion (around 0: `Л(t)`; around π/2: `g(t) = −Л(π/2 + t)`), against
+    /// the independent tangent-number series at 400 bits. With every term of the table the
+    /// tail `τ` is far below one ulp, so a bound rounded to nearest is on the wrong side of
+    /// `Л(t)` for some points. Control: the nearest-rounded point value, taken as a bound,
+    /// misses `Л(t)` by more than `τ` at some points.
+    #[test]
+    fn term_b52_point_bounds_are_rounded_outward_with_their_own_coefficients() {
+        let tab = table(128);
+        let p = tab.prec;
+        let mut nearest_outside = 0;
+        for e in [Expansion::AtZero, Expansion::AtHalfPi] {
+            for k in 1..=96 {
+                let t = Float::with_val(p, e.radius() * f64::from(k) / 97.0);
+                // Every term of the table: the tail τ is far below one ulp.
+                let n = tab.a_lo.len();
+                let tau = tail_bound(&t, e, &tab, n).expect("θ ≤ 1/8");
+                let lo = bound(&t, &t, e, Dir::Down, &tab, n, None);
+                let hi = bound(&t, &t, e, Dir::Up, &tab, n, None);
+                let near = bound(&t, &t, e, Dir::Near, &tab, n, None);
+                let lo = Float::with_val_round(p, &lo - &tau, Round::Down).0;
+                let hi = Float::with_val_round(p, &hi + &tau, Round::Up).0;
+                let truth = match e {
+                    Expansion::AtZero => lobachevsky_tangent_series(&t, 400).expect("reference"),
+                    Expansion::AtHalfPi => {
+                        let pi = Float::with_val(600, rug::float::Constant::Pi);
+                        let x = Float::with_val(600, (pi >> 1u32) + &t);
+                        -lobachevsky_tangent_series(&x, 400).expect("reference")
+                    }
+                };
+                assert!(
+                    lo <= truth && truth <= hi,
+                    "{e:?} t = {t}: {lo} {truth} {hi}"
+                );
+                // The nearest value, taken as either bound, misses Л(t) past the tail.
+                let below = Float::with_val(600, &near + &tau) < truth;
+                let above = Float::with_val(600, &near - &tau) > truth;
+                nearest_outside += usize::from(below || above);
+            }
+        }
+        assert!(
+            nearest_outside > 0,
+            "control: the nearest value never leaves"
+        );
+    }
+
+    /// The same outward rounding where the polynomial dominates: a table whose
+    /// coefficients enclose `c_n = 1000/3` (each end rounded its own way at 128 bits), so
+    /// that `Σ c_n t^{2n}` outweighs `1 − log 2t` and `log 2 − …` and its own rounding and
+    /// coefficient ends decide the bounds. The value `t(1 − log 2t + Σ_{n≤N} c_n t^{2n})`
+    /// (and `t(log 2 − Σ c_n t^{2n})` around π/2) is computed at 600 bits with the exact
+    /// `c_n`. A lower bound made of the upper coefficients, or a bound rounded to nearest,
+    /// misses it at some of the 96 points. Control: the nearest-rounded value lies below it
+    /// at some points and above it at others (as either bound it would be wrong).
+    #[test]
+    fn term_b52_bounds_take_their_own_coefficient_ends_where_the_polynomial_dominates() {
+        use super::super::coefficients::{NearTier, Table, NEAR_TIERS};
+        let p = 128;
+        let n = 6;
+        let c = rug::Rational::from((1000, 3));
+        let end = |r: Round| vec![Float::with_val_round(p, &c, r).0; n];
+        let tab = Table {
+            prec: p,
+            a_lo: end(Round::Down),
+            a_hi: end(Round::Up),
+            b_lo: end(Round::Down),
+            b_hi: end(Round::Up),
+            pi: (
+                Float::with_val_round(p, rug::float::Constant::Pi, Round::Down).0,
+                Float::with_val_round(p, rug::float::Constant::Pi, Round::Up).0,
+            ),
+            ln2: (
+                Float::with_val_round(p, rug::float::Constant::Log2, Round::Down).0,
+                Float::with_val_round(p, rug::float::Constant::Log2, Round::Up).0,
+            ),
+            near_tiers: NEAR_TIERS
+                .iter()
+                .filter(|&&bits| bits < p)
+                .map(|&bits| NearTier {
+                    prec: bits,
+                    a: vec![Float::with_val(bits, &c); n],
+                    b: vec![Float::with_val(bits, &c); n],
+                })
+                .collect(),
+        };
+        let (mut below, mut above) = (0, 0);
+        for e in [Expansion::AtZero, Expansion::AtHalfPi] {
+            for k in 1..=96 {
+                let t = Float::with_val(p, 0.3 + 0.2 * f64::from(k) / 97.0);
+                let s = Float::with_val(600, t.square_ref());
+                let mut poly = Float::with_val(600, 0);
+                for _ in 0..n {
+                    poly = Float::with_val(600, (poly + &c) * &s);
+                }
+                let truth = match e {
+                    Expansion::AtZero => {
+                        let lg = Float::with_val(600, Float::with_val(600, &t << 1u32).ln_ref());
+                        Float::with_val(600, (1 - lg + &poly) * &t)
+                    }
+                    Expansion::AtHalfPi => {
+                        let ln2 = Float::with_val(600, rug::float::Constant::Log2);
+                        Float::with_val(600, (ln2 - &poly) * &t)
+                    }
+                };
+                let lo = bound(&t, &t, e, Dir::Down, &tab, n, None);
+                let hi = bound(&t, &t, e, Dir::Up, &tab, n, None);
+                let near = bound(&t, &t, e, Dir::Near, &tab, n, None);
+                assert!(
+                    lo <= truth && truth <= hi,
+                    "{e:?} t = {t}: {lo} {truth} {hi}"
+                );
+                below += usize::from(near < truth);
+                above += usize::from(near > truth);
+            }
+        }
+        assert!(
+            below > 0 && above > 0,
+            "control: {below} below, {above} above"
+        );
+    }
 }
