@@ -623,4 +623,77 @@ mod terms {
             "control: {below} below, {above} above"
         );
     }
+
+    /// The bounds around π/2, `t(log 2 − Σ b_n t^{2n})`, where a one-ulp error of the
+    /// polynomial or of the constant decides: a table whose constant encloses `L = 2/97`
+    /// in place of `log 2`, whose two coefficients enclose `1/3`, at `t` near `1/4`, where `L − Σ` cancels to about `2⁻⁹` and its own ulp is
+    /// about `2⁻¹³⁶`, below the `2⁻¹³³` between the coefficient ends. Both bounds must
+    /// enclose `t(L − (s + s²)/3)`, `s = t²`, computed in ℚ. Taking the other end of the
+    /// coefficients or of `L`, or Horner rounded to nearest, misses it. Control: the
+    /// bounds computed with the ends exchanged exclude it at some point.
+    #[test]
+    fn term_b52_bounds_around_half_pi_take_their_own_ends() {
+        use super::super::coefficients::{NearTier, Table, NEAR_TIERS};
+        use rug::Rational;
+        let p = 128;
+        let third = Rational::from((1, 3));
+        let l = Rational::from((2, 97));
+        let ends = |c: &Rational| {
+            (
+                vec![Float::with_val_round(p, c, Round::Down).0; 2],
+                vec![Float::with_val_round(p, c, Round::Up).0; 2],
+            )
+        };
+        let (lo_c, hi_c) = ends(&third);
+        let table = |swap: bool| Table {
+            prec: p,
+            a_lo: lo_c.clone(),
+            a_hi: hi_c.clone(),
+            b_lo: if swap { hi_c.clone() } else { lo_c.clone() },
+            b_hi: if swap { lo_c.clone() } else { hi_c.clone() },
+            pi: (
+                Float::with_val_round(p, rug::float::Constant::Pi, Round::Down).0,
+                Float::with_val_round(p, rug::float::Constant::Pi, Round::Up).0,
+            ),
+            ln2: (
+                Float::with_val_round(p, &l, Round::Down).0,
+                Float::with_val_round(p, &l, Round::Up).0,
+            ),
+            near_tiers: NEAR_TIERS
+                .iter()
+                .filter(|&&bits| bits < p)
+                .map(|&bits| NearTier {
+                    prec: bits,
+                    a: vec![Float::with_val(bits, &third); 2],
+                    b: vec![Float::with_val(bits, &third); 2],
+                })
+                .collect(),
+        };
+        let (tab, swapped) = (table(false), table(true));
+        let mut excluded = 0;
+        for k in 0..64 {
+            let t = Float::with_val(p, 0.245 + 0.01 * f64::from(k) / 63.0);
+            let tq = t.to_rational().expect("finite");
+            let sq = Rational::from(&tq * &tq);
+            let truth = Rational::from(
+                &tq * (l.clone() - (sq.clone() + Rational::from(&sq * &sq)) * &third),
+            );
+            let e = Expansion::AtHalfPi;
+            let lo = bound(&t, &t, e, Dir::Down, &tab, 2, None)
+                .to_rational()
+                .expect("finite");
+            let hi = bound(&t, &t, e, Dir::Up, &tab, 2, None)
+                .to_rational()
+                .expect("finite");
+            assert!(lo <= truth && truth <= hi, "t = {t}");
+            let slo = bound(&t, &t, e, Dir::Down, &swapped, 2, None)
+                .to_rational()
+                .expect("finite");
+            let shi = bound(&t, &t, e, Dir::Up, &swapped, 2, None)
+                .to_rational()
+                .expect("finite");
+            excluded += usize::from(slo > truth || shi < truth);
+        }
+        assert!(excluded > 0, "control: the exchanged ends still enclose");
+    }
 }
