@@ -675,9 +675,7 @@ mod terms {
             let t = Float::with_val(p, 0.245 + 0.01 * f64::from(k) / 63.0);
             let tq = t.to_rational().expect("finite");
             let sq = Rational::from(&tq * &tq);
-            let truth = Rational::from(
-                &tq * (l.clone() - (sq.clone() + Rational::from(&sq * &sq)) * &third),
-            );
+            let truth = &tq * (l.clone() - (sq.clone() + Rational::from(&sq * &sq)) * &third);
             let e = Expansion::AtHalfPi;
             let lo = bound(&t, &t, e, Dir::Down, &tab, 2, None)
                 .to_rational()
