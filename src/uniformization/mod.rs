@@ -61,6 +61,7 @@ pub mod pipeline;
 #[path = "sphere/pole.rs"]
 pub mod pole;
 pub mod refine;
+pub(crate) mod refine_newton;
 pub mod scaling;
 #[path = "sphere/sphere.rs"]
 pub mod sphere;

@@ -21,11 +21,13 @@
 //! without a solution, never a weaker test of one.
 //!
 //! **Refinement.** `u` kept in a higher precision `T`, the residual evaluated in `T`, the
-//! correction from a binary64 factor computed once; it stops at the tolerance, at the
+//! correction in double-double from a binary64 factor computed once (as the solver
+//! supplies it: the factor alone, or iterative refinement against a Hessian of the
+//! iterate); it stops at the tolerance, at the
 //! iteration cap, or after two iterations in a row that fail to halve the residual (the
 //! precision's floor).
 
-use crate::scalar::Real;
+use crate::scalar::{Dd, Real};
 
 /// One accepted Newton step.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
@@ -270,8 +272,9 @@ pub(crate) fn drive<S: NewtonSystem>(
 }
 
 /// The refinement loop (module doc) from `u` in `T`: `residual(u)` is `Θ − θ(u)` in `T`
-/// (or the error that stops the refinement), `correction(r)` the binary64 Newton
-/// correction `−H⁻¹r` for the binary64 residual `r` (one entry per vertex), and `over`
+/// (or the error that stops the refinement), `correction(r, r₆₄)` the Newton correction
+/// `−H⁻¹r` in double-double from the residual in `T` and rounded to binary64 (one entry per
+/// vertex; the binary64 correction `−H̃⁻¹r₆₄` is one with zero trailing words), and `over`
 /// the vertices whose residual is measured. Returns the refinement and, when the residual
 /// stopped being finite at a measured vertex, the first such vertex (then the history ends
 /// with `+∞` and the target is not reached).
@@ -281,7 +284,7 @@ pub(crate) fn refine_loop<T: Real, E>(
     (tolerance, max_iterations): (f64, usize),
     over: Over<'_>,
     mut residual: impl FnMut(&[T]) -> Result<Vec<T>, E>,
-    mut correction: impl FnMut(&[f64]) -> Vec<f64>,
+    mut correction: impl FnMut(&[T], &[f64]) -> Vec<Dd>,
 ) -> Result<(Refinement<T>, Option<usize>), E> {
     let mut history = Vec::new();
     let mut stalls = 0;
@@ -320,9 +323,12 @@ pub(crate) fn refine_loop<T: Real, E>(
             };
             return Ok((refinement, None));
         }
-        let d = correction(&rf);
+        let d = correction(&r, &rf);
         for (ui, di) in u.iter_mut().zip(&d) {
-            *ui += &T::from_f64(*di, ctx);
+            *ui += &T::from_f64(di.hi, ctx);
+            if di.lo != 0.0 {
+                *ui += &T::from_f64(di.lo, ctx);
+            }
         }
         iteration += 1;
     }

@@ -23,7 +23,7 @@ use super::newton_driver::{refine_loop, Over};
 use super::refine::Refinement;
 use super::targets::Targets;
 use crate::mesh::Mesh;
-use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
+use crate::scalar::{Dd, Interval, Mpfr, Precision, Real, Sign};
 use crate::variational::hyperbolic::{cone_angles, hyperbolic_log_length, length_from_log};
 use rug::Rational;
 
@@ -85,7 +85,10 @@ pub fn refine_hyperbolic_on<T: Real>(
             .collect())
     };
     // H d = −∇E = −(Θ − θ).
-    let correction = |r: &[f64]| factor.solve(&r.iter().map(|x| -x).collect::<Vec<_>>());
+    let correction = |_: &[T], r: &[f64]| {
+        let d = factor.solve(&r.iter().map(|x| -x).collect::<Vec<_>>());
+        d.into_iter().map(Dd::from_f64).collect::<Vec<_>>()
+    };
     // A residual that stops being finite ends the refinement unreached (history `+∞`).
     let limits = (tolerance, max_iterations);
     let Ok((refinement, _)) = refine_loop(u, ctx, limits, Over::ALL, residual, correction);
