@@ -17,7 +17,8 @@ use crate::geometry::exact3d::{opposite_in_plane, squared_distance};
 use crate::io::Surface;
 use crate::mesh::{Edge, Mesh};
 use crate::predicates::delaunay::{delaunay_p, delaunay_sign_squared, enclose_p, Quad, QuadEdges};
-use crate::scalar::{Interval, Mpfr, Real, Sign};
+use crate::scalar::{Interval, IntervalBound, Mpfr, Real, Sign};
+use rug::float::Round;
 use rug::Rational;
 
 /// The input metric on `sol`'s `T₀`: `mesh` and `lengths` are what [`super::uniformize`]
@@ -195,7 +196,7 @@ fn negative_with_undo(
         let Some(q) = QuadEdges::of(&m, f) else {
             return false;
         };
-        if !strictly_convex(&q.lengths(enclosures).map(Clone::clone)) {
+        if !strictly_convex_enclosed(&q.lengths(enclosures).map(Clone::clone)) {
             return false;
         }
         undo.push((f.idx(), enclosures[f.idx()].clone()));
@@ -244,7 +245,7 @@ pub fn replay_enclosed(
                 e.0
             ));
         };
-        if !strictly_convex(&q.lengths(&enclosures).map(Clone::clone)) {
+        if !strictly_convex_enclosed(&q.lengths(&enclosures).map(Clone::clone)) {
             return Err(format!(
                 "Euclidean flip {k} (e{}): its quadrilateral is not certified strictly convex for the exact input lengths",
                 e.0
@@ -255,6 +256,21 @@ pub fn replay_enclosed(
     Ok((mi, enclosures))
 }
 
+/// [`strictly_convex`] on the enclosures `q`, decided first on their outward binary64
+/// roundings (each `[RD(lo), RU(hi)]` contains the MPFR interval, so a quadrilateral
+/// certified strictly convex there is so for every metric in `q`), then, where binary64
+/// leaves it open (a near-degenerate corner or an angle sum near `π`), on `q` itself.
+/// proof: B73
+pub(crate) fn strictly_convex_enclosed(q: &Quad<Interval<Mpfr>>) -> bool {
+    let outward = |x: &Interval<Mpfr>| {
+        Interval::new(
+            x.lo().as_float().to_f64_round(Round::Down),
+            x.hi().as_float().to_f64_round(Round::Up),
+        )
+    };
+    strictly_convex(&q.as_refs().map(outward)) || strictly_convex(q)
+}
+
 /// Whether the quadrilateral `[ij, jk, ki, il, lj]` (faces `ijk`, `jil`) is certified
 /// strictly convex at both ends of its diagonal: `∠kij + ∠jil < π` and `∠ijk + ∠lji < π`.
 /// For corner angles `α, β ∈ (0, π)`, `α + β < π ⟺ cot α + cot β > 0` (`cot` decreases on
@@ -262,10 +278,10 @@ pub fn replay_enclosed(
 /// `x₁·4A₂ + x₂·4A₁ > 0` for `x` the numerators and `4A = √(16A²)` from the squared
 /// sides, both areas certified positive (each face a strict triangle). No arc tangent:
 /// the test costs a few products and two square roots per quadrilateral. proof: B73
-pub fn strictly_convex(q: &Quad<Interval<Mpfr>>) -> bool {
-    let sq = |x: &Interval<Mpfr>| x.clone() * x;
+pub fn strictly_convex<B: IntervalBound>(q: &Quad<Interval<B>>) -> bool {
+    let sq = |x: &Interval<B>| x.clone() * x;
     let [ij, jk, ki, il, lj] = [&q.ij, &q.jk, &q.ki, &q.il, &q.lj].map(sq);
-    let four_area = |a: &Interval<Mpfr>, b: &Interval<Mpfr>, c: &Interval<Mpfr>| {
+    let four_area = |a: &Interval<B>, b: &Interval<B>, c: &Interval<B>| {
         // 16A² = 2a²b² + 2b²c² + 2c²a² − a⁴ − b⁴ − c⁴ (a, b, c squared sides).
         let two = a.lit(2.0);
         let p = (a.clone() * b + &(b.clone() * c) + &(c.clone() * a)) * &two
@@ -459,6 +475,55 @@ mod tests {
         replay_values(&s.mesh, &mut values, &seq).expect("replay");
         let found = clearly_not_delaunay(&t, &values, &seq).expect("a negative edge");
         assert!(negatives.contains(&found));
+    }
+
+    /// [`strictly_convex_enclosed`]: binary64 first, MPFR where binary64 leaves it open.
+    /// `i = (0, 0)`, `j = (1, 0)`, `k = (−1, 1)`, `l = (1, −1 + δ)`: the angle sum at `i`
+    /// is `π − δ/2 + O(δ²)`. At `δ = 2⁻⁶⁶` binary64 enclosures cannot certify it below `π`,
+    /// MPFR-256 does; the unit square is certified by binary64 alone; and the control
+    /// `δ = −2⁻⁶⁶` (a reflex corner at `i`) is refused by both.
+    #[test]
+    fn strictly_convex_enclosed_falls_back_to_mpfr_near_a_straight_corner() {
+        let prec = Precision::new(256).expect("bits");
+        let quad = |delta: Rational| {
+            let one = Rational::from(1);
+            let m = one.clone() - delta;
+            let sq = [
+                one.clone(),
+                Rational::from(5),
+                Rational::from(2),
+                one + m.clone() * &m,
+                m.clone() * &m,
+            ];
+            let [ij, jk, ki, il, lj] = sq.map(|q| I::from_rational(&q, prec).sqrt());
+            Quad { ij, jk, ki, il, lj }
+        };
+        let outward = |q: &Quad<I>| {
+            q.as_refs().map(|x| {
+                Interval::new(
+                    x.lo().as_float().to_f64_round(Round::Down),
+                    x.hi().as_float().to_f64_round(Round::Up),
+                )
+            })
+        };
+        let tiny = Rational::from((1, 1u128 << 66));
+        let near = quad(tiny.clone());
+        assert!(!strictly_convex(&outward(&near)), "binary64 leaves it open");
+        assert!(strictly_convex(&near) && strictly_convex_enclosed(&near));
+        let s = I::point(Mpfr::from_f64(1.0, prec));
+        let d = I::point(Mpfr::from_f64(2.0, prec)).sqrt();
+        let square = Quad {
+            ij: d,
+            jk: s.clone(),
+            ki: s.clone(),
+            il: s.clone(),
+            lj: s,
+        };
+        assert!(strictly_convex(&outward(&square)) && strictly_convex_enclosed(&square));
+        // Control: the reflex corner.
+        let reflex = quad(-tiny);
+        assert!(!strictly_convex(&outward(&reflex)));
+        assert!(!strictly_convex_enclosed(&reflex));
     }
 
     /// [`t0_delaunay_on_input`] refuses a `T₀` that is not Delaunay for the exact metric:
