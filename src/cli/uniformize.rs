@@ -10,7 +10,7 @@ pub use super::uniformize_options::Options;
 use penner::io::json::exact_number;
 use penner::uniformization::boundary::flat_with_even_boundary;
 use penner::uniformization::pipeline::{
-    uniformize_boundary, uniformize_closed, uniformize_hyperbolic, uniformize_sphere,
+    uniformize_boundary, uniformize_closed_owned, uniformize_hyperbolic, uniformize_sphere,
     CertifiedMetric, ClosedOutcome, Options as ClosedOptions, Precision,
 };
 use penner::uniformization::Targets;
@@ -127,12 +127,16 @@ pub fn run(o: &Options<'_>) -> Result<u8, CliError> {
             ));
         }
     };
-    let outcome = uniformize_closed(&surface, &targets, &options, &mut progress)
+    // The pipeline keeps the surface (not a copy) in its outcome; `--uv` needs the input
+    // as given, which differs from the outcome's surface when that is rescaled.
+    let input = o.extra.uv.is_some().then(|| surface.clone());
+    let outcome = uniformize_closed_owned(surface, &targets, &options, &mut progress)
         .map_err(|e| pipeline_error(&shown, &e))?;
     if let Some(b) = &bar {
         b.finish_and_clear();
     }
-    report_closed(&shown, &surface, &outcome, precision, o)
+    let surface = input.as_ref().unwrap_or(&outcome.surface);
+    report_closed(&shown, surface, &outcome, precision, o)
 }
 
 /// The report of [`uniformize_closed`]'s outcome, the SVG and the claim written.

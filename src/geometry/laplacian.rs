@@ -44,11 +44,19 @@ impl<T: Real> SparseMatrix<T> {
         for r in 0..n {
             keyed[start[r]..start[r + 1]].sort_unstable();
         }
+        // The number of distinct positions, so that the arrays below are allocated once at
+        // their final size.
+        let distinct: usize = (0..n)
+            .map(|r| {
+                let row = &keyed[start[r]..start[r + 1]];
+                row.len() - row.windows(2).filter(|w| w[0].0 == w[1].0).count()
+            })
+            .sum();
         let order = keyed.into_iter().map(|(_, t)| t);
         let mut row_ptr = vec![0; n + 1];
-        let mut col: Vec<usize> = Vec::new();
-        let mut val: Vec<T> = Vec::new();
-        let mut rows: Vec<usize> = Vec::new();
+        let mut col: Vec<usize> = Vec::with_capacity(distinct);
+        let mut val: Vec<T> = Vec::with_capacity(distinct);
+        let mut rows: Vec<usize> = Vec::with_capacity(distinct);
         for t in order {
             let (r, c, ref v) = triplets[t];
             match (rows.last(), col.last(), val.last_mut()) {

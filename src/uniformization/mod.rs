@@ -23,12 +23,16 @@ pub(crate) mod ball_argument;
 pub mod boundary;
 #[path = "certificate/box_f64.rs"]
 pub(crate) mod box_f64;
+#[path = "certificate/box_values.rs"]
+pub(crate) mod box_values;
 #[path = "certificate/cell_boundary.rs"]
 pub(crate) mod cell_boundary;
 #[path = "certificate/certificate.rs"]
 pub mod certificate;
 #[path = "certificate/outcome.rs"]
 pub(crate) mod certificate_outcome;
+#[path = "certificate/prove.rs"]
+pub(crate) mod certificate_prove;
 #[path = "certificate/claim_form.rs"]
 pub mod claim_form;
 pub mod components;

@@ -11,10 +11,10 @@
 use super::certificate_outcome::{to_f64_up, CertificateOutcome, I};
 use super::hessian::{grounded_hessian, CholeskyCache};
 use super::verified_cholesky::{lambda_min_lower_bound, up, SymmetricLower};
-use crate::geometry::laplacian::SparseMatrix;
 use crate::mesh::Mesh;
 use crate::scalar::{IntervalBound, Mpfr, Precision, Real};
 use rug::Rational;
+use std::borrow::Borrow;
 
 /// Whether `x` is a valid enclosure certified `≥ 0`.
 pub(crate) fn certified_nonnegative(x: &I) -> bool {
@@ -22,30 +22,60 @@ pub(crate) fn certified_nonnegative(x: &I) -> bool {
     x.is_valid() && (lo.is_zero() || lo.is_sign_positive())
 }
 
-/// The ball argument (module documentation) for the interval Laplacian `laplacian` over
-/// the box of radius `radius`, the free vertices `free_idx` (`None` at fixed vertices) and
-/// the enclosed residuals `residual` at the centre (one per free vertex). `mesh` and
-/// `box_lengths` only pick the verified shift (an estimate of `λ_min(H_mid)`); the
-/// entries of `laplacian` must be valid enclosures. proof: B71, B76
-pub(crate) fn ball_outcome(
+/// The Hessian `H = −L` over the box on the free vertices, as B71 step 2 uses it: the
+/// binary64 midpoint matrix `H_mid` (lower triangle) and `‖H_rad‖_∞` rounded up.
+pub(crate) struct BoxHessian {
+    mid: SymmetricLower,
+    rad_norm: f64,
+}
+
+/// The ball argument (module documentation) for the interval Laplacian over the box of
+/// radius `radius`, given by its stored entries `laplacian` (as [`box_hessian`] takes
+/// them), the free vertices `free_idx` (`None` at fixed vertices) and the enclosed
+/// residuals `residual` at the centre (one per free vertex). `mesh` and `box_lengths`
+/// (binary64 approximations of the lengths over the box, [`Real::approx_f64`]) only pick
+/// the verified shift (an estimate of `λ_min(H_mid)`); the entries of the Laplacian must
+/// be valid enclosures. proof: B71, B76
+pub(crate) fn ball_outcome<W: Borrow<I>>(
     mesh: &Mesh,
-    box_lengths: &[I],
-    laplacian: &SparseMatrix<I>,
+    box_lengths: &[f64],
+    laplacian: impl IntoIterator<Item = (usize, usize, W)>,
     free_idx: &[Option<usize>],
     residual: &[I],
     radius: &Rational,
     prec: Precision,
 ) -> CertificateOutcome {
-    let undecided = |reason: String| CertificateOutcome::Undecided { reason };
-    let n_free = residual.len();
+    let hessian = box_hessian(laplacian, free_idx, residual.len(), prec);
+    ball_outcome_of(
+        mesh,
+        box_lengths,
+        &hessian,
+        free_idx,
+        residual,
+        radius,
+        prec,
+    )
+}
+
+/// The Hessian over the box from the stored entries `laplacian` of the interval Laplacian
+/// (`(row, column, value)`, as
+/// [`SparseMatrix::entries`](crate::geometry::laplacian::SparseMatrix::entries)) on the
+/// `n_free` free vertices `free_idx`: per entry the binary64 midpoint of `−L` and the
+/// radius about it, rounded up (B71 step 2). proof: B71
+pub(crate) fn box_hessian<W: Borrow<I>>(
+    laplacian: impl IntoIterator<Item = (usize, usize, W)>,
+    free_idx: &[Option<usize>],
+    n_free: usize,
+    prec: Precision,
+) -> BoxHessian {
     // The Hessian over the box: midpoint and radius matrices of −L.
     let mut entries = Vec::new();
     let mut rad_row = vec![0.0f64; n_free];
-    for (i, j, w) in laplacian.entries() {
+    for (i, j, w) in laplacian {
         let (Some(a), Some(b)) = (free_idx[i], free_idx[j]) else {
             continue;
         };
-        let h = -w.clone();
+        let h = -w.borrow().clone();
         let mid = ((h.lo().clone() + h.hi()) * &h.lo().lit(0.5)).approx_f64();
         let m = Mpfr::from_f64(mid, prec);
         let rad = to_f64_up(&h.hi().sub_up(&m)).max(to_f64_up(&m.sub_up(h.lo())));
@@ -54,13 +84,31 @@ pub(crate) fn ball_outcome(
             entries.push((a, b, mid));
         }
     }
-    let rad_norm = rad_row.iter().copied().fold(0.0, f64::max);
-    let mid = SymmetricLower { n: n_free, entries };
+    BoxHessian {
+        mid: SymmetricLower { n: n_free, entries },
+        rad_norm: rad_row.iter().copied().fold(0.0, f64::max),
+    }
+}
+
+/// [`ball_outcome`] for the Hessian over the box formed by [`box_hessian`] (the Laplacian
+/// itself no longer needed). proof: B71, B76
+pub(crate) fn ball_outcome_of(
+    mesh: &Mesh,
+    box_lengths: &[f64],
+    hessian: &BoxHessian,
+    free_idx: &[Option<usize>],
+    residual: &[I],
+    radius: &Rational,
+    prec: Precision,
+) -> CertificateOutcome {
+    let undecided = |reason: String| CertificateOutcome::Undecided { reason };
+    let BoxHessian { mid, rad_norm } = hessian;
+    let rad_norm = *rad_norm;
     // An estimate of λ_min(H_mid) by inverse iteration, then verified shifts below it.
     let estimate = smallest_eigenvalue_estimate(mesh, box_lengths, free_idx);
     let bound = [0.5, 0.25, 0.0625]
         .into_iter()
-        .filter_map(|frac| lambda_min_lower_bound(&mid, estimate * frac))
+        .filter_map(|frac| lambda_min_lower_bound(mid, estimate * frac))
         .find(|b| b.lambda_min > 0.0);
     let Some(bound) = bound else {
         return undecided("no verified positive lower bound on the Hessian's eigenvalues".into());
@@ -104,9 +152,9 @@ pub(crate) fn ball_outcome(
 
 /// `λ_min` of the Hessian on the free vertices at the midpoint lengths, by inverse
 /// iteration (a heuristic that only picks the shift; the bound itself is verified).
-fn smallest_eigenvalue_estimate(mesh: &Mesh, lengths: &[I], free_idx: &[Option<usize>]) -> f64 {
-    let top = lengths.iter().map(Real::approx_f64).fold(0.0, f64::max);
-    let lf: Vec<f64> = lengths.iter().map(|x| x.approx_f64() / top).collect();
+fn smallest_eigenvalue_estimate(mesh: &Mesh, lengths: &[f64], free_idx: &[Option<usize>]) -> f64 {
+    let top = lengths.iter().copied().fold(0.0, f64::max);
+    let lf: Vec<f64> = lengths.iter().map(|x| x / top).collect();
     let h = grounded_hessian(mesh, &lf, free_idx);
     let Some(f) = CholeskyCache::default().factor(&h) else {
         return 0.0;
@@ -142,6 +190,7 @@ fn smallest_eigenvalue_estimate(mesh: &Mesh, lengths: &[I], free_idx: &[Option<u
 mod terms {
     use super::*;
     use crate::geometry::laplacian::cotan_laplacian;
+    use crate::geometry::laplacian::SparseMatrix;
     use crate::mesh::builders;
 
     const BITS: u64 = 128;
@@ -152,7 +201,7 @@ mod terms {
 
     /// The regular tetrahedron's Laplacian, each entry widened by `delta` on both sides,
     /// with vertex 0 grounded.
-    fn setup(delta: f64) -> (Mesh, Vec<I>, SparseMatrix<I>, Vec<Option<usize>>) {
+    fn setup(delta: f64) -> (Mesh, Vec<f64>, SparseMatrix<I>, Vec<Option<usize>>) {
         let mesh = builders::tetrahedron().mesh;
         let p = prec();
         let lengths: Vec<I> = (0..mesh.n_edges())
@@ -165,6 +214,7 @@ mod terms {
         };
         let wide = l.map_values(widen);
         let free = vec![None, Some(0), Some(1), Some(2)];
+        let lengths = lengths.iter().map(Real::approx_f64).collect();
         (mesh, lengths, wide, free)
     }
 
@@ -188,7 +238,7 @@ mod terms {
         let out = ball_outcome(
             &mesh,
             &lengths,
-            &wide,
+            wide.entries(),
             &free,
             &r,
             &Rational::from(1),
@@ -203,7 +253,7 @@ mod terms {
         match ball_outcome(
             &mesh,
             &lengths,
-            &narrow,
+            narrow.entries(),
             &free,
             &r,
             &Rational::from(1),
@@ -223,21 +273,45 @@ mod terms {
         let (mesh, lengths, narrow, free) = setup(1e-12);
         let radius = Rational::from((1, 10_000));
         let wide = residual(&[(-1e-3, 1e-6); 3]);
-        let out = ball_outcome(&mesh, &lengths, &narrow, &free, &wide, &radius, prec());
+        let out = ball_outcome(
+            &mesh,
+            &lengths,
+            narrow.entries(),
+            &free,
+            &wide,
+            &radius,
+            prec(),
+        );
         assert!(
             matches!(out, CertificateOutcome::Undecided { .. }),
             "{out:?}"
         );
         // The mirror image: the larger end on the right.
         let right = residual(&[(-1e-6, 1e-3); 3]);
-        let out = ball_outcome(&mesh, &lengths, &narrow, &free, &right, &radius, prec());
+        let out = ball_outcome(
+            &mesh,
+            &lengths,
+            narrow.entries(),
+            &free,
+            &right,
+            &radius,
+            prec(),
+        );
         assert!(
             matches!(out, CertificateOutcome::Undecided { .. }),
             "{out:?}"
         );
         // Positive side: residuals of magnitude 10⁻⁶ certify within γ/μ ≥ √3·10⁻⁶/w.
         let small = residual(&[(-1e-6, 1e-6); 3]);
-        match ball_outcome(&mesh, &lengths, &narrow, &free, &small, &radius, prec()) {
+        match ball_outcome(
+            &mesh,
+            &lengths,
+            narrow.entries(),
+            &free,
+            &small,
+            &radius,
+            prec(),
+        ) {
             CertificateOutcome::Holds {
                 distance, residual, ..
             } => {
@@ -257,19 +331,19 @@ mod terms {
         let r = residual(&[(1e-6, 1e-6); 3]);
         let big = Rational::from(1);
         let CertificateOutcome::Holds { distance, .. } =
-            ball_outcome(&mesh, &lengths, &narrow, &free, &r, &big, prec())
+            ball_outcome(&mesh, &lengths, narrow.entries(), &free, &r, &big, prec())
         else {
             panic!("the reference ball must certify");
         };
         // A radius strictly below the proved distance: the ball does not fit.
         let below = Rational::from_f64(distance * (1.0 - 1e-9)).expect("finite");
-        let out = ball_outcome(&mesh, &lengths, &narrow, &free, &r, &below, prec());
+        let out = ball_outcome(&mesh, &lengths, narrow.entries(), &free, &r, &below, prec());
         assert!(
             matches!(out, CertificateOutcome::Undecided { .. }),
             "{out:?}"
         );
         let above = Rational::from_f64(distance * 2.0).expect("finite");
-        let out = ball_outcome(&mesh, &lengths, &narrow, &free, &r, &above, prec());
+        let out = ball_outcome(&mesh, &lengths, narrow.entries(), &free, &r, &above, prec());
         assert!(matches!(out, CertificateOutcome::Holds { .. }), "{out:?}");
     }
 }

@@ -17,7 +17,7 @@ use crate::geometry::cotan::halfedge_cotans;
 use crate::geometry::laplacian::{laplacian_from_halfedge_cotans, SparseMatrix};
 use crate::mesh::{Edge, HalfEdge, Mesh};
 use crate::predicates::delaunay::{enclose_p, QuadEdges};
-use crate::scalar::{Interval, IntervalBound, Precision, Real, Sign};
+use crate::scalar::{Interval, IntervalBound, Sign};
 use rug::float::Round;
 use rug::{Float, Rational};
 
@@ -40,15 +40,17 @@ fn exp_pm_radius(radius: &Rational) -> Option<(f64, f64)> {
 /// interval. proof: B36
 pub(crate) fn box_lengths(at_centre: &[I], radius: &Rational) -> Option<Vec<F>> {
     let (lo_factor, hi_factor) = exp_pm_radius(radius)?;
-    at_centre
-        .iter()
-        .map(|l| {
-            let lo = l.lo().as_float().to_f64_round(Round::Down);
-            let hi = l.hi().as_float().to_f64_round(Round::Up);
-            let x = F::new(lo.mul_down(&lo_factor), hi.mul_up(&hi_factor));
-            (x.sign() == Some(Sign::Positive) && x.hi().is_finite()).then_some(x)
-        })
-        .collect()
+    let mut out = Vec::with_capacity(at_centre.len());
+    for l in at_centre {
+        let lo = l.lo().as_float().to_f64_round(Round::Down);
+        let hi = l.hi().as_float().to_f64_round(Round::Up);
+        let x = F::new(lo.mul_down(&lo_factor), hi.mul_up(&hi_factor));
+        if x.sign() != Some(Sign::Positive) || !x.hi().is_finite() {
+            return None;
+        }
+        out.push(x);
+    }
+    Some(out)
 }
 
 /// Whether `x` is certified `≥ 0`.
@@ -73,14 +75,13 @@ fn strict<B: IntervalBound>(mesh: &Mesh, h: HalfEdge, len: impl Fn(Edge) -> Inte
 /// not certify is decided again on MPFR enclosures of its lengths over the box,
 /// `exact(e)`; `None` when a face is still not a strict triangle, an edge not Delaunay, or
 /// a cotangent not enclosed (the caller then takes the MPFR path, which also handles
-/// boxes across cell boundaries, B35). The Laplacian's entries are the binary64 bounds,
-/// taken exactly at precision `prec`. proof: B36, B71
+/// boxes across cell boundaries, B35). The Laplacian's entries are binary64 bounds (read
+/// as MPFR enclosures by [`super::box_values::BoxLaplacian`]). proof: B36, B71
 pub(crate) fn cell_over_box(
     mesh: &Mesh,
     lb: &[F],
     exact: impl Fn(Edge) -> I,
-    prec: Precision,
-) -> Option<SparseMatrix<I>> {
+) -> Option<SparseMatrix<F>> {
     let len = |e: Edge| lb[e.idx()].clone();
     for f in mesh.faces() {
         let h = mesh.face_halfedge(f);
@@ -107,13 +108,7 @@ pub(crate) fn cell_over_box(
     {
         return None;
     }
-    let lap = laplacian_from_halfedge_cotans(mesh, &cot);
-    Some(lap.map_values(|w| {
-        I::new(
-            crate::scalar::Mpfr::from_f64(*w.lo(), prec),
-            crate::scalar::Mpfr::from_f64(*w.hi(), prec),
-        )
-    }))
+    Some(laplacian_from_halfedge_cotans(mesh, &cot))
 }
 
 #[cfg(test)]
@@ -228,13 +223,12 @@ mod tests {
     #[test]
     fn b36_binary64_laplacian_contains_the_laplacian_at_points_of_the_box() {
         let (mesh, base, u) = case();
-        let p = Precision::new(BITS).unwrap();
         let r = Rational::from((1, 1_000_000));
         let lp = scaled(&mesh, &base, &points(&u));
         let lb = box_lengths(&lp, &r).unwrap();
         let bx = boxed(&u, &r);
         let exact = |e: Edge| scale(&mesh, e.halfedge(), &base[e.idx()], &bx);
-        let lap = cell_over_box(&mesh, &lb, exact, p).expect("the icosahedron is Delaunay");
+        let lap = cell_over_box(&mesh, &lb, exact).expect("the icosahedron is Delaunay");
         let at = |u: &[Rational]| {
             let mid: Vec<Mpfr> = scaled(&mesh, &base, &points(u))
                 .iter()
@@ -243,11 +237,8 @@ mod tests {
             laplacian_from_halfedge_cotans(&mesh, &halfedge_cotans(&mesh, &mid))
         };
         let inside = |l: &crate::geometry::laplacian::SparseMatrix<Mpfr>| {
-            l.entries().all(|(i, j, w)| {
-                let f = lap.get(i, j).unwrap();
-                let f = F::new(f.lo().approx_f64(), f.hi().approx_f64());
-                contains_point(&f, w)
-            })
+            l.entries()
+                .all(|(i, j, w)| contains_point(lap.get(i, j).unwrap(), w))
         };
         for sign in [1i64, -1] {
             let corner: Vec<Rational> = u
@@ -287,12 +278,9 @@ mod tests {
             let lp = scaled(&mesh, &base, &points(&u));
             let lb = box_lengths(&lp, &r).unwrap();
             let bx = boxed(&u, &r);
-            cell_over_box(
-                &mesh,
-                &lb,
-                |e| scale(&mesh, e.halfedge(), &base[e.idx()], &bx),
-                p,
-            )
+            cell_over_box(&mesh, &lb, |e| {
+                scale(&mesh, e.halfedge(), &base[e.idx()], &bx)
+            })
         };
         assert!(run([1.0, 1.0, 1.0]).is_some());
         assert!(run([1.0, 1.0, 1.9]).is_none());

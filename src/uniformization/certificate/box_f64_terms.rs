@@ -167,7 +167,6 @@ fn term_b36_strict_faces_decided_on_the_enclosures() {
 #[test]
 fn term_b36_binary64_decides_a_well_shaped_box_alone() {
     let (mesh, base, u) = case();
-    let p = Precision::new(256).expect("precision");
     let r = Rational::from((1, 1_000_000));
     let lb = box_lengths(&scaled(&mesh, &base, &points(&u)), &r).expect("box lengths");
     let bx = boxed(&u, &r);
@@ -181,9 +180,9 @@ fn term_b36_binary64_decides_a_well_shaped_box_alone() {
         let pw = enclose_p(&q.edges.map(wide).to_array());
         assert!(!certified_nonnegative(&pw), "e{}", e.0);
     }
-    let with_wide = cell_over_box(&mesh, &lb, wide, p).expect("decided by binary64 alone");
-    let with_tight = cell_over_box(&mesh, &lb, tight, p).expect("the icosahedron is Delaunay");
-    let bits = |x: &I| (x.lo().approx_f64(), x.hi().approx_f64());
+    let with_wide = cell_over_box(&mesh, &lb, wide).expect("decided by binary64 alone");
+    let with_tight = cell_over_box(&mesh, &lb, tight).expect("the icosahedron is Delaunay");
+    let bits = |x: &F| (*x.lo(), *x.hi());
     let a: Vec<_> = with_wide
         .entries()
         .map(|(i, j, w)| (i, j, bits(w)))
@@ -228,13 +227,13 @@ fn term_b36_mpfr_decides_a_face_binary64_leaves_open() {
         "open in binary64"
     );
     assert!(strict(&mesh, h, exact), "decided in MPFR");
-    let lap = cell_over_box(&mesh, &lb, exact, p).expect("decided by the MPFR look");
+    let lap = cell_over_box(&mesh, &lb, exact).expect("decided by the MPFR look");
     let centre: Vec<Mpfr> = base.iter().map(|x| x.lo().clone()).collect();
     let at_centre = laplacian_from_halfedge_cotans(&mesh, &halfedge_cotans(&mesh, &centre));
     for (i, j, w) in at_centre.entries() {
-        let f = lap.get(i, j).expect("the same pattern");
+        let f = mpfr(lap.get(i, j).expect("the same pattern"));
         assert!(f.lo().as_float() <= w.as_float() && w.as_float() <= f.hi().as_float());
     }
     let wide = |e: Edge| mpfr(&F::new(lb[e.idx()].lo() / 2.0, lb[e.idx()].hi() * 2.0));
-    assert!(cell_over_box(&mesh, &lb, wide, p).is_none());
+    assert!(cell_over_box(&mesh, &lb, wide).is_none());
 }

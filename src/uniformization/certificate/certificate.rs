@@ -18,21 +18,28 @@
 //! If `γ < μ·r` there is a zero `u*` of `∇E` with `‖u* − u‖₂ ≤ γ/μ` (B71: strong convexity
 //! on the Euclidean ball of radius `r` inside `B`), and `T` (across boundaries: `T` with
 //! the edges of `U` whose `P < 0` at `u*` flipped, B35) is Delaunay for `u*`.
+//!
+//! The proof attempts for a computed solution ([`prove`], [`prove_on`], [`certify_near`]:
+//! the refinement, then boxes of three radii) are in [`super::certificate_prove`].
 
+use super::ball_argument::{ball_outcome_of, box_hessian};
 use super::box_f64;
-use super::cell_boundary::{cell_over_box, scale, Boundary, CellOverBox};
+use super::box_values::{BoxLaplacian, BoxLengths};
+use super::cell_boundary::{cell_over_box, scale, Boundary};
 pub use super::certificate_outcome::CertificateOutcome;
 pub(crate) use super::certificate_outcome::I;
+pub(crate) use super::certificate_prove::prove_on_owned;
+pub use super::certificate_prove::{certify_near, prove, prove_on, Proof, T0Metric};
 use super::components::Components;
 use super::error::UniformizeError;
 use super::newton::validate_input;
-use super::refine::{carry_lengths, carry_lengths_from, flip_to_delaunay_at, scaled, RefineError};
+use super::refine::{carry_lengths, carry_lengths_from, scaled, RefineError};
 use super::targets::Targets;
 use crate::geometry::enclosure::angle_sums::enclose_cone_angles;
-use crate::geometry::laplacian::SparseMatrix;
 use crate::mesh::{Edge, Mesh};
-use crate::scalar::{Interval, Mpfr, Precision, Real, Sign};
+use crate::scalar::{Precision, Real, Sign};
 use rug::Rational;
+use std::borrow::Cow;
 
 /// Everything a certificate states, all exact: `T₀` with its binary64 lengths, the
 /// targets, the Ptolemy flip sequence to the final triangulation, `u` (rationals) and the
@@ -78,16 +85,41 @@ pub enum CertificateError {
     Bits(u64),
 }
 
-/// What both certifiers need: the final triangulation, the components, the interval
-/// cotan Laplacian over the box and the enclosed residual at `u` (free vertices, in order).
-pub(crate) struct Prepared {
+/// The final triangulation `T` and its base lengths: the lengths of `T₀` carried by the
+/// certificate's flip sequence (T28: Ptolemy flips commute with scaling), enclosed. The
+/// same for every box around one `u`, so carried once for all of them.
+pub(crate) struct Carried {
+    /// `T`.
     pub mesh: Mesh,
+    /// The base (unscaled) lengths of `T`, enclosed.
+    pub base: Vec<I>,
+    /// The certificate's interval precision.
+    pub prec: Precision,
+}
+
+impl Carried {
+    /// Validate `data` ([`validate`]) and carry its lengths ([`carry`]).
+    pub(crate) fn of(
+        data: &CertificateData,
+        base0: Option<&[I]>,
+        bits: u32,
+    ) -> Result<Carried, CertificateError> {
+        let prec = validate(data, bits)?;
+        carry(data, base0.map(Cow::Borrowed), prec)
+    }
+}
+
+/// What both certifiers need: the components, the lengths and the interval cotan
+/// Laplacian over the box and the enclosed residual at `u` (free vertices, in order), on
+/// the final triangulation `mesh`.
+pub(crate) struct Prepared<'m> {
+    pub mesh: &'m Mesh,
     pub free: Vec<usize>,
     pub free_idx: Vec<Option<usize>>,
     /// Lengths over the box.
-    pub box_lengths: Vec<I>,
+    pub box_lengths: BoxLengths,
     /// `L` over the box.
-    pub laplacian: SparseMatrix<I>,
+    pub laplacian: BoxLaplacian,
     /// `Θ_v − θ_v(u)` for the free vertices `v`, enclosed.
     pub residual: Vec<I>,
     pub prec: Precision,
@@ -107,18 +139,9 @@ pub(crate) enum Rung {
     Mpfr,
 }
 
-/// Validate `data`, carry the lengths, and check the Penner cell on the box (B71 step 1,
-/// across cell boundaries B35);
-/// `Ok(Err(reason))` when a step is not certified. `base0`, when given, encloses the
-/// lengths of `T₀` (e.g. an irrational input metric, flipped to `T₀` in intervals) and
-/// replaces the binary64 `data.l0` (which is still validated) in every enclosure.
-#[allow(clippy::too_many_lines)] // validation, then the three steps of B71, read top to bottom
-pub(crate) fn prepare(
-    data: &CertificateData,
-    base0: Option<&[I]>,
-    bits: u32,
-    rung: Rung,
-) -> Result<Result<Prepared, String>, CertificateError> {
+/// The interval precision of `bits`, once `data` is validated: its surface, lengths and
+/// targets, one scale factor per vertex, a positive radius.
+pub(crate) fn validate(data: &CertificateData, bits: u32) -> Result<Precision, CertificateError> {
     validate_input(&data.t0, &data.l0, &data.targets)?;
     let n = data.t0.n_vertices();
     if data.u.len() != n {
@@ -130,9 +153,19 @@ pub(crate) fn prepare(
     if data.radius <= 0 {
         return Err(CertificateError::Radius(data.radius.to_string()));
     }
-    let prec =
-        Precision::new(u64::from(bits)).map_err(|_| CertificateError::Bits(u64::from(bits)))?;
-    // Base lengths of T, enclosed (T28: Ptolemy flips commute with scaling).
+    Precision::new(u64::from(bits)).map_err(|_| CertificateError::Bits(u64::from(bits)))
+}
+
+/// The lengths of `T₀` carried to the final triangulation by `data.flip_sequence`: the
+/// binary64 `data.l0` enclosed at `prec`, or `base0` when given, which encloses the lengths
+/// of `T₀` (e.g. an irrational input metric, flipped to `T₀` in intervals) and replaces
+/// `data.l0` (which is still validated) in every enclosure. An owned `base0` is carried in
+/// place.
+pub(crate) fn carry(
+    data: &CertificateData,
+    base0: Option<Cow<'_, [I]>>,
+    prec: Precision,
+) -> Result<Carried, CertificateError> {
     let (mesh, base) = match base0 {
         None => carry_lengths::<I>(&data.t0, &data.l0, &data.flip_sequence, prec)?,
         Some(b) => {
@@ -142,17 +175,42 @@ pub(crate) fn prepare(
                     got: b.len(),
                 }));
             }
-            carry_lengths_from(&data.t0, b.to_vec(), &data.flip_sequence)?
+            carry_lengths_from(&data.t0, b.into_owned(), &data.flip_sequence)?
         }
     };
+    Ok(Carried { mesh, base, prec })
+}
+
+/// Check the Penner cell on the box of `data` around its `u` (B71 step 1, across cell
+/// boundaries B35), the lengths of `T` carried by [`carry`] (from a `data` that passed
+/// [`validate`]); `Err(reason)` when a step is not certified. The angle sums at `u` come
+/// first, so that the lengths at `u` are dropped once the binary64 box lengths are formed
+/// from them (recomputed on the MPFR path across cell boundaries, whose angle sums need
+/// them again).
+#[allow(clippy::too_many_lines)] // the three steps of B71, read top to bottom
+pub(crate) fn prepare<'m>(
+    data: &CertificateData,
+    carried: &'m Carried,
+    rung: Rung,
+) -> Result<Prepared<'m>, String> {
+    let Carried { mesh, base, prec } = carried;
+    let prec = *prec;
     if let Some(e) = base.iter().position(|x| x.sign() != Some(Sign::Positive)) {
-        return Ok(Err(format!(
-            "carried length of e{e} not enclosed as positive"
-        )));
+        return Err(format!("carried length of e{e} not enclosed as positive"));
     }
-    let comps = Components::of(&mesh);
+    let comps = Components::of(mesh);
     let (free, free_idx) = comps.free_index();
     let point: Vec<I> = data.u.iter().map(|q| I::from_rational(q, prec)).collect();
+    // The lengths at u, enclosed (for the residual, and the binary64 rung's box lengths).
+    let lp = scaled(mesh, base, &point);
+    // One enclosed argument per vertex, per-corner fallback where not certified (B33).
+    let mut theta = enclose_cone_angles(mesh, &lp).theta;
+    let binary64_lengths = match rung {
+        Rung::Binary64First => box_f64::box_lengths(&lp, &data.radius),
+        Rung::Mpfr => None,
+    };
+    // Kept for the MPFR path only (the angle sums across cell boundaries).
+    let mut lp = binary64_lengths.is_none().then_some(lp);
     let boxed: Vec<I> = data
         .u
         .iter()
@@ -167,69 +225,60 @@ pub(crate) fn prepare(
             }
         })
         .collect();
-    // The lengths at u, enclosed (for the residual, and the binary64 rung's box lengths).
-    let lp = scaled(&mesh, &base, &point);
     // 1. One Penner cell, or cell boundaries crossed as B35 allows: strict triangles,
     // Delaunay edges and the Laplacian over the whole box; binary64 first when asked
     // (B36), MPFR for what it leaves open.
-    let binary64 = match rung {
-        Rung::Binary64First => box_f64::box_lengths(&lp, &data.radius).and_then(|lb| {
-            let exact = |e: Edge| scale(&mesh, e.halfedge(), &base[e.idx()], &boxed);
-            let laplacian = box_f64::cell_over_box(&mesh, &lb, exact, prec)?;
-            let to_mpfr = |x: &f64| Mpfr::from_f64(*x, prec);
-            let lb = lb.iter().map(|x| I::new(to_mpfr(x.lo()), to_mpfr(x.hi())));
-            Some((lb.collect(), laplacian))
-        }),
-        Rung::Mpfr => None,
-    };
-    let (lb, cell) = if let Some((lb, laplacian)) = binary64 {
-        let cell = CellOverBox {
-            laplacian,
-            boundary: None,
-        };
-        (lb, cell)
+    let binary64 = binary64_lengths.and_then(|lb| {
+        let exact = |e: Edge| scale(mesh, e.halfedge(), &base[e.idx()], &boxed);
+        let matrix = box_f64::cell_over_box(mesh, &lb, exact)?;
+        Some((
+            BoxLengths::Binary64 { lengths: lb, prec },
+            BoxLaplacian::Binary64 { matrix, prec },
+            None,
+        ))
+    });
+    let (box_lengths, laplacian, boundary) = if let Some(b) = binary64 {
+        b
     } else {
-        let lb = scaled(&mesh, &base, &boxed);
-        match cell_over_box(&mesh, &base, &boxed, &lb) {
-            Ok(c) => (lb, c),
-            Err(reason) => return Ok(Err(reason)),
+        let lb = scaled(mesh, base, &boxed);
+        match cell_over_box(mesh, base, &boxed, &lb) {
+            Ok(c) => (
+                BoxLengths::Mpfr(lb),
+                BoxLaplacian::Mpfr(c.laplacian),
+                c.boundary,
+            ),
+            Err(reason) => return Err(reason),
         }
     };
-    let laplacian = cell.laplacian;
     if let Some((i, j, _)) = laplacian.entries().find(|(_, _, w)| !w.is_valid()) {
-        return Ok(Err(format!(
-            "cotan Laplacian entry ({i}, {j}) not enclosed"
-        )));
+        return Err(format!("cotan Laplacian entry ({i}, {j}) not enclosed"));
     }
     // The residual at u, enclosed.
-    // One enclosed argument per vertex, per-corner fallback where not certified (B33).
-    let mut theta = enclose_cone_angles(&mesh, &lp).theta;
-    if let Some(b) = &cell.boundary {
+    if let Some(b) = &boundary {
         // The angle sums of a triangulation Delaunay at the centre (B35).
-        if let Err(reason) = b.correct_angle_sums(&mesh, &point, &lp, &mut theta) {
-            return Ok(Err(reason));
-        }
+        let lp = lp.take().unwrap_or_else(|| scaled(mesh, base, &point));
+        b.correct_angle_sums(mesh, &point, &lp, &mut theta)?;
     }
     let pi = I::pi(prec);
     let mut residual = Vec::with_capacity(free.len());
     for &v in &free {
         let g = I::from_rational(&data.targets.over_pi()[v], prec) * &pi - &theta[v];
         if !g.is_valid() {
-            return Ok(Err(format!("angle sum at v{v} not enclosed")));
+            return Err(format!("angle sum at v{v} not enclosed"));
         }
         residual.push(g);
     }
-    Ok(Ok(Prepared {
+    Ok(Prepared {
         mesh,
         free,
         free_idx,
-        box_lengths: lb,
+        box_lengths,
         laplacian,
         residual,
         prec,
-        boundary: cell.boundary,
+        boundary,
         boxed,
-    }))
+    })
 }
 
 /// Check a certificate at `bits` of interval precision. proof: B71
@@ -240,7 +289,7 @@ pub fn check_certificate(
     check_certificate_on(data, None, bits)
 }
 
-/// [`check_certificate`] for the metric enclosed by `base0` on `T₀` (see [`prepare`]'s
+/// [`check_certificate`] for the metric enclosed by `base0` on `T₀` (see [`carry`]'s
 /// `base0`): a `Holds` is then a proof for every metric in the enclosure, in particular
 /// for an exact input metric that binary64 does not represent. proof: B71
 pub fn check_certificate_on(
@@ -248,169 +297,39 @@ pub fn check_certificate_on(
     base0: Option<&[I]>,
     bits: u32,
 ) -> Result<CertificateOutcome, CertificateError> {
-    let p = match prepare(data, base0, bits, Rung::Binary64First)? {
+    Ok(check_carried(data, &Carried::of(data, base0, bits)?))
+}
+
+/// [`check_certificate_on`] once `data` is validated and its lengths carried. proof: B71
+pub(crate) fn check_carried(data: &CertificateData, carried: &Carried) -> CertificateOutcome {
+    let p = match prepare(data, carried, Rung::Binary64First) {
         Ok(p) => p,
-        Err(reason) => return Ok(CertificateOutcome::Undecided { reason }),
+        Err(reason) => return CertificateOutcome::Undecided { reason },
     };
+    // The box's enclosures of `u'` are not needed by the ball argument.
+    drop(p.boxed);
     if p.free.is_empty() {
         // Every vertex is grounded (one-vertex components): the box is the point `u`, and
         // Gauss–Bonnet makes the residual at a grounded vertex zero (B71, "The grounded
         // vertex"), so `u` itself is an exact solution.
-        return Ok(CertificateOutcome::Holds {
+        return CertificateOutcome::Holds {
             distance: 0.0,
             mu: f64::INFINITY,
             residual: 0.0,
-        });
+        };
     }
-    // 2–3. The Hessian over the box and the residual at u: the ball argument.
-    Ok(super::ball_argument::ball_outcome(
-        &p.mesh,
-        &p.box_lengths,
-        &p.laplacian,
+    // 2–3. The Hessian over the box and the residual at u: the ball argument, the
+    // Laplacian and the lengths over the box dropped once the Hessian is formed.
+    let hessian = box_hessian(p.laplacian.entries(), &p.free_idx, p.residual.len(), p.prec);
+    let approx = p.box_lengths.approx_f64();
+    drop((p.laplacian, p.box_lengths));
+    ball_outcome_of(
+        p.mesh,
+        &approx,
+        &hessian,
         &p.free_idx,
         &p.residual,
         &data.radius,
         p.prec,
-    ))
-}
-
-/// A proof attempt for a solution: the `u` and radius submitted and the outcome.
-#[derive(Clone, Debug)]
-pub struct Proof {
-    /// The certificate data (exact `u` and radius).
-    pub data: CertificateData,
-    /// The outcome of [`check_certificate`] on it.
-    pub outcome: CertificateOutcome,
-    /// `max |Θ − θ|` at the submitted `u` (as computed by the refinement, `f64`).
-    pub residual_max: f64,
-}
-
-/// The lengths of `T₀` of a metric the `f64` solve saw rounded: at one MPFR precision,
-/// as MPFR numbers (for the refinement) and as enclosures (for the certificate).
-#[derive(Clone, Debug)]
-pub struct T0Metric {
-    /// The lengths of `T₀`, rounded to the precision.
-    pub values: Vec<Mpfr>,
-    /// Enclosures of the exact lengths of `T₀`.
-    pub enclosures: Vec<Interval<Mpfr>>,
-    /// The Euclidean flips from the input triangulation to `T₀`, in order (an edge keeps
-    /// its index when flipped).
-    pub euclidean: Vec<Edge>,
-}
-
-/// Refine `sol` at `bits` of MPFR precision (to `tolerance`), then try to certify boxes of
-/// radius `10⁶`, `10³` and `10¹⁰` times the residual's 2-norm estimate around the refined `u`
-/// (exact rationals of the MPFR values); the first that holds, or the last outcome.
-pub fn prove(
-    sol: &super::newton::Uniformization,
-    bits: u32,
-    tolerance: f64,
-) -> Result<Proof, CertificateError> {
-    prove_on(sol, None, bits, tolerance)
-}
-
-/// [`prove`] for the metric `metric` on `T₀` instead of the binary64 lengths of the
-/// solve: the refinement runs on `metric.values` and the certificate on
-/// `metric.enclosures` ([`check_certificate_on`]), so a `Holds` is about that metric.
-/// The certificate's flip sequence is the solve's followed by the refinement's (the
-/// triangulation Delaunay at the refined `u`, B69).
-pub fn prove_on(
-    sol: &super::newton::Uniformization,
-    metric: Option<&T0Metric>,
-    bits: u32,
-    tolerance: f64,
-) -> Result<Proof, CertificateError> {
-    let prec =
-        Precision::new(u64::from(bits)).map_err(|_| CertificateError::Bits(u64::from(bits)))?;
-    let l0 = match metric {
-        None => sol
-            .initial_lengths
-            .iter()
-            .map(|&x| Mpfr::from_f64(x, prec))
-            .collect(),
-        Some(m) => m.values.clone(),
-    };
-    let (r, flips) = super::refine::refine_with_flips::<Mpfr>(sol, l0, prec, tolerance, 30)?;
-    let u: Vec<Rational> =
-        r.u.iter()
-            .map(|x| x.to_rational().unwrap_or_default())
-            .collect();
-    certify_after_flips(sol, &flips, metric, &u, r.residual_max(), bits)
-}
-
-/// The certificate half of [`prove_on`] for a `u` refined elsewhere (e.g. in double-double,
-/// which has no directed rounding: the proof is in `Interval<Mpfr>` at `bits`), whose
-/// `max |Θ − θ|` was estimated as `residual_max`: boxes of radius `10⁶`, `10³` and `10¹⁰`
-/// times `residual_max·√n` (at least `2^(10 − bits)`·those factors) around `u`; the first
-/// that holds, or the last outcome. The triangulation is the solve's, Ptolemy-flipped to
-/// the Delaunay triangulation at `u` (decided on MPFR values at `bits`; B69).
-pub fn certify_near(
-    sol: &super::newton::Uniformization,
-    metric: Option<&T0Metric>,
-    u: &[Rational],
-    residual_max: f64,
-    bits: u32,
-) -> Result<Proof, CertificateError> {
-    let prec =
-        Precision::new(u64::from(bits)).map_err(|_| CertificateError::Bits(u64::from(bits)))?;
-    if u.len() != sol.initial_mesh.n_vertices() {
-        return Err(CertificateError::ScaleCount {
-            expected: sol.initial_mesh.n_vertices(),
-            got: u.len(),
-        });
-    }
-    let (mut mesh, mut base) = match metric {
-        None => carry_lengths::<Mpfr>(
-            &sol.initial_mesh,
-            &sol.initial_lengths,
-            &sol.flip_sequence,
-            prec,
-        )?,
-        Some(m) => carry_lengths_from(&sol.initial_mesh, m.values.clone(), &sol.flip_sequence)?,
-    };
-    let um: Vec<Mpfr> = u.iter().map(|q| Mpfr::from_rational(q, prec)).collect();
-    let mut l = scaled(&mesh, &base, &um);
-    let flips = flip_to_delaunay_at(&mut mesh, &mut base, &mut l, &um)?;
-    certify_after_flips(sol, &flips, metric, u, residual_max, bits)
-}
-
-/// [`certify_near`] on the solve's triangulation followed by the Ptolemy flips `flips`.
-fn certify_after_flips(
-    sol: &super::newton::Uniformization,
-    flips: &[Edge],
-    metric: Option<&T0Metric>,
-    u: &[Rational],
-    residual_max: f64,
-    bits: u32,
-) -> Result<Proof, CertificateError> {
-    let n = sol.u.len().max(1) as f64;
-    let floor = 2f64.powi(-(bits.min(1000) as i32) + 10);
-    let estimate = (residual_max * n.sqrt()).max(floor);
-    let mut flip_sequence = sol.flip_sequence.clone();
-    flip_sequence.extend_from_slice(flips);
-    let mut last = None;
-    // 10⁶ first; then a smaller box (when the first left the Penner cell, e.g. near a
-    // Delaunay tie) and a larger one (when the residual over μ exceeded the radius).
-    for factor in [1e6, 1e3, 1e10] {
-        let radius = Rational::from_f64(estimate * factor).unwrap_or_else(|| Rational::from(1));
-        let data = CertificateData {
-            t0: sol.initial_mesh.clone(),
-            l0: sol.initial_lengths.clone(),
-            targets: sol.targets.clone(),
-            flip_sequence: flip_sequence.clone(),
-            u: u.to_vec(),
-            radius,
-        };
-        let outcome = check_certificate_on(&data, metric.map(|m| &m.enclosures[..]), bits)?;
-        let done = matches!(outcome, CertificateOutcome::Holds { .. });
-        last = Some(Proof {
-            data,
-            outcome,
-            residual_max,
-        });
-        if done {
-            break;
-        }
-    }
-    Ok(last.expect("three attempts"))
+    )
 }

@@ -11,7 +11,7 @@
 //! angles. A vertex whose target `Θ_v` (enclosed) is disjoint from that enclosure has
 //! `θ_v(u') ≠ Θ_v` for every `u' ∈ B`: the box holds no solution.
 
-use super::certificate::{prepare, CertificateData, CertificateError, Rung, I};
+use super::certificate::{prepare, Carried, CertificateData, CertificateError, Rung, I};
 use crate::geometry::enclosure::angle_sums::enclose_cone_angles;
 use crate::scalar::{Interval, Mpfr, Real};
 
@@ -36,15 +36,17 @@ pub fn excluded_vertices(
     base0: Option<&[Interval<Mpfr>]>,
     bits: u32,
 ) -> Result<Result<Vec<ExcludedVertex>, String>, CertificateError> {
-    let p = match prepare(data, base0, bits, Rung::Mpfr)? {
+    let carried = Carried::of(data, base0, bits)?;
+    let p = match prepare(data, &carried, Rung::Mpfr) {
         Ok(p) => p,
         Err(reason) => return Ok(Err(reason)),
     };
     // One enclosed argument per vertex over the box lengths (B33), as for the residual.
-    let mut theta = enclose_cone_angles(&p.mesh, &p.box_lengths).theta;
+    let box_lengths = p.box_lengths.mpfr();
+    let mut theta = enclose_cone_angles(p.mesh, &box_lengths).theta;
     if let Some(b) = &p.boundary {
         // Across cell boundaries the angle sums are those of the Delaunay `T_S` (B35).
-        if let Err(reason) = b.correct_angle_sums(&p.mesh, &p.boxed, &p.box_lengths, &mut theta) {
+        if let Err(reason) = b.correct_angle_sums(p.mesh, &p.boxed, &box_lengths, &mut theta) {
             return Ok(Err(reason));
         }
     }

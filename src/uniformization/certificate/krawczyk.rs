@@ -9,7 +9,7 @@
 //! `F(u)` and `J` come from the shared MPFR interval computation (B71 step 1 checks the
 //! Penner cell on the same box).
 
-use super::certificate::{prepare, CertificateData, CertificateError, I};
+use super::certificate::{prepare, Carried, CertificateData, CertificateError, I};
 use crate::scalar::Interval;
 use rug::float::Round;
 
@@ -82,7 +82,8 @@ fn inverse(mut a: Vec<Vec<f64>>) -> Option<Vec<Vec<f64>>> {
 /// Run the Krawczyk test on the box of `data` at `bits` of MPFR precision for the
 /// enclosures. proof: B72
 pub fn krawczyk(data: &CertificateData, bits: u32) -> Result<KrawczykOutcome, CertificateError> {
-    let p = match prepare(data, None, bits, super::certificate::Rung::Mpfr)? {
+    let carried = Carried::of(data, None, bits)?;
+    let p = match prepare(data, &carried, super::certificate::Rung::Mpfr) {
         Ok(p) => p,
         Err(reason) => return Ok(KrawczykOutcome::Undecided { reason }),
     };
@@ -97,7 +98,7 @@ pub fn krawczyk(data: &CertificateData, bits: u32) -> Result<KrawczykOutcome, Ce
     let mut mid = vec![vec![0.0; n]; n];
     for (i, j, w) in p.laplacian.entries() {
         if let (Some(a), Some(b)) = (p.free_idx[i], p.free_idx[j]) {
-            let h = outward(&(-w.clone()));
+            let h = outward(&(-w.into_owned()));
             mid[a][b] = 0.5 * (h.lo() + h.hi());
             jac[a].push((b, h));
         }

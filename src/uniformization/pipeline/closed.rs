@@ -28,12 +28,12 @@
 //! assert!(out.claim().unwrap()["euclidean_flips"].is_array());
 //! ```
 
-use super::{exact, rescaled, CertifiedMetric, Options, PipelineError, Precision};
+use super::{exact, rescaled, rescaled_owned, CertifiedMetric, Options, PipelineError, Precision};
 use crate::io::json::edge_order;
 use crate::io::Surface;
 use crate::mesh::Edge;
 use crate::scalar::{Dd, Interval, Mpfr, Precision as Bits, Real};
-use crate::uniformization::certificate::{certify_near, prove, prove_on, CertificateError};
+use crate::uniformization::certificate::{certify_near, prove, prove_on_owned, CertificateError};
 use crate::uniformization::certificate::{CertificateOutcome, Proof, T0Metric};
 use crate::uniformization::claim_form::ClaimJson;
 use crate::uniformization::input_metric::{
@@ -62,8 +62,8 @@ pub struct ClosedOutcome {
     pub metric: Option<CertifiedMetric>,
     /// The certificate's interval bits.
     pub bits: u32,
-    /// The input-metric replay, kept for the claim.
-    t0_metric: Option<T0Metric>,
+    /// The Euclidean flips to `T₀` of the input-metric replay, kept for the claim.
+    euclidean: Option<Vec<Edge>>,
 }
 
 impl ClosedOutcome {
@@ -88,7 +88,7 @@ impl ClosedOutcome {
         claim_json(
             self.proof.as_ref()?,
             self.metric.as_ref()?,
-            self.t0_metric.as_ref(),
+            self.euclidean.as_deref(),
             &self.surface,
             self.bits,
         )
@@ -106,9 +106,34 @@ pub fn uniformize_closed(
     progress: &mut dyn FnMut(&StepReport),
 ) -> Result<ClosedOutcome, PipelineError> {
     let (surface, shift, lengths) = rescaled(surface);
+    solve_and_certify(surface, shift, &lengths, targets, options, progress)
+}
+
+/// [`uniformize_closed`] for an owned surface, which the outcome keeps as its
+/// [`ClosedOutcome::surface`] (not a copy) when it needs no rescaling.
+pub fn uniformize_closed_owned(
+    surface: Surface,
+    targets: &Targets,
+    options: &Options,
+    progress: &mut dyn FnMut(&StepReport),
+) -> Result<ClosedOutcome, PipelineError> {
+    let (surface, shift, lengths) = rescaled_owned(surface);
+    solve_and_certify(surface, shift, &lengths, targets, options, progress)
+}
+
+/// [`uniformize_closed`] on `surface`, already divided by `2^shift`, with its binary64
+/// lengths `lengths`.
+fn solve_and_certify(
+    surface: Surface,
+    shift: i64,
+    lengths: &[f64],
+    targets: &Targets,
+    options: &Options,
+    progress: &mut dyn FnMut(&StepReport),
+) -> Result<ClosedOutcome, PipelineError> {
     let solution = uniformize_with_progress(
         &surface.mesh,
-        &lengths,
+        lengths,
         targets,
         &UniformizeOptions::default(),
         progress,
@@ -121,15 +146,15 @@ pub fn uniformize_closed(
         proof: None,
         metric: None,
         bits,
-        t0_metric: None,
+        euclidean: None,
     };
     if !out.solution.converged() || !options.certify {
         return Ok(out);
     }
-    let c = certify_solution(&out.surface, &lengths, &out.solution, options.precision)?;
+    let c = certify_solution(&out.surface, lengths, &out.solution, options.precision)?;
     out.proof = Some(c.proof);
     out.metric = Some(c.metric);
-    out.t0_metric = c.t0_metric;
+    out.euclidean = c.euclidean;
     Ok(out)
 }
 
@@ -141,7 +166,8 @@ pub struct Certification {
     pub proof: Proof,
     /// The metric the proof is about.
     pub metric: CertifiedMetric,
-    t0_metric: Option<T0Metric>,
+    /// The Euclidean flips to `T₀` (for the input metric).
+    euclidean: Option<Vec<Edge>>,
 }
 
 impl Certification {
@@ -157,7 +183,7 @@ impl Certification {
         claim_json(
             &self.proof,
             &self.metric,
-            self.t0_metric.as_ref(),
+            self.euclidean.as_deref(),
             surface,
             bits,
         )
@@ -171,7 +197,7 @@ impl Certification {
 fn claim_json<'a>(
     proof: &'a Proof,
     metric: &CertifiedMetric,
-    t0_metric: Option<&'a T0Metric>,
+    euclidean: Option<&'a [Edge]>,
     surface: &'a Surface,
     bits: u32,
 ) -> Option<ClaimJson<'a>> {
@@ -183,11 +209,11 @@ fn claim_json<'a>(
         last.flip(e).ok()?;
     }
     let final_faces = last.face_list();
-    Some(match (metric, t0_metric) {
-        (CertifiedMetric::Input, Some(m)) => ClaimJson::on_input(
+    Some(match (metric, euclidean) {
+        (CertifiedMetric::Input, Some(euclidean)) => ClaimJson::on_input(
             &proof.data,
             surface,
-            &m.euclidean,
+            euclidean,
             final_faces,
             *residual,
             bits,
@@ -212,25 +238,33 @@ pub fn certify_solution(
     let replay = input_metric_on_t0(surface, lengths, sol, prec);
     let reason = match replay {
         Ok(m) => {
-            let proof = match precision {
-                Precision::Dd => {
-                    let l0 = m
-                        .values
-                        .iter()
-                        .map(|x| Dd::from_rational(&x.to_rational().unwrap_or_default(), ()))
-                        .collect();
-                    let r = refine_on::<Dd>(sol, l0, (), tolerance, 30)
-                        .map_err(CertificateError::from)?;
-                    certify_near(sol, Some(&m), &exact(&r.u), r.residual_max(), bits)?
-                }
-                _ => prove_on(sol, Some(&m), bits, tolerance)?,
+            let (proof, euclidean) = if precision == Precision::Dd {
+                let l0 = m
+                    .values
+                    .iter()
+                    .map(|x| Dd::from_rational(&x.to_rational().unwrap_or_default(), ()))
+                    .collect();
+                let r =
+                    refine_on::<Dd>(sol, l0, (), tolerance, 30).map_err(CertificateError::from)?;
+                let proof = certify_near(sol, Some(&m), &exact(&r.u), r.residual_max(), bits)?;
+                (proof, m.euclidean)
+            } else {
+                // The metric's values and enclosures are consumed by the refinement and
+                // the certificate; only its Euclidean flips are kept.
+                let T0Metric {
+                    values,
+                    enclosures,
+                    euclidean,
+                } = m;
+                let proof = prove_on_owned(sol, values, enclosures, bits, tolerance)?;
+                (proof, euclidean)
             };
             match proof.outcome {
                 CertificateOutcome::Holds { .. } => {
                     return Ok(Certification {
                         proof,
                         metric: CertifiedMetric::Input,
-                        t0_metric: Some(m),
+                        euclidean: Some(euclidean),
                     })
                 }
                 CertificateOutcome::Undecided { reason } => reason,
@@ -248,7 +282,7 @@ pub fn certify_solution(
     Ok(Certification {
         proof,
         metric: CertifiedMetric::Rounded { reason },
-        t0_metric: None,
+        euclidean: None,
     })
 }
 

@@ -23,7 +23,9 @@ mod sphere;
 mod uv;
 
 pub use boundary::{double_surface, uniformize_boundary, BoundaryOutcome, SvgLayout};
-pub use closed::{certify_solution, uniformize_closed, Certification, ClosedOutcome};
+pub use closed::{
+    certify_solution, uniformize_closed, uniformize_closed_owned, Certification, ClosedOutcome,
+};
 pub use hyperbolic::{uniformize_hyperbolic, HyperbolicOutcome};
 pub use sphere::{uniformize_sphere, SphereOutcome};
 pub use uv::{check_written_uv, uv_boundary, uv_closed, UvCones, WrittenUvChecks};
@@ -207,6 +209,24 @@ fn finite_u(
 /// [`Surface::normalized_scale`]), the shift, and the binary64 lengths of the returned
 /// surface ([`Surface::lengths`], computed once).
 pub fn rescaled(surface: &Surface) -> (Surface, i64, Vec<f64>) {
+    match rescaled_if_needed(surface) {
+        Ok(r) => r,
+        Err(l) => (surface.clone(), 0, l),
+    }
+}
+
+/// [`rescaled`] for an owned surface: returned as it is (not copied) when it needs no
+/// rescaling.
+pub fn rescaled_owned(surface: Surface) -> (Surface, i64, Vec<f64>) {
+    match rescaled_if_needed(&surface) {
+        Ok(r) => r,
+        Err(l) => (surface, 0, l),
+    }
+}
+
+/// The rescaled surface, shift and lengths of [`rescaled`] when the lengths of `surface`
+/// need it, else `Err` with its binary64 lengths.
+fn rescaled_if_needed(surface: &Surface) -> Result<(Surface, i64, Vec<f64>), Vec<f64>> {
     let l = surface.lengths::<f64>(());
     let in_range = l
         .iter()
@@ -214,9 +234,9 @@ pub fn rescaled(surface: &Surface) -> (Surface, i64, Vec<f64>) {
     match surface.normalized_scale().filter(|_| !in_range) {
         Some((s, k)) => {
             let l = s.lengths::<f64>(());
-            (s, k, l)
+            Ok((s, k, l))
         }
-        None => (surface.clone(), 0, l),
+        None => Err(l),
     }
 }
 

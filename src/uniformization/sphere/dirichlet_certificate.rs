@@ -236,10 +236,11 @@ pub fn check_disk_certificate_on(
         }
         residual.push(g);
     }
+    let approx: Vec<f64> = lb.iter().map(Real::approx_f64).collect();
     ball_outcome(
         &mesh,
-        &lb,
-        &laplacian,
+        &approx,
+        laplacian.entries(),
         &free_idx,
         &residual,
         &data.radius,
