@@ -66,6 +66,7 @@ pub mod pipeline;
 pub mod pole;
 pub mod refine;
 pub(crate) mod refine_newton;
+pub(crate) mod refine_scaling;
 pub mod scaling;
 #[path = "sphere/sphere.rs"]
 pub mod sphere;

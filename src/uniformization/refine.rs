@@ -21,6 +21,7 @@ use super::newton::Uniformization;
 pub use super::newton_driver::Refinement;
 use super::newton_driver::{refine_loop, Over};
 use super::refine_newton::{newton_correction, to_dd, IterateLaplacian};
+use super::refine_scaling::HalfExp;
 use crate::algorithms::flips::flip_ptolemy;
 use crate::geometry::cone_angles::cone_angles;
 use crate::mesh::{Edge, Mesh};
@@ -295,7 +296,8 @@ pub fn refine_problem<T: Real>(
     } = p;
     // The f64 Hessian once, from the lengths divided by the longest (angles are
     // scale-invariant). Flips at near-ties below change it by O(P): a preconditioner.
-    let l = scaled(mesh, base, &u);
+    let mut half = HalfExp::new(&u);
+    let l = half.lengths(mesh, base);
     let top = l.iter().map(Real::approx_f64).fold(0.0, f64::max);
     let lf: Vec<f64> = l.iter().map(|x| x.approx_f64() / top).collect();
     let h = grounded_hessian(mesh, &lf, free_idx);
@@ -310,7 +312,10 @@ pub fn refine_problem<T: Real>(
     let residual = |u: &[T]| -> Result<Vec<T>, RefineError> {
         let mut st = state.borrow_mut();
         let (mesh, last, flip_count) = &mut *st;
-        let mut l = at_start.take().unwrap_or_else(|| scaled(mesh, base, u));
+        let mut l = at_start.take().unwrap_or_else(|| {
+            half.update(u, ctx);
+            half.lengths(mesh, base)
+        });
         if keep_delaunay {
             flips.extend(flip_to_delaunay_at(mesh, base, &mut l, u)?);
             *flip_count = flips.len();

@@ -17,8 +17,10 @@ import sys, subprocess, collections
 # Classify each perf sample by the stage function found in its call stack (outermost match wins).
 STAGES = [  # (stage, substrings of a frame's symbol)
     ("claim writing", ["ClosedOutcome::claim", "Certification::claim", "certificate_report::write_claim", "claim_form::"]),
-    ("certificate", ["certificate::certify_after_flips", "certificate::certify_near"]),
-    ("refinement", ["refine::refine_with_flips", "refine::refine_problem", "certificate::prove_on"]),
+    ("certificate", ["certificate::certify_after_flips", "certificate::certify_near",
+                     "prove::certify_after_flips", "prove::certify_near"]),
+    ("refinement", ["refine::refine_with_flips", "refine::refine_problem", "certificate::prove_on",
+                    "prove::prove_on", "prove::refine_and_certify"]),
     ("replay of the input to T0 (MPFR/intervals)", ["closed::input_on_t0", "closed::input_metric_on_t0", "input_metric::", "closed::t0_delaunay_for_input", "Surface>::lengths", "surface::Surface::lengths"]),
     ("Euclidean flips", ["algorithms::flip_to_delaunay::flip_to_delaunay"]),
     ("f64 solve", ["newton::uniformize_with_progress"]),
