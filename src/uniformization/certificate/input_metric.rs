@@ -262,13 +262,15 @@ pub fn replay_enclosed(
 /// leaves it open (a near-degenerate corner or an angle sum near `π`), on `q` itself.
 /// proof: B73
 pub(crate) fn strictly_convex_enclosed(q: &Quad<Interval<Mpfr>>) -> bool {
-    let outward = |x: &Interval<Mpfr>| {
-        Interval::new(
-            x.lo().as_float().to_f64_round(Round::Down),
-            x.hi().as_float().to_f64_round(Round::Up),
-        )
-    };
     strictly_convex(&q.as_refs().map(outward)) || strictly_convex(q)
+}
+
+/// The binary64 interval `[RD(lo), RU(hi)]` containing the MPFR interval `x`.
+fn outward(x: &Interval<Mpfr>) -> Interval<f64> {
+    Interval::new(
+        x.lo().as_float().to_f64_round(Round::Down),
+        x.hi().as_float().to_f64_round(Round::Up),
+    )
 }
 
 /// Whether the quadrilateral `[ij, jk, ki, il, lj]` (faces `ijk`, `jil`) is certified
@@ -336,9 +338,11 @@ pub(crate) fn exact_squared_on_t0(surface: &Surface, sequence: &[Edge]) -> Vec<O
 }
 
 /// Whether every edge of `mesh` is certified intrinsic Delaunay for every metric in
-/// `lengths` (`P ≥ 0`, B60, B62); where the five squared lengths of an edge's
-/// quadrilateral are known exactly (`exact`, [`exact_squared_on_t0`]) the sign is decided
-/// exactly (B63: a tie `P = 0` is Delaunay). `Err` names the first edge not certified.
+/// `lengths` (`P ≥ 0`, B60, B62): first `P > 0` on the binary64 outward roundings of the
+/// enclosures (which contain them); then, where the five squared lengths of an edge's
+/// quadrilateral are known exactly (`exact`, [`exact_squared_on_t0`]), the sign decided
+/// exactly (B63: a tie `P = 0` is Delaunay), else on the MPFR enclosures. `Err` names the
+/// first edge not certified.
 pub(crate) fn t0_delaunay(
     mesh: &Mesh,
     lengths: &[I],
@@ -348,6 +352,12 @@ pub(crate) fn t0_delaunay(
         let Some(q) = QuadEdges::of(mesh, e) else {
             continue;
         };
+        // P > 0 on the binary64 outward enclosures holds for every metric in `lengths`,
+        // the exact one included: most edges are decided here, ties and near-ties below.
+        let p64 = enclose_p(&q.lengths(lengths).to_array().map(outward));
+        if p64.is_valid() && p64.sign() == Some(Sign::Positive) {
+            continue;
+        }
         let sq = q
             .edges
             .to_array()
