@@ -32,7 +32,6 @@ use super::eval::{point, point_in};
 use super::fast_dd::lobachevsky_dd;
 use super::fast_f64::lobachevsky_f64;
 use crate::scalar::{Dd, Interval, Mpfr, Precision, Real};
-use rug::float::Round;
 use rug::{Float, Rational};
 use std::any::Any;
 use std::sync::Arc;
@@ -78,10 +77,7 @@ fn interval_f64(x: &Interval<f64>) -> Interval<f64> {
     if !y.is_valid() {
         return Interval::invalid(());
     }
-    Interval::new(
-        y.lo().0.to_f64_round(Round::Down),
-        y.hi().0.to_f64_round(Round::Up),
-    )
+    y.to_f64_outward()
 }
 
 /// `Л(x)`, Lobachevsky's function (docs/catalogue.md §7): odd, π-periodic, `Л(π/2) = 0`,

@@ -1,7 +1,7 @@
 //! [`Mpfr`] bounds: every operation correctly rounded toward −∞ or +∞ by MPFR
 //! (`Round::Down` / `Round::Up`), proofs/B20.
 
-use super::IntervalBound;
+use super::{Interval, IntervalBound};
 use crate::scalar::{Mpfr, Precision};
 use rug::float::{Constant, Round, Special};
 use rug::Float;
@@ -123,5 +123,28 @@ impl IntervalBound for Mpfr {
     }
     fn to_f64_up(&self) -> f64 {
         self.0.to_f64_round(Round::Up)
+    }
+}
+
+impl Interval<Mpfr> {
+    /// The binary64 interval `[RD(lo), RU(hi)]`: each bound converted by MPFR with
+    /// directed rounding, so it contains `self` (B20, B21); invalid when `self` is.
+    ///
+    /// ```
+    /// use penner::scalar::{Interval, Mpfr, Precision, Real};
+    /// let p = Precision::new(128).unwrap();
+    /// let third = Interval::point(Mpfr::from_f64(1.0, p)) / Interval::point(Mpfr::from_f64(3.0, p));
+    /// let f = third.to_f64_outward();
+    /// // It contains 1/3 (compared exactly), and is one binary64 ulp wide.
+    /// let q = rug::Rational::from((1, 3));
+    /// let (lo, hi) = (rug::Rational::from_f64(*f.lo()).unwrap(), rug::Rational::from_f64(*f.hi()).unwrap());
+    /// assert!(lo < q && q < hi);
+    /// assert!(f.hi() - f.lo() <= f64::EPSILON / 2.0);
+    /// ```
+    pub fn to_f64_outward(&self) -> Interval<f64> {
+        Interval::new(
+            self.lo().0.to_f64_round(Round::Down),
+            self.hi().0.to_f64_round(Round::Up),
+        )
     }
 }

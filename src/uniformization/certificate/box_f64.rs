@@ -42,9 +42,8 @@ pub(crate) fn box_lengths(at_centre: &[I], radius: &Rational) -> Option<Vec<F>> 
     let (lo_factor, hi_factor) = exp_pm_radius(radius)?;
     let mut out = Vec::with_capacity(at_centre.len());
     for l in at_centre {
-        let lo = l.lo().as_float().to_f64_round(Round::Down);
-        let hi = l.hi().as_float().to_f64_round(Round::Up);
-        let x = F::new(lo.mul_down(&lo_factor), hi.mul_up(&hi_factor));
+        let c = l.to_f64_outward();
+        let x = F::new(c.lo().mul_down(&lo_factor), c.hi().mul_up(&hi_factor));
         if x.sign() != Some(Sign::Positive) || !x.hi().is_finite() {
             return None;
         }

@@ -18,7 +18,6 @@ use crate::io::Surface;
 use crate::mesh::{Edge, Mesh};
 use crate::predicates::delaunay::{delaunay_p, delaunay_sign_squared, enclose_p, Quad, QuadEdges};
 use crate::scalar::{Interval, IntervalBound, Mpfr, Real, Sign};
-use rug::float::Round;
 use rug::Rational;
 
 /// The input metric on `sol`'s `T₀`: `mesh` and `lengths` are what [`super::uniformize`]
@@ -262,15 +261,7 @@ pub fn replay_enclosed(
 /// leaves it open (a near-degenerate corner or an angle sum near `π`), on `q` itself.
 /// proof: B73
 pub(crate) fn strictly_convex_enclosed(q: &Quad<Interval<Mpfr>>) -> bool {
-    strictly_convex(&q.as_refs().map(outward)) || strictly_convex(q)
-}
-
-/// The binary64 interval `[RD(lo), RU(hi)]` containing the MPFR interval `x`.
-fn outward(x: &Interval<Mpfr>) -> Interval<f64> {
-    Interval::new(
-        x.lo().as_float().to_f64_round(Round::Down),
-        x.hi().as_float().to_f64_round(Round::Up),
-    )
+    strictly_convex(&q.as_refs().map(Interval::to_f64_outward)) || strictly_convex(q)
 }
 
 /// Whether the quadrilateral `[ij, jk, ki, il, lj]` (faces `ijk`, `jil`) is certified
@@ -354,7 +345,7 @@ pub(crate) fn t0_delaunay(
         };
         // P > 0 on the binary64 outward enclosures holds for every metric in `lengths`,
         // the exact one included: most edges are decided here, ties and near-ties below.
-        let p64 = enclose_p(&q.lengths(lengths).to_array().map(outward));
+        let p64 = enclose_p(&q.lengths(lengths).to_array().map(Interval::to_f64_outward));
         if p64.is_valid() && p64.sign() == Some(Sign::Positive) {
             continue;
         }
@@ -508,14 +499,7 @@ mod tests {
             let [ij, jk, ki, il, lj] = sq.map(|q| I::from_rational(&q, prec).sqrt());
             Quad { ij, jk, ki, il, lj }
         };
-        let outward = |q: &Quad<I>| {
-            q.as_refs().map(|x| {
-                Interval::new(
-                    x.lo().as_float().to_f64_round(Round::Down),
-                    x.hi().as_float().to_f64_round(Round::Up),
-                )
-            })
-        };
+        let outward = |q: &Quad<I>| q.as_refs().map(Interval::to_f64_outward);
         let tiny = Rational::from((1, 1u128 << 66));
         let near = quad(tiny.clone());
         assert!(!strictly_convex(&outward(&near)), "binary64 leaves it open");

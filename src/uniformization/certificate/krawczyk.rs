@@ -35,9 +35,7 @@ pub enum KrawczykOutcome {
 type F = Interval<f64>;
 
 fn outward(x: &I) -> F {
-    let lo = x.lo().as_float().to_f64_round(Round::Down);
-    let hi = x.hi().as_float().to_f64_round(Round::Up);
-    F::new(lo, hi)
+    x.to_f64_outward()
 }
 
 /// The box radius in binary64, rounded down: the box tested is inside the one `prepare`
