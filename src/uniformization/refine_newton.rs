@@ -19,8 +19,12 @@ use crate::scalar::{Dd, Real};
 
 /// Inner sweeps at most (each gains about twelve digits; three reach double-double).
 const MAX_SWEEPS: usize = 4;
-/// The sweeps stop when the linear residual is below this fraction of `max |r|`.
-const SWEEP_TOLERANCE: f64 = 1e-31;
+/// The sweeps stop when the linear residual is below this fraction of `max |r|`: double-double's
+/// unit roundoff `2⁻¹⁰⁴` ([`Real::unit_roundoff`]), about the rounding of the residual's
+/// own evaluation, past which a sweep cannot gain.
+fn sweep_tolerance() -> f64 {
+    <Dd as Real>::unit_roundoff(())
+}
 
 /// The double-double nearest `x` up to two roundings (`hi = x` rounded, `lo = x − hi`
 /// rounded): within a few units of `2⁻¹⁰⁶` relative for `T` of 128 bits or more.
@@ -86,7 +90,7 @@ impl IterateLaplacian {
 /// The Newton correction `δ` with `H δ = −r` on the free vertices `free` (zero elsewhere),
 /// `H = −lap` the Hessian at the iterate and `r = Θ − θ` its residual in double-double (one
 /// entry per vertex), by iterative refinement preconditioned by `factor` (`H̃`, module
-/// doc). The sweeps stop when the linear residual is below `10⁻³¹·max |r|`, after
+/// doc). The sweeps stop when the linear residual is below `2⁻¹⁰⁴·max |r|` (double-double's unit roundoff), after
 /// [`MAX_SWEEPS`], or when a sweep fails to halve it (then the best `δ` so far is kept:
 /// at worst the `f64` correction `−H̃⁻¹r`).
 pub(crate) fn newton_correction(
@@ -116,7 +120,7 @@ pub(crate) fn newton_correction(
             break;
         }
         best = (delta.clone(), res_max);
-        if res_max <= SWEEP_TOLERANCE * r_max {
+        if res_max <= sweep_tolerance() * r_max {
             break;
         }
         // δ ← δ + H̃⁻¹(−r − Hδ) = δ − newton_direction(res).
